@@ -1,0 +1,60 @@
+//! clip-core: the shared vocabulary of clipbench.
+//!
+//! Points, segments, rings and polygon sets; the boolean operations and fill rules; one module
+//! of exact predicates (Shewchuk's adaptive arithmetic through the `robust` crate) through which
+//! every orientation and in/out decision goes; typed errors for bad input; and the
+//! [`PolygonClipper`], [`LineClipper`] and [`PreparedWindow`] traits the harness registers
+//! clippers behind. Conventions (output orientation, the closed-set rule for lines) are in the
+//! workspace's DESIGN.md and are restated where each applies.
+//!
+//! Coordinates are f64 with `y` up; counter-clockwise is positive. Magnitudes up to
+//! [`MAX_COORDINATE`] are accepted.
+//!
+//! ```
+//! use clip_core::{FillRule, Location, Point, Polygons, Rect, locate, orient, Orientation};
+//!
+//! let square = Polygons::from(Rect::new(0.0, 0.0, 2.0, 2.0));
+//! assert_eq!(square.signed_area(), 4.0);
+//! assert_eq!(locate(Point::new(1.0, 1.0), &square, FillRule::NonZero), Location::Inside);
+//! assert_eq!(locate(Point::new(2.0, 1.0), &square, FillRule::NonZero), Location::Boundary);
+//!
+//! // Exact where naive f64 arithmetic is not: these three points are not collinear.
+//! let (a, b) = (Point::new(0.5, 0.5), Point::new(12.0, 12.0));
+//! let c = Point::new(24.0, 24.0 + 2f64.powi(-48));
+//! assert_eq!(orient(a, b, c), Orientation::CounterClockwise);
+//! ```
+
+mod area;
+mod clipper;
+mod error;
+#[cfg(feature = "geo")]
+mod geo;
+mod nesting;
+mod ops;
+mod point;
+mod polygons;
+pub mod predicates;
+mod rect;
+mod ring;
+mod segment;
+mod trapezoid;
+mod winding;
+
+pub use area::signed_area;
+pub use clipper::{
+    LineCapabilities, LineClipper, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece, WindowKind,
+};
+pub use error::{
+    ClipError, MAX_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
+    validate_segments, validate_window,
+};
+pub use nesting::{NestedPolygon, nest};
+pub use ops::{BoolOp, FillRule, UnknownName};
+pub use point::Point;
+pub use polygons::Polygons;
+pub use predicates::{Orientation, SegmentIntersection, orient, segment_intersection};
+pub use rect::Rect;
+pub use ring::Ring;
+pub use segment::Segment;
+pub use trapezoid::Trapezoid;
+pub use winding::{Location, locate, ring_winding, winding_number};

@@ -1,0 +1,153 @@
+//! The one place orientation and incidence are decided, exactly, with Shewchuk's adaptive
+//! predicates (the `robust` crate). No clipper computes a raw cross product for a decision.
+
+use crate::{Point, Rect, Segment};
+
+/// Which way three points turn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Orientation {
+    /// Counter-clockwise (left turn, y up).
+    CounterClockwise,
+    /// Clockwise (right turn).
+    Clockwise,
+    /// On one line.
+    Collinear,
+}
+
+impl Orientation {
+    /// +1, -1 or 0.
+    #[inline]
+    pub fn sign(self) -> i32 {
+        match self {
+            Orientation::CounterClockwise => 1,
+            Orientation::Clockwise => -1,
+            Orientation::Collinear => 0,
+        }
+    }
+
+    /// The opposite turn.
+    #[inline]
+    pub fn reversed(self) -> Orientation {
+        match self {
+            Orientation::CounterClockwise => Orientation::Clockwise,
+            Orientation::Clockwise => Orientation::CounterClockwise,
+            Orientation::Collinear => Orientation::Collinear,
+        }
+    }
+}
+
+#[inline]
+fn coord(p: Point) -> robust::Coord<f64> {
+    robust::Coord { x: p.x, y: p.y }
+}
+
+/// Twice the signed area of triangle `abc`, with an exactly right sign (its magnitude is an
+/// approximation). Positive when `c` lies left of the directed line `a -> b`.
+#[inline]
+pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
+    robust::orient2d(coord(a), coord(b), coord(c))
+}
+
+/// The exact turn of `a -> b -> c`.
+#[inline]
+pub fn orient(a: Point, b: Point, c: Point) -> Orientation {
+    let d = orient2d(a, b, c);
+    if d > 0.0 {
+        Orientation::CounterClockwise
+    } else if d < 0.0 {
+        Orientation::Clockwise
+    } else {
+        Orientation::Collinear
+    }
+}
+
+/// True when `p` lies on the closed segment `s` (exactly).
+#[inline]
+pub fn on_segment(p: Point, s: Segment) -> bool {
+    s.bounds().contains(p) && orient(s.a, s.b, p) == Orientation::Collinear
+}
+
+/// How two closed segments meet.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SegmentIntersection {
+    /// No common point.
+    None,
+    /// The interiors cross at one point. The point is rounded, then clamped into both
+    /// segments' bounding boxes.
+    Crossing(Point),
+    /// One common point that is an endpoint of at least one segment (exact: the endpoint).
+    Touching(Point),
+    /// Collinear overlap of positive length, directed like the first segment.
+    Overlap(Segment),
+}
+
+/// Classifies how segments `s` and `t` meet, with exact predicates.
+pub fn segment_intersection(s: Segment, t: Segment) -> SegmentIntersection {
+    if !s.bounds().intersects(&t.bounds()) {
+        return SegmentIntersection::None;
+    }
+    if s.is_degenerate() || t.is_degenerate() {
+        let (p, other) = if s.is_degenerate() { (s.a, t) } else { (t.a, s) };
+        return if on_segment(p, other) { SegmentIntersection::Touching(p) } else { SegmentIntersection::None };
+    }
+    let o1 = orient(s.a, s.b, t.a);
+    let o2 = orient(s.a, s.b, t.b);
+    if o1 == o2 && o1 != Orientation::Collinear {
+        return SegmentIntersection::None;
+    }
+    if o1 == Orientation::Collinear && o2 == Orientation::Collinear {
+        return collinear_overlap(s, t);
+    }
+    let o3 = orient(t.a, t.b, s.a);
+    let o4 = orient(t.a, t.b, s.b);
+    if o3 == o4 {
+        // Both same side (o3 == o4 == Collinear would make the segments collinear, handled above).
+        return SegmentIntersection::None;
+    }
+    match (o1, o2, o3, o4) {
+        (Orientation::Collinear, ..) => SegmentIntersection::Touching(t.a),
+        (_, Orientation::Collinear, ..) => SegmentIntersection::Touching(t.b),
+        (_, _, Orientation::Collinear, _) => SegmentIntersection::Touching(s.a),
+        (_, _, _, Orientation::Collinear) => SegmentIntersection::Touching(s.b),
+        _ => SegmentIntersection::Crossing(crossing_point(s, t)),
+    }
+}
+
+/// The crossing point of two segments whose interiors are known to cross, rounded and clamped
+/// into the intersection of their bounding boxes (so it never leaves either segment's box).
+pub fn crossing_point(s: Segment, t: Segment) -> Point {
+    let d1 = s.b - s.a;
+    let d2 = t.b - t.a;
+    let denom = d1.cross(d2);
+    let u = (t.a - s.a).cross(d2) / denom;
+    let p = if u.is_finite() { s.at(u.clamp(0.0, 1.0)) } else { s.a };
+    let b = s.bounds();
+    let c = t.bounds();
+    let lo = Point::new(b.min.x.max(c.min.x), b.min.y.max(c.min.y));
+    let hi = Point::new(b.max.x.min(c.max.x), b.max.y.min(c.max.y));
+    Point::new(p.x.clamp(lo.x.min(hi.x), hi.x.max(lo.x)), p.y.clamp(lo.y.min(hi.y), hi.y.max(lo.y)))
+}
+
+fn collinear_overlap(s: Segment, t: Segment) -> SegmentIntersection {
+    // Order along s's dominant axis; exact, because the points are collinear.
+    let key = |p: Point| if (s.b.x - s.a.x).abs() >= (s.b.y - s.a.y).abs() { p.x } else { p.y };
+    let forward = key(s.b) > key(s.a);
+    let along = |p: Point| if forward { key(p) } else { -key(p) };
+    let (t_lo, t_hi) = if along(t.a) <= along(t.b) { (t.a, t.b) } else { (t.b, t.a) };
+    let start = if along(t_lo) > along(s.a) { t_lo } else { s.a };
+    let end = if along(t_hi) < along(s.b) { t_hi } else { s.b };
+    let (ks, ke) = (along(start), along(end));
+    if ks < ke {
+        SegmentIntersection::Overlap(Segment::new(start, end))
+    } else if ks == ke {
+        SegmentIntersection::Touching(start)
+    } else {
+        SegmentIntersection::None
+    }
+}
+
+/// True when `p` is strictly inside the box `r` (not on its boundary).
+#[inline]
+pub fn strictly_inside_rect(p: Point, r: &Rect) -> bool {
+    p.x > r.min.x && p.x < r.max.x && p.y > r.min.y && p.y < r.max.y
+}

@@ -1,0 +1,106 @@
+//! Axis-aligned rectangles, used as windows and as bounding boxes.
+
+use crate::{Point, Ring};
+
+/// An axis-aligned rectangle `[min.x, max.x] x [min.y, max.y]`. An empty box has `min > max`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rect {
+    /// Lower-left corner.
+    pub min: Point,
+    /// Upper-right corner.
+    pub max: Point,
+}
+
+impl Rect {
+    /// The empty box: the identity of [`Rect::union`].
+    pub const EMPTY: Rect =
+        Rect { min: Point::new(f64::INFINITY, f64::INFINITY), max: Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY) };
+
+    /// Makes the box spanned by two corners, in any order.
+    #[inline]
+    pub fn from_points(p: Point, q: Point) -> Rect {
+        Rect { min: Point::new(p.x.min(q.x), p.y.min(q.y)), max: Point::new(p.x.max(q.x), p.y.max(q.y)) }
+    }
+
+    /// Makes a box from its bounds.
+    #[inline]
+    pub const fn new(min_x: f64, min_y: f64, max_x: f64, max_y: f64) -> Rect {
+        Rect { min: Point::new(min_x, min_y), max: Point::new(max_x, max_y) }
+    }
+
+    /// The bounding box of some points ([`Rect::EMPTY`] for none).
+    pub fn bounding<'a>(points: impl IntoIterator<Item = &'a Point>) -> Rect {
+        points.into_iter().fold(Rect::EMPTY, |r, &p| r.including(p))
+    }
+
+    /// True when the box holds no point.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        !(self.min.x <= self.max.x && self.min.y <= self.max.y)
+    }
+
+    /// Width (0 for an empty box).
+    #[inline]
+    pub fn width(&self) -> f64 {
+        if self.is_empty() { 0.0 } else { self.max.x - self.min.x }
+    }
+
+    /// Height (0 for an empty box).
+    #[inline]
+    pub fn height(&self) -> f64 {
+        if self.is_empty() { 0.0 } else { self.max.y - self.min.y }
+    }
+
+    /// Area (0 for an empty box).
+    #[inline]
+    pub fn area(&self) -> f64 {
+        self.width() * self.height()
+    }
+
+    /// The larger of width and height.
+    #[inline]
+    pub fn extent(&self) -> f64 {
+        self.width().max(self.height())
+    }
+
+    /// The smallest box holding this one and `p`.
+    #[inline]
+    pub fn including(self, p: Point) -> Rect {
+        Rect {
+            min: Point::new(self.min.x.min(p.x), self.min.y.min(p.y)),
+            max: Point::new(self.max.x.max(p.x), self.max.y.max(p.y)),
+        }
+    }
+
+    /// The smallest box holding both.
+    #[inline]
+    pub fn union(self, other: Rect) -> Rect {
+        Rect {
+            min: Point::new(self.min.x.min(other.min.x), self.min.y.min(other.min.y)),
+            max: Point::new(self.max.x.max(other.max.x), self.max.y.max(other.max.y)),
+        }
+    }
+
+    /// True when `p` lies in the closed box.
+    #[inline]
+    pub fn contains(&self, p: Point) -> bool {
+        p.x >= self.min.x && p.x <= self.max.x && p.y >= self.min.y && p.y <= self.max.y
+    }
+
+    /// True when the closed boxes share a point.
+    #[inline]
+    pub fn intersects(&self, other: &Rect) -> bool {
+        self.min.x <= other.max.x && other.min.x <= self.max.x && self.min.y <= other.max.y && other.min.y <= self.max.y
+    }
+
+    /// The box grown by `d` on every side.
+    #[inline]
+    pub fn inflate(&self, d: f64) -> Rect {
+        Rect::new(self.min.x - d, self.min.y - d, self.max.x + d, self.max.y + d)
+    }
+
+    /// The box as a counter-clockwise ring starting at the lower-left corner.
+    pub fn to_ring(&self) -> Ring {
+        Ring::new(vec![self.min, Point::new(self.max.x, self.min.y), self.max, Point::new(self.min.x, self.max.y)])
+    }
+}

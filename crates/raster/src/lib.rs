@@ -1,0 +1,1 @@
+//! clip-raster: Scanline polygon fill and Vatti trapezoid fill into a frame buffer.

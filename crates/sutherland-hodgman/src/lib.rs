@@ -1,0 +1,1 @@
+//! clip-sutherland-hodgman: Sutherland-Hodgman reentrant polygon clipping against a convex window.

@@ -1,0 +1,1 @@
+//! clip-testkit: seeded workloads, exact oracles and a shrinker.

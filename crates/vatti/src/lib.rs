@@ -1,0 +1,1 @@
+//! clip-vatti: Vatti's generic polygon clipper (1992): intersection, union, difference and xor, polygon and trapezoid output.

@@ -1,0 +1,2 @@
+//! clipbench: the harness CLI.
+fn main() {}
