@@ -1,0 +1,349 @@
+//! clip-core's tests: exact predicates, point location under each fill rule, area, validation.
+
+use clip_core::predicates::{crossing_point, on_segment, orient2d};
+use clip_core::{
+    ClipError, FillRule, Location, Operand, Orientation, Point, Polygons, Rect, Ring, Segment, SegmentIntersection,
+    convex_window, locate, nest, orient, rect_window, segment_intersection, validate_polygons, validate_segments,
+    validate_window, winding_number,
+};
+use proptest::prelude::*;
+
+fn p(x: f64, y: f64) -> Point {
+    Point::new(x, y)
+}
+
+fn ring(pts: &[(f64, f64)]) -> Ring {
+    Ring::from(pts)
+}
+
+fn naive_orient(a: Point, b: Point, c: Point) -> f64 {
+    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+}
+
+// ---- predicates ----
+
+#[test]
+fn orient_is_exact_a_few_ulps_off_a_line() {
+    // Points one or a few ulps above the line y = x (the ulp of 24 is 2^-48).
+    let a = p(0.5, 0.5);
+    let b = p(12.0, 12.0);
+    for i in 0..256 {
+        let off = (i as f64) * 2f64.powi(-48);
+        let c = p(24.0, 24.0 + off);
+        let exact = if off > 0.0 { Orientation::CounterClockwise } else { Orientation::Collinear };
+        assert_eq!(orient(a, b, c), exact, "offset {off:e}");
+    }
+}
+
+#[test]
+fn orient_classic_near_collinear_grid() {
+    // Kettner et al.'s classroom example: points near (0.5, 0.5) on a 2^-53 grid against the line
+    // through (12, 12) and (24, 24). Exact answer: the sign of (y - x) for the grid point. The
+    // naive determinant evaluated from the grid point gets many of them wrong.
+    let b = p(12.0, 12.0);
+    let c = p(24.0, 24.0);
+    let ulp = 2f64.powi(-53);
+    let mut naive_wrong = 0;
+    for i in 0..64 {
+        for j in 0..64 {
+            let a = p(0.5 + i as f64 * ulp, 0.5 + j as f64 * ulp);
+            let expected = match j.cmp(&i) {
+                std::cmp::Ordering::Greater => Orientation::CounterClockwise,
+                std::cmp::Ordering::Less => Orientation::Clockwise,
+                std::cmp::Ordering::Equal => Orientation::Collinear,
+            };
+            // a is left of b -> c exactly when a lies above the line y = x.
+            assert_eq!(orient(b, c, a), expected, "i={i} j={j}");
+            assert_eq!(orient(a, b, c), expected, "i={i} j={j}");
+            let naive = naive_orient(a, b, c);
+            naive_wrong += usize::from(naive.signum() as i32 * i32::from(naive != 0.0) != expected.sign());
+        }
+    }
+    assert!(naive_wrong > 0, "the grid must include cases naive f64 gets wrong");
+}
+
+proptest! {
+    #[test]
+    fn orient_antisymmetric(ax in -1e6..1e6f64, ay in -1e6..1e6f64, bx in -1e6..1e6f64,
+                            by in -1e6..1e6f64, cx in -1e6..1e6f64, cy in -1e6..1e6f64) {
+        let (a, b, c) = (p(ax, ay), p(bx, by), p(cx, cy));
+        let o = orient(a, b, c);
+        prop_assert_eq!(orient(b, a, c), o.reversed());
+        prop_assert_eq!(orient(a, c, b), o.reversed());
+        prop_assert_eq!(orient(b, c, a), o);
+        prop_assert_eq!(orient(c, a, b), o);
+    }
+
+    #[test]
+    fn orient_matches_naive_when_far_from_zero(ax in -1e3..1e3f64, ay in -1e3..1e3f64, bx in -1e3..1e3f64,
+                                               by in -1e3..1e3f64, cx in -1e3..1e3f64, cy in -1e3..1e3f64) {
+        let (a, b, c) = (p(ax, ay), p(bx, by), p(cx, cy));
+        let naive = naive_orient(a, b, c);
+        prop_assume!(naive.abs() > 1e-6);
+        prop_assert_eq!(orient(a, b, c).sign() as f64, naive.signum());
+    }
+
+    #[test]
+    fn point_on_a_collinear_grid_line_is_collinear(k in -1000i64..1000, t in -1000i64..1000) {
+        // Integer points on the line through (0,0) and (3,7): exactly collinear.
+        let a = p(0.0, 0.0);
+        let b = p(3.0 * k as f64, 7.0 * k as f64);
+        let c = p(3.0 * t as f64, 7.0 * t as f64);
+        prop_assume!(k != 0);
+        prop_assert_eq!(orient(a, b, c), Orientation::Collinear);
+        prop_assert!(orient2d(a, b, c) == 0.0);
+    }
+
+    #[test]
+    fn crossing_point_stays_in_both_boxes(ax in -1e3..1e3f64, ay in -1e3..1e3f64, bx in -1e3..1e3f64,
+                                          by in -1e3..1e3f64, cx in -1e3..1e3f64, cy in -1e3..1e3f64,
+                                          dx in -1e3..1e3f64, dy in -1e3..1e3f64) {
+        let s = Segment::new(p(ax, ay), p(bx, by));
+        let t = Segment::new(p(cx, cy), p(dx, dy));
+        if let SegmentIntersection::Crossing(q) = segment_intersection(s, t) {
+            prop_assert!(s.bounds().contains(q) && t.bounds().contains(q));
+            prop_assert_eq!(crossing_point(s, t), q);
+        }
+    }
+
+    #[test]
+    fn segment_intersection_is_symmetric_in_kind(ax in -20i32..20, ay in -20i32..20, bx in -20i32..20,
+                                                 by in -20i32..20, cx in -20i32..20, cy in -20i32..20,
+                                                 dx in -20i32..20, dy in -20i32..20) {
+        let s = Segment::new(p(ax.into(), ay.into()), p(bx.into(), by.into()));
+        let t = Segment::new(p(cx.into(), cy.into()), p(dx.into(), dy.into()));
+        let kind = |r: SegmentIntersection| std::mem::discriminant(&r);
+        prop_assert_eq!(kind(segment_intersection(s, t)), kind(segment_intersection(t, s)));
+    }
+}
+
+#[test]
+fn segment_intersection_kinds() {
+    let s = Segment::new(p(0.0, 0.0), p(4.0, 4.0));
+    assert_eq!(
+        segment_intersection(s, Segment::new(p(0.0, 4.0), p(4.0, 0.0))),
+        SegmentIntersection::Crossing(p(2.0, 2.0))
+    );
+    assert_eq!(
+        segment_intersection(s, Segment::new(p(2.0, 2.0), p(4.0, 0.0))),
+        SegmentIntersection::Touching(p(2.0, 2.0))
+    );
+    assert_eq!(
+        segment_intersection(s, Segment::new(p(4.0, 4.0), p(5.0, 0.0))),
+        SegmentIntersection::Touching(p(4.0, 4.0))
+    );
+    assert_eq!(segment_intersection(s, Segment::new(p(5.0, 5.0), p(6.0, 6.0))), SegmentIntersection::None);
+    assert_eq!(
+        segment_intersection(s, Segment::new(p(4.0, 4.0), p(6.0, 6.0))),
+        SegmentIntersection::Touching(p(4.0, 4.0))
+    );
+    assert_eq!(
+        segment_intersection(s, Segment::new(p(6.0, 6.0), p(1.0, 1.0))),
+        SegmentIntersection::Overlap(Segment::new(p(1.0, 1.0), p(4.0, 4.0)))
+    );
+    assert_eq!(segment_intersection(s, Segment::new(p(1.0, 0.0), p(5.0, 4.0))), SegmentIntersection::None);
+    // Degenerate segments: a point on the other segment touches it.
+    assert_eq!(
+        segment_intersection(s, Segment::new(p(1.0, 1.0), p(1.0, 1.0))),
+        SegmentIntersection::Touching(p(1.0, 1.0))
+    );
+    assert_eq!(segment_intersection(s, Segment::new(p(1.0, 2.0), p(1.0, 2.0))), SegmentIntersection::None);
+    assert!(on_segment(p(3.0, 3.0), s) && !on_segment(p(5.0, 5.0), s));
+}
+
+// ---- point location under each fill rule ----
+
+/// Two nested counter-clockwise squares plus one clockwise square: winding numbers 0, 1, 2, -1.
+fn nested_squares() -> Polygons {
+    Polygons::new(vec![
+        Rect::new(0.0, 0.0, 10.0, 10.0).to_ring(),
+        Rect::new(2.0, 2.0, 6.0, 6.0).to_ring(),
+        Rect::new(20.0, 0.0, 30.0, 10.0).to_ring().reversed(),
+    ])
+}
+
+#[test]
+fn winding_numbers_of_nested_rings() {
+    let polys = nested_squares();
+    assert_eq!(winding_number(p(-1.0, 5.0), &polys), Some(0));
+    assert_eq!(winding_number(p(8.0, 8.0), &polys), Some(1));
+    assert_eq!(winding_number(p(3.0, 3.0), &polys), Some(2));
+    assert_eq!(winding_number(p(25.0, 5.0), &polys), Some(-1));
+    assert_eq!(winding_number(p(10.0, 5.0), &polys), None);
+    assert_eq!(winding_number(p(2.0, 2.0), &polys), None);
+}
+
+#[test]
+fn locate_under_each_fill_rule() {
+    use Location::*;
+    let polys = nested_squares();
+    let probes = [p(-1.0, 5.0), p(8.0, 8.0), p(3.0, 3.0), p(25.0, 5.0)]; // w = 0, 1, 2, -1
+    let expect = |fill| match fill {
+        FillRule::EvenOdd => [Outside, Inside, Outside, Inside],
+        FillRule::NonZero => [Outside, Inside, Inside, Inside],
+        FillRule::Positive => [Outside, Inside, Inside, Outside],
+        FillRule::Negative => [Outside, Outside, Outside, Inside],
+    };
+    for fill in FillRule::ALL {
+        let got: Vec<_> = probes.iter().map(|&q| locate(q, &polys, fill)).collect();
+        assert_eq!(got, expect(fill), "{fill}");
+        assert_eq!(locate(p(0.0, 7.0), &polys, fill), Boundary);
+    }
+}
+
+#[test]
+fn bow_tie_winds_both_ways() {
+    // A figure-eight: the left lobe is walked counter-clockwise (+1), the right lobe clockwise (-1).
+    let tie = Polygons::from(ring(&[(0.0, 0.0), (4.0, 4.0), (4.0, 0.0), (0.0, 4.0)]));
+    assert_eq!(winding_number(p(1.0, 2.0), &tie), Some(1));
+    assert_eq!(winding_number(p(3.0, 2.0), &tie), Some(-1));
+    assert_eq!(locate(p(2.0, 2.0), &tie, FillRule::EvenOdd), Location::Boundary);
+    assert_eq!(locate(p(1.0, 2.0), &tie, FillRule::Positive), Location::Inside);
+    assert_eq!(locate(p(3.0, 2.0), &tie, FillRule::Positive), Location::Outside);
+    assert_eq!(locate(p(3.0, 2.0), &tie, FillRule::Negative), Location::Inside);
+}
+
+proptest! {
+    #[test]
+    fn winding_of_a_triangle_is_its_orientation(ax in -100i32..100, ay in -100i32..100, bx in -100i32..100,
+                                                by in -100i32..100, cx in -100i32..100, cy in -100i32..100,
+                                                qx in -100i32..100, qy in -100i32..100) {
+        let (a, b, c) = (p(ax.into(), ay.into()), p(bx.into(), by.into()), p(cx.into(), cy.into()));
+        let q = p(f64::from(qx) + 0.5, f64::from(qy) + 0.25);
+        let tri = Polygons::from(Ring::new(vec![a, b, c]));
+        let o = orient(a, b, c);
+        // Strictly inside iff q is strictly left (ccw) or strictly right (cw) of all three edges.
+        let sides = [orient(a, b, q), orient(b, c, q), orient(c, a, q)];
+        let w = winding_number(q, &tri);
+        if sides.iter().any(|&s| s == Orientation::Collinear) {
+            prop_assert!(w.is_none() || w == Some(0));
+        } else if o != Orientation::Collinear && sides.iter().all(|&s| s == o) {
+            prop_assert_eq!(w, Some(o.sign()));
+        } else {
+            prop_assert_eq!(w, Some(0));
+        }
+    }
+}
+
+// ---- area ----
+
+#[test]
+fn signed_area_orientation_and_holes() {
+    let sq = Rect::new(0.0, 0.0, 3.0, 2.0).to_ring();
+    assert_eq!(sq.signed_area(), 6.0);
+    assert_eq!(sq.reversed().signed_area(), -6.0);
+    let with_hole = Polygons::new(vec![sq.clone(), Rect::new(1.0, 0.5, 2.0, 1.5).to_ring().reversed()]);
+    assert_eq!(with_hole.signed_area(), 5.0);
+    // Far from the origin the area keeps its precision (coordinates relative to the first vertex).
+    let far = Ring::new(sq.points.iter().map(|q| p(q.x + 1e9, q.y + 1e9)).collect());
+    assert_eq!(far.signed_area(), 6.0);
+    assert_eq!(ring(&[(0.0, 0.0), (1.0, 1.0)]).signed_area(), 0.0);
+}
+
+proptest! {
+    #[test]
+    fn signed_area_invariants(pts in prop::collection::vec((-1e3..1e3f64, -1e3..1e3f64), 3..40),
+                              dx in -1e4..1e4f64, dy in -1e4..1e4f64, shift in 0usize..40) {
+        let r = Ring::new(pts.iter().map(|&(x, y)| p(x, y)).collect());
+        let a = r.signed_area();
+        let tol = 1e-7 * (1.0 + a.abs());
+        prop_assert!((r.reversed().signed_area() + a).abs() <= tol);
+        let moved = Ring::new(r.points.iter().map(|q| p(q.x + dx, q.y + dy)).collect());
+        prop_assert!((moved.signed_area() - a).abs() <= 1e-6 * (1.0 + a.abs()));
+        let mut rotated = r.points.clone();
+        let k = shift % rotated.len();
+        rotated.rotate_left(k);
+        prop_assert!((Ring::new(rotated).signed_area() - a).abs() <= tol);
+    }
+}
+
+// ---- validation ----
+
+#[test]
+fn validation_errors_are_typed() {
+    let nan = Polygons::from(ring(&[(0.0, 0.0), (f64::NAN, 1.0), (1.0, 0.0)]));
+    assert!(matches!(
+        validate_polygons(&nan, Operand::Subject),
+        Err(ClipError::NonFinite { operand: Operand::Subject, part: 0, vertex: 1, .. })
+    ));
+    let inf = Polygons::new(vec![
+        Rect::new(0.0, 0.0, 1.0, 1.0).to_ring(),
+        ring(&[(0.0, 0.0), (f64::INFINITY, 1.0), (1.0, 0.0)]),
+    ]);
+    assert!(matches!(validate_polygons(&inf, Operand::Clip), Err(ClipError::NonFinite { part: 1, .. })));
+    let huge = Polygons::from(ring(&[(0.0, 0.0), (1e200, 1.0), (1.0, 0.0)]));
+    assert!(matches!(validate_polygons(&huge, Operand::Subject), Err(ClipError::OutOfRange { .. })));
+    let two = Polygons::from(ring(&[(0.0, 0.0), (1.0, 1.0), (0.0, 0.0), (1.0, 1.0)]));
+    assert!(matches!(validate_polygons(&two, Operand::Subject), Err(ClipError::TooFewPoints { distinct: 2, .. })));
+    // Collinear rings with three distinct points are valid operands (they cover nothing).
+    assert!(validate_polygons(&Polygons::from(ring(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)])), Operand::Subject).is_ok());
+    assert!(validate_polygons(&Polygons::empty(), Operand::Subject).is_ok());
+    assert!(validate_segments(&[Segment::new(p(0.0, 0.0), p(0.0, 0.0))]).is_ok());
+    assert!(matches!(
+        validate_segments(&[Segment::new(p(0.0, 0.0), p(1.0, 1.0)), Segment::new(p(0.0, f64::NAN), p(1.0, 1.0))]),
+        Err(ClipError::NonFinite { operand: Operand::Segments, part: 1, vertex: 0, .. })
+    ));
+    let msg = validate_polygons(&nan, Operand::Subject).unwrap_err().to_string();
+    assert!(msg.contains("subject 0, vertex 1") && msg.contains("not finite"), "{msg}");
+}
+
+#[test]
+fn windows_are_checked() {
+    assert!(matches!(validate_window(&Polygons::empty()), Err(ClipError::DegenerateWindow { .. })));
+    let flat = Polygons::from(ring(&[(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)]));
+    assert!(matches!(validate_window(&flat), Err(ClipError::DegenerateWindow { .. })));
+    let diagonal = Polygons::from(ring(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)]));
+    assert!(matches!(validate_window(&diagonal), Err(ClipError::DegenerateWindow { .. })));
+
+    let square = Polygons::from(Rect::new(0.0, 0.0, 2.0, 2.0));
+    assert_eq!(rect_window(&square, "t"), Ok(Rect::new(0.0, 0.0, 2.0, 2.0)));
+    assert_eq!(rect_window(&Polygons::from(square.rings[0].reversed()), "t"), Ok(Rect::new(0.0, 0.0, 2.0, 2.0)));
+    let (cw, o) = convex_window(&Polygons::from(square.rings[0].reversed()), "t").unwrap();
+    assert_eq!((cw.len(), o), (4, Orientation::Clockwise));
+
+    let diamond = Polygons::from(ring(&[(1.0, 0.0), (2.0, 1.0), (1.0, 2.0), (0.0, 1.0)]));
+    assert!(matches!(rect_window(&diamond, "t"), Err(ClipError::WindowNotRectangle { clipper: "t" })));
+    assert!(convex_window(&diamond, "t").is_ok());
+
+    let concave = Polygons::from(ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (2.0, 1.0), (0.0, 4.0)]));
+    assert!(matches!(convex_window(&concave, "t"), Err(ClipError::WindowNotConvex { .. })));
+    let pentagram: Vec<(f64, f64)> = (0..5)
+        .map(|i| {
+            let a = std::f64::consts::TAU * (2 * i) as f64 / 5.0;
+            (a.cos(), a.sin())
+        })
+        .collect();
+    assert!(matches!(convex_window(&Polygons::from(ring(&pentagram)), "t"), Err(ClipError::WindowNotConvex { .. })));
+    // Collinear extra vertices on a side keep a window convex; folding back does not.
+    let with_mid = Polygons::from(ring(&[(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)]));
+    assert!(convex_window(&with_mid, "t").is_ok());
+    let folded = Polygons::from(ring(&[(0.0, 0.0), (2.0, 0.0), (1.0, 0.0), (2.0, 2.0), (0.0, 2.0)]));
+    assert!(convex_window(&folded, "t").is_err());
+    let two_rings = Polygons::new(vec![square.rings[0].clone(), Rect::new(5.0, 5.0, 6.0, 6.0).to_ring()]);
+    assert!(convex_window(&two_rings, "t").is_err() && rect_window(&two_rings, "t").is_err());
+}
+
+// ---- nesting ----
+
+#[test]
+fn holes_go_to_the_smallest_outer_holding_them() {
+    let big = Rect::new(0.0, 0.0, 10.0, 10.0).to_ring();
+    let big_hole = Rect::new(1.0, 1.0, 9.0, 9.0).to_ring().reversed();
+    let island = Rect::new(2.0, 2.0, 8.0, 8.0).to_ring();
+    let island_hole = Rect::new(3.0, 3.0, 4.0, 4.0).to_ring().reversed();
+    // A hole touching its outer at a vertex still nests.
+    let touching_hole = ring(&[(8.0, 8.0), (6.0, 5.0), (5.0, 6.0)]);
+    assert!(touching_hole.signed_area() < 0.0);
+    let nested = nest(&Polygons::new(vec![
+        island_hole.clone(),
+        big.clone(),
+        touching_hole.clone(),
+        island.clone(),
+        big_hole.clone(),
+    ]));
+    assert_eq!(nested.len(), 2);
+    let outer_big = nested.iter().find(|n| n.outer == big).unwrap();
+    assert_eq!(outer_big.holes, vec![big_hole]);
+    let outer_island = nested.iter().find(|n| n.outer == island).unwrap();
+    assert_eq!(outer_island.holes, vec![island_hole, touching_hole]);
+}
