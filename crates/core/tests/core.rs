@@ -215,7 +215,7 @@ proptest! {
         // Strictly inside iff q is strictly left (ccw) or strictly right (cw) of all three edges.
         let sides = [orient(a, b, q), orient(b, c, q), orient(c, a, q)];
         let w = winding_number(q, &tri);
-        if sides.iter().any(|&s| s == Orientation::Collinear) {
+        if sides.contains(&Orientation::Collinear) {
             prop_assert!(w.is_none() || w == Some(0));
         } else if o != Orientation::Collinear && sides.iter().all(|&s| s == o) {
             prop_assert_eq!(w, Some(o.sign()));
