@@ -1,0 +1,21 @@
+//! The peer libraries (`geo`, Clipper2) behind clip-core's traits, as differential references.
+//!
+//! - [`GeoClipper`] and [`GeoLineClipper`]: `geo` 0.33's `BooleanOps` (i_overlay underneath). It
+//!   snaps coordinates to an integer grid of about extent x 1e-9, so compare its output with a
+//!   loose tolerance (the testkit's `GEO_TOLERANCE`).
+//! - [`Clipper2Clipper`]: the C++ Clipper2 through the `clipper2` crate, on an integer grid scaled
+//!   per call to the inputs' extent (see [`Clipper2Clipper`]), so it too is compared loosely.
+//!
+//! There is no Clipper2 line clipper: the `clipper2` 0.6 crate's safe API returns only the closed
+//! output of an operation and drops the open (line) output, and reaching the C API directly needs
+//! `unsafe`, which the workspace forbids.
+//!
+//! Each adapter passes our ring list to its library faithfully (every ring, in order, with its own
+//! orientation) and converts the result to DESIGN.md's conventions; what each normalises is said
+//! on its type.
+
+mod clipper2;
+mod geo;
+
+pub use self::clipper2::Clipper2Clipper;
+pub use self::geo::{GeoClipper, GeoLineClipper};
