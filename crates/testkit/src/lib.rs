@@ -1,4 +1,6 @@
 //! clip-testkit: seeded workloads, exact oracles and a shrinker.
 
+pub mod workload;
+
 #[cfg(feature = "peers")]
 pub mod peers;
