@@ -1,0 +1,58 @@
+//! `SutherlandHodgman` behind clip-core's `PolygonClipper` trait.
+
+use clip_core::{
+    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, WindowKind, validate_polygons,
+};
+
+use crate::window::ConvexWindow;
+use crate::{Form, NAME};
+
+/// Sutherland-Hodgman reentrant clipping of any subject against a convex window
+/// (intersection only), registered as `sutherland-hodgman`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SutherlandHodgman {
+    /// Which of the two equivalent forms runs.
+    pub form: Form,
+}
+
+impl SutherlandHodgman {
+    /// The clipper running the given form.
+    pub fn new(form: Form) -> SutherlandHodgman {
+        SutherlandHodgman { form }
+    }
+
+    /// Clips and also returns how many zero-width bridges the output holds
+    /// (see [`crate::bridge_count`]).
+    pub fn clip_counting_bridges(&self, subject: &Polygons, clip: &Polygons) -> Result<(Polygons, usize), ClipError> {
+        validate_polygons(subject, Operand::Subject)?;
+        let window = ConvexWindow::new(clip)?;
+        Ok((window.clip(subject, self.form), crate::bridge_count(subject, &window)))
+    }
+}
+
+impl PolygonClipper for SutherlandHodgman {
+    fn name(&self) -> &'static str {
+        NAME
+    }
+
+    fn capabilities(&self) -> PolygonCapabilities {
+        PolygonCapabilities {
+            ops: &[BoolOp::Intersection],
+            fill_rules: &FillRule::ALL,
+            window: WindowKind::Convex,
+            trapezoids: false,
+            bridges: true,
+        }
+    }
+
+    fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
+        // Any fill rule: clipping to half-planes keeps every winding number inside the window, so
+        // the output read under `fill` is the intersection read under `fill`.
+        let _ = fill;
+        if op != BoolOp::Intersection {
+            return Err(ClipError::Unsupported { clipper: NAME, what: format!("the {op} operation") });
+        }
+        validate_polygons(subject, Operand::Subject)?;
+        Ok(ConvexWindow::new(clip)?.clip(subject, self.form))
+    }
+}

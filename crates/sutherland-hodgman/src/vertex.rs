@@ -1,0 +1,84 @@
+//! What travels through the boundary stages: a plain point, or a point that remembers which
+//! window boundaries it lies on (to find the edges the algorithm lays along the window).
+
+use clip_core::Point;
+
+/// A vertex carried through the stages. [`Point`] is the plain case; [`TaggedVertex`] records
+/// the boundaries a vertex lies on, so bridges can be counted without re-deciding geometry.
+pub trait StageVertex: Copy {
+    /// Its position.
+    fn point(self) -> Point;
+    /// The same vertex, known to lie exactly on boundary `k`.
+    fn on_boundary(self, k: usize) -> Self;
+    /// The crossing of edge `a -> b` with boundary `k`, placed at `at`.
+    fn crossing(a: Self, b: Self, k: usize, at: Point) -> Self;
+}
+
+impl StageVertex for Point {
+    #[inline]
+    fn point(self) -> Point {
+        self
+    }
+    #[inline]
+    fn on_boundary(self, _k: usize) -> Self {
+        self
+    }
+    #[inline]
+    fn crossing(_a: Self, _b: Self, _k: usize, at: Point) -> Self {
+        at
+    }
+}
+
+/// No boundary: a free slot in [`TaggedVertex::on`].
+const NONE: usize = usize::MAX;
+
+/// A vertex with the (at most two) window boundaries it lies on. Two suffice: a point on three
+/// edge lines of a strictly convex window does not exist.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TaggedVertex {
+    /// Position.
+    pub point: Point,
+    /// Indices of boundaries it lies on; `usize::MAX` marks a free slot.
+    pub on: [usize; 2],
+}
+
+impl TaggedVertex {
+    /// An input vertex, on no boundary yet.
+    pub fn new(point: Point) -> TaggedVertex {
+        TaggedVertex { point, on: [NONE; 2] }
+    }
+
+    /// True when it lies on boundary `k`.
+    pub fn is_on(&self, k: usize) -> bool {
+        self.on.contains(&k)
+    }
+
+    fn with(mut self, k: usize) -> TaggedVertex {
+        if !self.is_on(k) {
+            if self.on[0] == NONE {
+                self.on[0] = k;
+            } else {
+                self.on[1] = k;
+            }
+        }
+        self
+    }
+}
+
+impl StageVertex for TaggedVertex {
+    fn point(self) -> Point {
+        self.point
+    }
+    fn on_boundary(self, k: usize) -> Self {
+        self.with(k)
+    }
+    fn crossing(a: Self, b: Self, k: usize, at: Point) -> Self {
+        // The crossing lies on boundary k, and on any boundary the whole edge a-b lies along.
+        let shared = a.on.iter().copied().find(|&j| j != NONE && b.is_on(j));
+        let v = TaggedVertex::new(at).with(k);
+        match shared {
+            Some(j) => v.with(j),
+            None => v,
+        }
+    }
+}
