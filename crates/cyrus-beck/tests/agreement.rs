@@ -1,0 +1,59 @@
+//! Randomized agreement with the exact line oracle on the `wang-t4` and `lines-degenerate`
+//! workloads, and on small integer grids where every incidence is common.
+
+mod common;
+
+use clip_core::{LineClipper, Point, Polygons, Ring, Segment, WindowKind};
+use clip_cyrus_beck::{CyrusBeck, Liu};
+use clip_testkit::workload::line_case;
+use common::{assert_intervals, intervals, oracle};
+use proptest::prelude::*;
+
+const TOL: f64 = 1e-9;
+
+fn check_batch(clipper: &dyn LineClipper, w: &Polygons, segments: &[Segment], what: &str) {
+    let mut out = Vec::new();
+    clipper.prepare(w).unwrap().clip_batch(segments, &mut out).unwrap();
+    for (s, got) in segments.iter().zip(intervals(segments, &out)) {
+        assert_intervals(&got, &oracle(w, *s), TOL, &format!("{what}, {}: {s:?} in {w:?}", clipper.name()));
+    }
+}
+
+#[test]
+fn workloads_agree_with_the_oracle() {
+    for workload in ["lines-degenerate", "wang-t4"] {
+        for index in 0..12 {
+            let any = line_case(workload, 7, index, WindowKind::Any, 150).unwrap();
+            check_batch(&Liu, &any.window, &any.segments, &any.description);
+            let convex = line_case(workload, 7, index, WindowKind::Convex, 150).unwrap();
+            check_batch(&Liu, &convex.window, &convex.segments, &convex.description);
+            check_batch(&CyrusBeck, &convex.window, &convex.segments, &convex.description);
+        }
+    }
+}
+
+fn grid_point() -> impl Strategy<Value = Point> {
+    (0i32..=6, 0i32..=6).prop_map(|(x, y)| Point::new(f64::from(x), f64::from(y)))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    /// Random (often self-intersecting, often degenerate) rings on a 7x7 grid, segments on the same
+    /// grid: vertices on segments, collinear edges and shared endpoints everywhere.
+    #[test]
+    fn grid_cases_agree_with_the_oracle(
+        rings in prop::collection::vec(prop::collection::vec(grid_point(), 3..8), 1..3),
+        segments in prop::collection::vec((grid_point(), grid_point()), 1..12),
+    ) {
+        let w = Polygons::new(rings.into_iter().map(Ring::new).collect());
+        let segments: Vec<Segment> = segments.into_iter().map(|(a, b)| Segment::new(a, b)).collect();
+        if let Ok(prepared) = Liu.prepare(&w) {
+            drop(prepared);
+            check_batch(&Liu, &w, &segments, "grid");
+            if CyrusBeck.prepare(&w).is_ok() {
+                check_batch(&CyrusBeck, &w, &segments, "grid, convex");
+            }
+        }
+    }
+}
