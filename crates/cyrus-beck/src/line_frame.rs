@@ -63,14 +63,15 @@ impl LineFrame {
     }
 
     /// Where the line crosses the edge `p -> q`, whose ends lie strictly on opposite sides of the
-    /// line (`p_left`: `p` on the left). The place is exact: along the line the edge's own line
-    /// function grows with the sign of `p`'s side, so the signs at `a` and `b` place the crossing.
-    /// The parameter comes from the same two values.
+    /// line, `fp` and `fq` being the line function there (exact signs). The place is exact: along
+    /// the line the edge's own line function grows with the sign of `fp`, so its signs at `a` and
+    /// `b` place the crossing. The parameter interpolates the ends' parameters by `fp / (fp - fq)`,
+    /// whose rounding does not grow with the distance from `a`, and which tends to the parameter
+    /// of `p` (of `q`) as `p` (`q`) nears the line.
     #[inline]
-    pub fn edge_crossing(&self, p: Point, q: Point, p_left: bool) -> (Along, f64) {
+    pub fn edge_crossing(&self, p: Point, q: Point, fp: f64, fq: f64) -> (Along, f64) {
         let ga = orient2d(p, q, self.a);
-        // Sign of the edge function far ahead along the line, as +1 or -1 folded into a comparison.
-        let ahead_positive = p_left;
+        let ahead_positive = fp > 0.0;
         if ga == 0.0 {
             return (Along::AtStart, 0.0);
         }
@@ -81,7 +82,8 @@ impl LineFrame {
         if gb == 0.0 {
             (Along::AtEnd, 1.0)
         } else if (gb > 0.0) == ahead_positive {
-            (Along::Inside, (ga / (ga - gb)).clamp(0.0, 1.0))
+            let (tp, tq) = (self.param(p), self.param(q));
+            (Along::Inside, (tp + (tq - tp) * (fp / (fp - fq))).clamp(0.0, 1.0))
         } else {
             (Along::After, 1.0)
         }
@@ -126,13 +128,13 @@ mod tests {
     #[test]
     fn places_edge_crossings_exactly() {
         let f = frame(0.0, 0.0, 4.0, 0.0);
-        let cross = |x: f64| f.edge_crossing(Point::new(x, 1.0), Point::new(x, -1.0), true);
+        let cross = |x: f64| f.edge_crossing(Point::new(x, 1.0), Point::new(x, -1.0), 4.0, -4.0);
         assert_eq!(cross(-1.0), (Along::Before, 0.0));
         assert_eq!(cross(0.0), (Along::AtStart, 0.0));
         assert_eq!(cross(1.0), (Along::Inside, 0.25));
         assert_eq!(cross(4.0), (Along::AtEnd, 1.0));
         assert_eq!(cross(5.0), (Along::After, 1.0));
         // The same edge walked the other way.
-        assert_eq!(f.edge_crossing(Point::new(3.0, -1.0), Point::new(3.0, 1.0), false), (Along::Inside, 0.75));
+        assert_eq!(f.edge_crossing(Point::new(3.0, -1.0), Point::new(3.0, 1.0), -4.0, 4.0), (Along::Inside, 0.75));
     }
 }

@@ -152,7 +152,7 @@ pub(crate) fn cross_by_vertex_sides(table: &RingTable, frame: &LineFrame, scratc
                 let v = if fp == 0.0 { points[i] } else { points[i + 1] };
                 crossings.cross(frame.place(v), frame.param(v));
             } else {
-                let (place, t) = frame.edge_crossing(points[i], points[i + 1], fp > 0.0);
+                let (place, t) = frame.edge_crossing(points[i], points[i + 1], fp, fq);
                 crossings.cross(place, t);
             }
         }

@@ -76,6 +76,7 @@ impl Crossings {
     /// Returns the number of pieces written.
     pub fn emit(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
         sort_small(&mut self.inside);
+        snap(&mut self.inside);
         self.spans.clear();
         let mut inside = self.after_start % 2 == 1;
         let mut from = 0.0;
@@ -97,7 +98,7 @@ impl Crossings {
         let mut current: Option<(f64, f64)> = None;
         for &(lo, hi) in &self.spans {
             current = match current {
-                Some((clo, chi)) if lo <= chi => Some((clo, chi.max(hi))),
+                Some((clo, chi)) if lo <= chi + SNAP => Some((clo, chi.max(hi))),
                 Some(done) => {
                     push_piece(out, index, frame, done);
                     Some((lo, hi))
@@ -115,8 +116,24 @@ impl Crossings {
 /// Appends the piece `[t0, t1]` of segment `index` when it has positive length.
 #[inline]
 pub(crate) fn push_piece(out: &mut Vec<VisiblePiece>, index: usize, frame: &LineFrame, (t0, t1): (f64, f64)) {
-    if t0 < t1 {
-        out.push(VisiblePiece { segment: index, piece: Segment::new(frame.at(t0), frame.at(t1)) });
+    let (a, b) = (frame.at(t0), frame.at(t1));
+    if t1 - t0 > SNAP && a != b {
+        out.push(VisiblePiece { segment: index, piece: Segment::new(a, b) });
+    }
+}
+
+/// Parameters closer than this are one point: the rounding of parameters computed from different
+/// edges (two edges crossing the line at one point, an edge through another ring's vertex) stays
+/// well below it, and a true piece or gap this short is below the resolution of the parameters.
+pub(crate) const SNAP: f64 = 1e-12;
+
+/// Makes sorted parameters within [`SNAP`] of their predecessor equal to it.
+#[inline]
+fn snap(v: &mut [f64]) {
+    for i in 1..v.len() {
+        if v[i] - v[i - 1] <= SNAP {
+            v[i] = v[i - 1];
+        }
     }
 }
 

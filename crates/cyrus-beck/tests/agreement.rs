@@ -22,7 +22,9 @@ fn check_batch(clipper: &dyn LineClipper, w: &Polygons, segments: &[Segment], wh
 #[test]
 fn workloads_agree_with_the_oracle() {
     for workload in ["lines-degenerate", "wang-t4"] {
-        for index in 0..12 {
+        // 12 cases of each by default; LINE_CASES=n for a longer run.
+        let cases = std::env::var("LINE_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(12);
+        for index in 0..cases {
             let any = line_case(workload, 7, index, WindowKind::Any, 150).unwrap();
             check_batch(&Liu, &any.window, &any.segments, &any.description);
             let convex = line_case(workload, 7, index, WindowKind::Convex, 150).unwrap();
@@ -37,7 +39,11 @@ fn grid_point() -> impl Strategy<Value = Point> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    // 256 cases by default; PROPTEST_CASES=n for a longer run.
+    #![proptest_config(ProptestConfig {
+        cases: std::env::var("PROPTEST_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(256),
+        ..ProptestConfig::default()
+    })]
 
     /// Random (often self-intersecting, often degenerate) rings on a 7x7 grid, segments on the same
     /// grid: vertices on segments, collinear edges and shared endpoints everywhere.

@@ -1,0 +1,140 @@
+//! A segment's line as a parameter axis: `t` of points on it and their exact place relative to the ends (the paper's M0, M1).
+
+use clip_core::predicates::orient2d;
+use clip_core::{Point, Segment};
+
+/// Where a point of the segment's line lies relative to the segment, decided exactly.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Along {
+    /// `t < 0`.
+    Before,
+    /// `t = 0`: the start point.
+    AtStart,
+    /// `0 < t < 1`.
+    Inside,
+    /// `t = 1`: the end point.
+    AtEnd,
+    /// `t > 1`.
+    After,
+}
+
+/// The directed line `P(t) = a + t (b - a)` of a segment of positive length.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LineFrame {
+    pub a: Point,
+    pub b: Point,
+    d: Point,
+    inv_len2: f64,
+    /// True when `|dx| >= |dy|`: points on the line are ordered by x, else by y (exact either way).
+    x_major: bool,
+}
+
+impl LineFrame {
+    /// The frame of `s`; `s` must have positive length.
+    #[inline]
+    pub fn new(s: Segment) -> LineFrame {
+        let d = s.b - s.a;
+        LineFrame { a: s.a, b: s.b, d, inv_len2: 1.0 / d.dot(d), x_major: d.x.abs() >= d.y.abs() }
+    }
+
+    /// The parameter of `p` projected onto the line (rounded; exactness lives in [`Self::place`]).
+    #[inline]
+    pub fn param(&self, p: Point) -> f64 {
+        ((p.x - self.a.x) * self.d.x + (p.y - self.a.y) * self.d.y) * self.inv_len2
+    }
+
+    /// The exact place of `p`, a point known to lie on the line, relative to the segment: on the line
+    /// one coordinate is monotone in `t`, so comparing coordinates is exact.
+    #[inline]
+    pub fn place(&self, p: Point) -> Along {
+        let (k, ka, kb) = if self.x_major { (p.x, self.a.x, self.b.x) } else { (p.y, self.a.y, self.b.y) };
+        let (k, ka, kb) = if kb > ka { (k, ka, kb) } else { (-k, -ka, -kb) };
+        if k < ka {
+            Along::Before
+        } else if k == ka {
+            Along::AtStart
+        } else if k < kb {
+            Along::Inside
+        } else if k == kb {
+            Along::AtEnd
+        } else {
+            Along::After
+        }
+    }
+
+    /// Where the line crosses the edge `p -> q`, whose ends lie strictly on opposite sides of the
+    /// line, `fp` and `fq` being the line function there (exact signs). The place is exact: along
+    /// the line the edge's own line function grows with the sign of `fp`, so its signs at `a` and
+    /// `b` place the crossing. The parameter interpolates the ends' parameters by `fp / (fp - fq)`,
+    /// whose rounding does not grow with the distance from `a`, and which tends to the parameter
+    /// of `p` (of `q`) as `p` (`q`) nears the line.
+    #[inline]
+    pub fn edge_crossing(&self, p: Point, q: Point, fp: f64, fq: f64) -> (Along, f64) {
+        let ga = orient2d(p, q, self.a);
+        let ahead_positive = fp > 0.0;
+        if ga == 0.0 {
+            return (Along::AtStart, 0.0);
+        }
+        if (ga > 0.0) == ahead_positive {
+            return (Along::Before, 0.0);
+        }
+        let gb = orient2d(p, q, self.b);
+        if gb == 0.0 {
+            (Along::AtEnd, 1.0)
+        } else if (gb > 0.0) == ahead_positive {
+            let (tp, tq) = (self.param(p), self.param(q));
+            (Along::Inside, (tp + (tq - tp) * (fp / (fp - fq))).clamp(0.0, 1.0))
+        } else {
+            (Along::After, 1.0)
+        }
+    }
+
+    /// The point at parameter `t`, exactly an endpoint at 0 and 1.
+    #[inline]
+    pub fn at(&self, t: f64) -> Point {
+        if t <= 0.0 {
+            self.a
+        } else if t >= 1.0 {
+            self.b
+        } else {
+            self.a.lerp(self.b, t)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn frame(ax: f64, ay: f64, bx: f64, by: f64) -> LineFrame {
+        LineFrame::new(Segment::new(Point::new(ax, ay), Point::new(bx, by)))
+    }
+
+    #[test]
+    fn places_points_on_the_line_in_either_direction() {
+        let f = frame(0.0, 0.0, 4.0, 2.0);
+        assert_eq!(f.place(Point::new(-2.0, -1.0)), Along::Before);
+        assert_eq!(f.place(Point::new(0.0, 0.0)), Along::AtStart);
+        assert_eq!(f.place(Point::new(2.0, 1.0)), Along::Inside);
+        assert_eq!(f.place(Point::new(4.0, 2.0)), Along::AtEnd);
+        assert_eq!(f.place(Point::new(6.0, 3.0)), Along::After);
+        let g = frame(0.0, 5.0, 0.0, 1.0);
+        assert_eq!(g.place(Point::new(0.0, 6.0)), Along::Before);
+        assert_eq!(g.place(Point::new(0.0, 3.0)), Along::Inside);
+        assert_eq!(g.place(Point::new(0.0, 0.0)), Along::After);
+        assert_eq!(g.param(Point::new(0.0, 3.0)), 0.5);
+    }
+
+    #[test]
+    fn places_edge_crossings_exactly() {
+        let f = frame(0.0, 0.0, 4.0, 0.0);
+        let cross = |x: f64| f.edge_crossing(Point::new(x, 1.0), Point::new(x, -1.0), 4.0, -4.0);
+        assert_eq!(cross(-1.0), (Along::Before, 0.0));
+        assert_eq!(cross(0.0), (Along::AtStart, 0.0));
+        assert_eq!(cross(1.0), (Along::Inside, 0.25));
+        assert_eq!(cross(4.0), (Along::AtEnd, 1.0));
+        assert_eq!(cross(5.0), (Along::After, 1.0));
+        // The same edge walked the other way.
+        assert_eq!(f.edge_crossing(Point::new(3.0, -1.0), Point::new(3.0, 1.0), -4.0, 4.0), (Along::Inside, 0.75));
+    }
+}
