@@ -1,0 +1,33 @@
+//! How long the polygon oracle takes per output, at the sizes `verify` runs it on.
+
+use clip_core::{BoolOp, FillRule, WindowKind};
+use clip_testkit::polygon_oracle::{OutputRules, REGION_TOLERANCE, check_polygon_op, region_area};
+use clip_testkit::workload::polygon_case_sized;
+use criterion::{Criterion, criterion_group, criterion_main};
+use std::hint::black_box;
+
+fn oracle(c: &mut Criterion) {
+    let rules = OutputRules::conventional(REGION_TOLERANCE);
+    for edges in [20, 200] {
+        // A ∩ A = A: a right answer of the subject's size, so every check runs to the end.
+        let case = polygon_case_sized("star", 1, 0, edges, WindowKind::Any).unwrap();
+        let a = &case.subject;
+        c.bench_function(&format!("check_polygon_op star {edges} edges"), |b| {
+            b.iter(|| check_polygon_op(black_box(a), a, BoolOp::Intersection, FillRule::NonZero, a, &rules).unwrap())
+        });
+        // Three layers of self-intersecting rings: the slab sweep's worst case among the workloads.
+        let s = polygon_case_sized("scribble", 1, 0, edges, WindowKind::Any).unwrap();
+        let layers = [(&s.subject, FillRule::EvenOdd), (&s.clip, FillRule::EvenOdd), (&s.subject, FillRule::NonZero)];
+        c.bench_function(&format!("region_area scribble 3 layers {edges} edges"), |b| {
+            b.iter(|| region_area(black_box(&layers), |i| (i[0] && i[1]) != i[2]))
+        });
+    }
+    let large = polygon_case_sized("large", 1, 0, 100_000, WindowKind::Any).unwrap();
+    let layers = [(&large.subject, FillRule::NonZero), (&large.clip, FillRule::NonZero)];
+    c.bench_function("region_area large smooth 2 x 100000 edges", |b| {
+        b.iter(|| region_area(black_box(&layers), |i| i[0] && i[1]))
+    });
+}
+
+criterion_group!(benches, oracle);
+criterion_main!(benches);

@@ -1,0 +1,214 @@
+//! The exact, library-independent oracle for boolean operations on polygons.
+//!
+//! Three checks, cheapest first to fail usefully: the output's form ([`check_valid_output`], for
+//! conventional output), exact membership at sample points away from every edge, and the area
+//! of the symmetric difference between the output and the exact answer ([`region_area`]).
+
+mod region_area;
+mod sampling;
+mod validity;
+
+pub use region_area::{region_area, region_area_with_witness};
+pub use validity::{bridge_count, check_valid_output};
+
+use clip_core::{BoolOp, FillRule, Point, Polygons, Rect};
+use core::fmt;
+use sampling::{PointClassifier, sample_points};
+
+/// Relative area tolerance for f64 clippers: the symmetric difference may be this fraction of
+/// the inputs' bounding-box area (rounded intersection points move edges by ulps).
+pub const REGION_TOLERANCE: f64 = 1e-9;
+
+/// Relative area tolerance against `geo` and Clipper2, which snap coordinates to an integer grid
+/// of about extent x 1e-9 (i_overlay) or a scaled integer grid (Clipper2): a sliver one grid step
+/// wide along every edge stays far below this.
+pub const GEO_TOLERANCE: f64 = 1e-6;
+
+/// How far, relative to the tolerance, a sample point must be from every edge to be checked:
+/// margin = extent x relative tolerance x this. Rounded output vertices move edges by far less.
+pub const MARGIN_FACTOR: f64 = 1e3;
+
+/// The absolute area tolerance for a case: `relative` times the area of the bounding box of
+/// both inputs.
+pub fn tolerance(subject: &Polygons, clip: &Polygons, relative: f64) -> f64 {
+    relative * subject.bounds().union(clip.bounds()).area()
+}
+
+/// How an output is to be read and checked.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OutputRules {
+    /// False for bridged output (Sutherland-Hodgman, four-state): no simplicity or
+    /// orientation check, only the region.
+    pub conventional: bool,
+    /// The fill rule the output is read under: `NonZero` for conventional output; the input's
+    /// rule for bridged output.
+    pub output_fill: FillRule,
+    /// The relative area tolerance: [`REGION_TOLERANCE`], or [`GEO_TOLERANCE`] for the peers.
+    pub relative_tolerance: f64,
+}
+
+impl OutputRules {
+    /// Conventional output (simple rings, outers counter-clockwise), read under non-zero, with
+    /// the given relative tolerance.
+    pub fn conventional(relative_tolerance: f64) -> OutputRules {
+        OutputRules { conventional: true, output_fill: FillRule::NonZero, relative_tolerance }
+    }
+
+    /// Bridged output, read under the input's fill rule.
+    pub fn bridged(input_fill: FillRule, relative_tolerance: f64) -> OutputRules {
+        OutputRules { conventional: false, output_fill: input_fill, relative_tolerance }
+    }
+}
+
+/// Why an output is wrong.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PolygonFailure {
+    /// The output's form breaks the conventions: crossing rings, wrong orientation, a zero-area
+    /// ring, a repeated vertex, a non-finite coordinate.
+    Invalid(String),
+    /// A sample point away from every edge is on the wrong side.
+    WrongPoint {
+        /// The point.
+        point: Point,
+        /// Whether the exact answer covers it.
+        expected: bool,
+        /// Whether the output covers it.
+        got: bool,
+    },
+    /// The symmetric difference between the output and the exact answer is too big.
+    WrongRegion {
+        /// Its area.
+        xor_area: f64,
+        /// The absolute tolerance it exceeded.
+        tolerance: f64,
+    },
+    /// The areas of the four operations do not add up.
+    AreaIdentity(String),
+}
+
+impl fmt::Display for PolygonFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PolygonFailure::Invalid(why) => write!(f, "invalid output: {why}"),
+            PolygonFailure::WrongPoint { point, expected, got } => {
+                let word = |b: bool| if b { "inside" } else { "outside" };
+                write!(
+                    f,
+                    "point ({}, {}) should be {} the result but is {}",
+                    point.x,
+                    point.y,
+                    word(*expected),
+                    word(*got)
+                )
+            }
+            PolygonFailure::WrongRegion { xor_area, tolerance } => {
+                write!(f, "result differs from the exact region by area {xor_area:e} (tolerance {tolerance:e})")
+            }
+            PolygonFailure::AreaIdentity(why) => write!(f, "area identity broken: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for PolygonFailure {}
+
+/// The full oracle for one output of `subject op clip` under `fill`: validity (if
+/// conventional), every sample point (a 12 x 12 grid and 112 seeded random points over the
+/// bounding box of inputs and output) farther than a margin from every edge classified exactly,
+/// and the area of the symmetric difference within the tolerance.
+pub fn check_polygon_op(
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+    output: &Polygons,
+    rules: &OutputRules,
+) -> Result<(), PolygonFailure> {
+    if rules.conventional {
+        check_valid_output(output)?;
+    } else if let Some(p) = output.points().find(|p| !p.is_finite()) {
+        return Err(PolygonFailure::Invalid(format!("non-finite output vertex ({}, {})", p.x, p.y)));
+    }
+    let b = subject.bounds().union(clip.bounds()).union(output.bounds());
+    if b.is_empty() {
+        return Ok(());
+    }
+    check_sample_points(subject, clip, op, fill, output, rules, &b)?;
+    let tol = tolerance(subject, clip, rules.relative_tolerance);
+    let layers = [(subject, fill), (clip, fill), (output, rules.output_fill)];
+    let xor_area = region_area(&layers, |inside| op.apply(inside[0], inside[1]) != inside[2]);
+    if xor_area > tol {
+        return Err(PolygonFailure::WrongRegion { xor_area, tolerance: tol });
+    }
+    Ok(())
+}
+
+fn check_sample_points(
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+    output: &Polygons,
+    rules: &OutputRules,
+    b: &Rect,
+) -> Result<(), PolygonFailure> {
+    let margin = b.extent() * rules.relative_tolerance * MARGIN_FACTOR;
+    let (s, c, o) = (
+        PointClassifier::new(subject, margin),
+        PointClassifier::new(clip, margin),
+        PointClassifier::new(output, margin),
+    );
+    for p in sample_points(b) {
+        let (Some(ws), Some(wc), Some(wo)) = (s.winding(p), c.winding(p), o.winding(p)) else { continue };
+        let expected = op.apply(fill.is_inside(ws), fill.is_inside(wc));
+        let got = rules.output_fill.is_inside(wo);
+        if expected != got {
+            return Err(PolygonFailure::WrongPoint { point: p, expected, got });
+        }
+    }
+    Ok(())
+}
+
+/// Checks the area identities on the outputs given (each read under `rules.output_fill`):
+/// |A ∪ B| + |A ∩ B| = |A| + |B|, |A − B| + |A ∩ B| = |A|, |A ⊕ B| = |A ∪ B| − |A ∩ B|, with
+/// |A| and |B| from [`region_area`]. Identities whose outputs are missing are skipped.
+pub fn check_area_identities(
+    subject: &Polygons,
+    clip: &Polygons,
+    fill: FillRule,
+    outputs: &[(BoolOp, &Polygons)],
+    rules: &OutputRules,
+) -> Result<(), PolygonFailure> {
+    let area_of = |op: BoolOp| {
+        outputs.iter().find(|(o, _)| *o == op).map(|(_, p)| region_area(&[(p, rules.output_fill)], |i| i[0]))
+    };
+    let a = region_area(&[(subject, fill)], |i| i[0]);
+    let b = region_area(&[(clip, fill)], |i| i[0]);
+    let (i, u, d, x) =
+        (area_of(BoolOp::Intersection), area_of(BoolOp::Union), area_of(BoolOp::Difference), area_of(BoolOp::Xor));
+    // Each side sums up to three areas, each within the tolerance.
+    let tol = 3.0 * tolerance(subject, clip, rules.relative_tolerance);
+    let check = |name: &str, lhs: f64, rhs: f64| {
+        if (lhs - rhs).abs() > tol {
+            Err(PolygonFailure::AreaIdentity(format!("{name}: {lhs} vs {rhs} (tolerance {tol:e})")))
+        } else {
+            Ok(())
+        }
+    };
+    if let (Some(u), Some(i)) = (u, i) {
+        check("|A∪B| + |A∩B| = |A| + |B|", u + i, a + b)?;
+    }
+    if let (Some(d), Some(i)) = (d, i) {
+        check("|A−B| + |A∩B| = |A|", d + i, a)?;
+    }
+    if let (Some(x), Some(u), Some(i)) = (x, u, i) {
+        check("|A⊕B| = |A∪B| − |A∩B|", x, u - i)?;
+    }
+    Ok(())
+}
+
+/// Whether two outputs cover the same region: `Err(area)` with the area of their symmetric
+/// difference when it exceeds `tolerance` (absolute).
+pub fn same_region(a: (&Polygons, FillRule), b: (&Polygons, FillRule), tolerance: f64) -> Result<(), f64> {
+    let xor_area = region_area(&[a, b], |i| i[0] != i[1]);
+    if xor_area > tolerance { Err(xor_area) } else { Ok(()) }
+}

@@ -1,0 +1,233 @@
+//! The form conventional output must have (DESIGN.md): finite, no repeated consecutive vertex,
+//! no zero-area ring, no crossings, outers counter-clockwise and holes clockwise by nesting
+//! depth; and the count of zero-width bridges in bridged output.
+
+use super::PolygonFailure;
+use clip_core::predicates::{Orientation, on_segment, orient};
+use clip_core::{Point, Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection};
+
+/// One edge of an output ring, with where it comes from.
+#[derive(Clone, Copy, Debug)]
+struct RingEdge {
+    ring: usize,
+    index: usize,
+    segment: Segment,
+    bounds: Rect,
+}
+
+fn ring_edges(p: &Polygons) -> Vec<RingEdge> {
+    let mut edges: Vec<RingEdge> = p
+        .rings
+        .iter()
+        .enumerate()
+        .flat_map(|(ring, r)| {
+            r.edges().enumerate().map(move |(index, segment)| RingEdge {
+                ring,
+                index,
+                segment,
+                bounds: segment.bounds(),
+            })
+        })
+        .collect();
+    edges.sort_unstable_by(|a, b| a.bounds.min.x.total_cmp(&b.bounds.min.x));
+    edges
+}
+
+/// Calls `visit` on every pair of edges whose bounding boxes meet (a sweep over x).
+fn for_each_close_pair(
+    edges: &[RingEdge],
+    mut visit: impl FnMut(&RingEdge, &RingEdge) -> Result<(), PolygonFailure>,
+) -> Result<(), PolygonFailure> {
+    for (i, e) in edges.iter().enumerate() {
+        for f in &edges[i + 1..] {
+            if f.bounds.min.x > e.bounds.max.x {
+                break;
+            }
+            if e.bounds.intersects(&f.bounds) {
+                visit(e, f)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Checks conventional output: every coordinate finite; every ring of at least 3 vertices, no
+/// repeated consecutive vertex, not all on one line, no zero-width spike (an edge folding back
+/// over the previous one); no two edges crossing, none overlapping another of its own ring, and
+/// no two rings (or two passes of one ring) crossing at a shared point; outer rings
+/// counter-clockwise and holes clockwise by nesting depth (the number of rings around them).
+///
+/// Rings may touch at points without crossing, and different rings may share an edge.
+pub fn check_valid_output(output: &Polygons) -> Result<(), PolygonFailure> {
+    for (r, ring) in output.rings.iter().enumerate() {
+        check_ring_form(r, ring)?;
+    }
+    let edges = ring_edges(output);
+    for_each_close_pair(&edges, |e, f| check_pair(output, e, f))?;
+    check_orientation(output)
+}
+
+fn invalid(message: String) -> Result<(), PolygonFailure> {
+    Err(PolygonFailure::Invalid(message))
+}
+
+fn check_ring_form(r: usize, ring: &Ring) -> Result<(), PolygonFailure> {
+    let p = &ring.points;
+    if let Some(v) = p.iter().position(|q| !q.is_finite()) {
+        return invalid(format!("ring {r} vertex {v} is not finite ({:?})", p[v]));
+    }
+    if p.len() < 3 {
+        return invalid(format!("ring {r} has {} vertices", p.len()));
+    }
+    let first_other = p.iter().find(|&&q| q != p[0]).copied().unwrap_or(p[0]);
+    if p.iter().all(|&q| orient(p[0], first_other, q) == Orientation::Collinear) {
+        return invalid(format!("ring {r} has zero area (all its vertices are collinear)"));
+    }
+    let n = p.len();
+    for i in 0..n {
+        let (a, b, c) = (p[i], p[(i + 1) % n], p[(i + 2) % n]);
+        if a == b {
+            return invalid(format!("ring {r} repeats vertex {i} ({}, {})", a.x, a.y));
+        }
+        if orient(a, b, c) == Orientation::Collinear && folds_back(a, b, c) {
+            return invalid(format!("ring {r} has a zero-width spike at vertex {} ({}, {})", (i + 1) % n, b.x, b.y));
+        }
+    }
+    Ok(())
+}
+
+/// For collinear `a, b, c`: true when `c` lies on the same side of `b` as `a` (the path turns
+/// back at `b`). Exact: compares coordinates.
+fn folds_back(a: Point, b: Point, c: Point) -> bool {
+    let side = |q: Point| if q.x != b.x { (q.x > b.x) as i8 * 2 - 1 } else { (q.y > b.y) as i8 * 2 - 1 };
+    c != b && side(a) == side(c)
+}
+
+fn adjacent(output: &Polygons, e: &RingEdge, f: &RingEdge) -> bool {
+    if e.ring != f.ring {
+        return false;
+    }
+    let n = output.rings[e.ring].len();
+    let (i, j) = (e.index.min(f.index), e.index.max(f.index));
+    j == i + 1 || (i == 0 && j == n - 1)
+}
+
+fn check_pair(output: &Polygons, e: &RingEdge, f: &RingEdge) -> Result<(), PolygonFailure> {
+    if adjacent(output, e, f) {
+        return Ok(());
+    }
+    let at = |p: Point| format!("({}, {})", p.x, p.y);
+    match segment_intersection(e.segment, f.segment) {
+        SegmentIntersection::None => Ok(()),
+        SegmentIntersection::Crossing(p) => {
+            invalid(format!("ring {} edge {} crosses ring {} edge {} near {}", e.ring, e.index, f.ring, f.index, at(p)))
+        }
+        SegmentIntersection::Overlap(s) if e.ring == f.ring => invalid(format!(
+            "ring {} overlaps itself along {} - {} (edges {} and {})",
+            e.ring,
+            at(s.a),
+            at(s.b),
+            e.index,
+            f.index
+        )),
+        SegmentIntersection::Overlap(_) => Ok(()),
+        SegmentIntersection::Touching(p) => {
+            let (pe, pf) = (passage(output, e, p), passage(output, f, p));
+            match (side(p, pe, pf.0), side(p, pe, pf.1)) {
+                (Some(x), Some(y)) if x != y => invalid(format!(
+                    "ring {} (edge {}) crosses ring {} (edge {}) at the shared point {}",
+                    e.ring,
+                    e.index,
+                    f.ring,
+                    f.index,
+                    at(p)
+                )),
+                _ => Ok(()),
+            }
+        }
+    }
+}
+
+/// The ring's way through `p` on edge `e`: the points it comes from and goes to.
+fn passage(output: &Polygons, e: &RingEdge, p: Point) -> (Point, Point) {
+    let pts = &output.rings[e.ring].points;
+    let n = pts.len();
+    if p == e.segment.a {
+        (pts[(e.index + n - 1) % n], e.segment.b)
+    } else if p == e.segment.b {
+        (e.segment.a, pts[(e.index + 2) % n])
+    } else {
+        (e.segment.a, e.segment.b)
+    }
+}
+
+/// Which side of the path `u -> p -> v` the ray from `p` towards `q` leaves on: `Some(true)`
+/// inside the counter-clockwise turn from ray `pu` to ray `pv`, `Some(false)` outside, `None`
+/// when it runs along either ray or the path folds back on itself. Exact.
+fn side(p: Point, (u, v): (Point, Point), q: Point) -> Option<bool> {
+    let along = |r: Point| orient(p, r, q) == Orientation::Collinear && !on_segment(p, Segment::new(r, q));
+    if q == p || along(u) || along(v) {
+        return None;
+    }
+    let ccw = |a: Point, b: Point| orient(p, a, b) == Orientation::CounterClockwise;
+    match orient(p, u, v) {
+        Orientation::CounterClockwise => Some(ccw(u, q) && ccw(q, v)),
+        Orientation::Clockwise => Some(!(ccw(v, q) && ccw(q, u))),
+        Orientation::Collinear if on_segment(p, Segment::new(u, v)) => Some(ccw(u, q)),
+        Orientation::Collinear => None,
+    }
+}
+
+/// Outer rings (even depth) counter-clockwise, holes (odd depth) clockwise.
+fn check_orientation(output: &Polygons) -> Result<(), PolygonFailure> {
+    let bounds: Vec<Rect> = output.rings.iter().map(Ring::bounds).collect();
+    for (r, ring) in output.rings.iter().enumerate() {
+        let depth = (0..output.rings.len())
+            .filter(|&s| s != r && contains_box(&bounds[s], &bounds[r]) && ring_inside(ring, &output.rings[s]))
+            .count();
+        let area = ring.signed_area();
+        let want_ccw = depth % 2 == 0;
+        if (area > 0.0) != want_ccw {
+            let role = if want_ccw { "an outer ring (depth" } else { "a hole (depth" };
+            let turn = if area > 0.0 { "counter-clockwise" } else { "clockwise" };
+            return invalid(format!("ring {r} is {role} {depth}) but runs {turn} (signed area {area})"));
+        }
+    }
+    Ok(())
+}
+
+fn contains_box(outer: &Rect, inner: &Rect) -> bool {
+    outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.max.x >= inner.max.x && outer.max.y >= inner.max.y
+}
+
+/// True when ring `r` lies inside ring `s` (rings that do not cross): decided at the first
+/// vertex or edge midpoint of `r` that is not on `s`.
+fn ring_inside(r: &Ring, s: &Ring) -> bool {
+    let probes = r.points.iter().copied().chain(r.edges().map(|e| e.at(0.5)));
+    for p in probes {
+        if let Some(w) = ring_winding(p, s) {
+            return w != 0;
+        }
+    }
+    false
+}
+
+/// The number of zero-width bridges in an output: pairs of edges (of any rings) that overlap
+/// along a positive length while running in opposite directions. Such pairs enclose no area;
+/// Sutherland-Hodgman leaves them along the window when a concave result falls apart.
+pub fn bridge_count(output: &Polygons) -> usize {
+    let edges = ring_edges(output);
+    let mut count = 0;
+    let _ = for_each_close_pair(&edges, |e, f| {
+        if let SegmentIntersection::Overlap(_) = segment_intersection(e.segment, f.segment) {
+            let (d, g) = (e.segment.b - e.segment.a, f.segment.b - f.segment.a);
+            // Collinear, so the signs along either axis agree; use the larger component.
+            let opposite = if d.x.abs() >= d.y.abs() { (d.x > 0.0) != (g.x > 0.0) } else { (d.y > 0.0) != (g.y > 0.0) };
+            if opposite {
+                count += 1;
+            }
+        }
+        Ok(())
+    });
+    count
+}

@@ -1,0 +1,285 @@
+//! The polygon oracle: exact areas on known shapes, and deliberately wrong answers caught.
+
+use clip_core::{BoolOp, FillRule, Point, Polygons, Rect, Ring, WindowKind};
+use clip_testkit::polygon_oracle::*;
+use clip_testkit::workload::polygon_case;
+use proptest::prelude::*;
+
+fn ring(points: &[(f64, f64)]) -> Ring {
+    Ring::from(points)
+}
+
+fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Polygons {
+    Polygons::from(Rect::new(x0, y0, x1, y1))
+}
+
+fn area(p: &Polygons, fill: FillRule) -> f64 {
+    region_area(&[(p, fill)], |i| i[0])
+}
+
+const EXACT: OutputRules =
+    OutputRules { conventional: true, output_fill: FillRule::NonZero, relative_tolerance: REGION_TOLERANCE };
+
+/// Subject [0,2]², clip [1,3]², and the four right answers.
+fn squares() -> (Polygons, Polygons, [(BoolOp, Polygons); 4]) {
+    let (a, b) = (rect(0.0, 0.0, 2.0, 2.0), rect(1.0, 1.0, 3.0, 3.0));
+    let union = ring(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (3.0, 1.0), (3.0, 3.0), (1.0, 3.0), (1.0, 2.0), (0.0, 2.0)]);
+    let difference = ring(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)]);
+    let other = ring(&[(2.0, 1.0), (3.0, 1.0), (3.0, 3.0), (1.0, 3.0), (1.0, 2.0), (2.0, 2.0)]);
+    let answers = [
+        (BoolOp::Intersection, rect(1.0, 1.0, 2.0, 2.0)),
+        (BoolOp::Union, union.into()),
+        (BoolOp::Difference, difference.clone().into()),
+        (BoolOp::Xor, vec![difference, other].into()),
+    ];
+    (a, b, answers)
+}
+
+#[test]
+fn region_area_is_exact_on_known_shapes() {
+    let (a, b, _) = squares();
+    assert_eq!(area(&rect(0.0, 0.0, 2.0, 3.0), FillRule::NonZero), 6.0);
+    let both =
+        |p: fn(bool, bool) -> bool| region_area(&[(&a, FillRule::NonZero), (&b, FillRule::NonZero)], |i| p(i[0], i[1]));
+    assert_eq!(both(|x, y| x || y), 7.0);
+    assert_eq!(both(|x, y| x && y), 1.0);
+    assert_eq!(both(|x, y| x != y), 6.0);
+    assert_eq!(both(|x, y| x && !y), 3.0);
+    // A bow-tie: a counter-clockwise and a clockwise triangle of area 25 each.
+    let bow = Polygons::from(ring(&[(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 10.0)]));
+    assert_eq!(area(&bow, FillRule::EvenOdd), 50.0);
+    assert_eq!(area(&bow, FillRule::NonZero), 50.0);
+    assert_eq!(area(&bow, FillRule::Positive), 25.0);
+    assert_eq!(area(&bow, FillRule::Negative), 25.0);
+    // A ring and its copy: cancelled under even-odd, doubled (still the square) under non-zero.
+    let twice = Polygons::new(vec![Rect::new(0.0, 0.0, 4.0, 4.0).to_ring(), Rect::new(0.0, 0.0, 4.0, 4.0).to_ring()]);
+    assert_eq!(area(&twice, FillRule::EvenOdd), 0.0);
+    assert_eq!(area(&twice, FillRule::NonZero), 16.0);
+    assert_eq!(area(&twice, FillRule::Negative), 0.0);
+    // A clockwise square is inside under non-zero and negative only.
+    let cw = Polygons::from(Rect::new(0.0, 0.0, 2.0, 2.0).to_ring().reversed());
+    assert_eq!((area(&cw, FillRule::Positive), area(&cw, FillRule::Negative)), (0.0, 4.0));
+    // A square with a hole; a pentagram, whose centre winds twice.
+    let holed = Polygons::new(vec![
+        Rect::new(0.0, 0.0, 10.0, 10.0).to_ring(),
+        Rect::new(3.0, 3.0, 7.0, 7.0).to_ring().reversed(),
+    ]);
+    assert_eq!(area(&holed, FillRule::NonZero), 84.0);
+    let star: Vec<Point> = (0..5)
+        .map(|k| {
+            let a = std::f64::consts::FRAC_PI_2 + 4.0 * std::f64::consts::PI * f64::from(k) / 5.0;
+            Point::new(a.cos(), a.sin())
+        })
+        .collect();
+    let star = Polygons::from(Ring::new(star));
+    let (eo, nz) = (area(&star, FillRule::EvenOdd), area(&star, FillRule::NonZero));
+    // Non-zero covers the pentagon too; the pentagon is the star's centre, winding 2.
+    let pentagon_area = nz - eo;
+    let (s36, s72) = (36f64.to_radians().sin(), 72f64.to_radians().sin());
+    let inner = 72f64.to_radians().cos() / 36f64.to_radians().cos(); // the pentagon's circumradius
+    assert!((nz - 5.0 * inner * s36).abs() < 1e-12, "{nz}");
+    assert!((pentagon_area - 2.5 * inner * inner * s72).abs() < 1e-12, "{pentagon_area}");
+    assert_eq!(area(&Polygons::empty(), FillRule::NonZero), 0.0);
+}
+
+#[test]
+fn right_answers_pass() {
+    let (a, b, answers) = squares();
+    for (op, out) in &answers {
+        check_polygon_op(&a, &b, *op, FillRule::NonZero, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
+        check_polygon_op(&a, &b, *op, FillRule::EvenOdd, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
+    }
+    let outs: Vec<(BoolOp, &Polygons)> = answers.iter().map(|(o, p)| (*o, p)).collect();
+    check_area_identities(&a, &b, FillRule::NonZero, &outs, &EXACT).unwrap();
+}
+
+#[test]
+fn a_dropped_ring_is_caught() {
+    let (a, b, answers) = squares();
+    let mut xor = answers[3].1.clone();
+    xor.rings.pop();
+    let e = check_polygon_op(&a, &b, BoolOp::Xor, FillRule::NonZero, &xor, &EXACT).unwrap_err();
+    assert!(matches!(e, PolygonFailure::WrongPoint { expected: true, got: false, .. }), "{e}");
+}
+
+#[test]
+fn a_flipped_op_is_caught() {
+    let (a, b, answers) = squares();
+    for (op, out) in &answers {
+        for (other, _) in &answers {
+            if other != op {
+                assert!(
+                    check_polygon_op(&a, &b, *other, FillRule::NonZero, out, &EXACT).is_err(),
+                    "{op} passed as {other}"
+                );
+            }
+        }
+    }
+    // And the identities notice a union standing in for an intersection.
+    let outs = [(BoolOp::Intersection, &answers[1].1), (BoolOp::Union, &answers[1].1)];
+    assert!(matches!(
+        check_area_identities(&a, &b, FillRule::NonZero, &outs, &EXACT),
+        Err(PolygonFailure::AreaIdentity(_))
+    ));
+}
+
+#[test]
+fn a_shifted_vertex_is_caught_even_between_sample_points() {
+    let (a, b, answers) = squares();
+    let mut union = answers[1].1.clone();
+    union.rings[0].points[4].x += 1e-3; // (3, 3) -> (3.001, 3): a sliver of area 1e-3
+    let e = check_polygon_op(&a, &b, BoolOp::Union, FillRule::NonZero, &union, &EXACT).unwrap_err();
+    assert!(matches!(e, PolygonFailure::WrongRegion { .. }), "{e}");
+    // Within the tolerance it passes: 1e-12 of an ulp-sized shift.
+    let mut close = answers[1].1.clone();
+    close.rings[0].points[4].x += 1e-12;
+    check_polygon_op(&a, &b, BoolOp::Union, FillRule::NonZero, &close, &EXACT).unwrap();
+}
+
+#[test]
+fn a_reversed_hole_is_caught() {
+    let holed = Polygons::new(vec![
+        Rect::new(0.0, 0.0, 10.0, 10.0).to_ring(),
+        Rect::new(3.0, 3.0, 7.0, 7.0).to_ring().reversed(),
+    ]);
+    let big = rect(-1.0, -1.0, 11.0, 11.0);
+    check_polygon_op(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &holed, &EXACT).unwrap();
+    let mut wrong = holed.clone();
+    wrong.rings[1] = wrong.rings[1].reversed();
+    let e = check_polygon_op(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &wrong, &EXACT).unwrap_err();
+    assert!(matches!(&e, PolygonFailure::Invalid(m) if m.contains("hole")), "{e}");
+    // Read as bridged output (no form check), the region is wrong.
+    let loose = OutputRules::bridged(FillRule::NonZero, REGION_TOLERANCE);
+    assert!(check_polygon_op(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &wrong, &loose).is_err());
+}
+
+#[test]
+fn crossing_output_is_caught() {
+    let bow = Polygons::from(ring(&[(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 10.0)]));
+    assert!(matches!(check_valid_output(&bow), Err(PolygonFailure::Invalid(m)) if m.contains("crosses")));
+    // Two rings crossing only where one's edge runs through the other's vertices.
+    let square = Rect::new(0.0, 0.0, 2.0, 2.0).to_ring();
+    let through = ring(&[(-1.0, -1.0), (3.0, 3.0), (4.0, 0.0), (0.0, -2.0)]);
+    let e = check_valid_output(&Polygons::new(vec![square.clone(), through])).unwrap_err();
+    assert!(e.to_string().contains("shared point"), "{e}");
+    // Touching at corners is fine, and so is a hole touching its outer at a vertex.
+    let corners = Polygons::new(vec![square.clone(), Rect::new(2.0, 2.0, 4.0, 4.0).to_ring()]);
+    check_valid_output(&corners).unwrap();
+    let touching_hole =
+        Polygons::new(vec![Rect::new(0.0, 0.0, 10.0, 10.0).to_ring(), ring(&[(5.0, 0.0), (3.0, 5.0), (7.0, 5.0)])]);
+    check_valid_output(&touching_hole).unwrap();
+}
+
+#[test]
+fn form_defects_are_caught() {
+    let cases: [(&str, Polygons); 5] = [
+        ("repeats", ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 0.0), (1.0, 1.0)]).into()),
+        ("zero area", ring(&[(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)]).into()),
+        ("spike", ring(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (3.0, 1.0), (2.0, 1.0), (2.0, 2.0), (0.0, 2.0)]).into()),
+        ("outer ring", Polygons::from(Rect::new(0.0, 0.0, 1.0, 1.0).to_ring().reversed())),
+        ("not finite", ring(&[(0.0, 0.0), (f64::NAN, 0.0), (1.0, 1.0)]).into()),
+    ];
+    for (what, p) in cases {
+        let e = check_valid_output(&p).unwrap_err();
+        assert!(e.to_string().contains(what), "{what}: {e}");
+    }
+    // Collinear vertices that keep going forward are allowed.
+    check_valid_output(&ring(&[(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 2.0)]).into()).unwrap();
+}
+
+#[test]
+fn bridges_are_counted_and_compared_by_region() {
+    // Two squares joined by a zero-width bridge along y = 0, as Sutherland-Hodgman leaves them.
+    let bridged = Polygons::from(ring(&[
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 1.0),
+        (3.0, 1.0),
+        (3.0, 0.0),
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+    ]));
+    assert_eq!(bridge_count(&bridged), 1);
+    let apart = Polygons::new(vec![Rect::new(0.0, 0.0, 1.0, 1.0).to_ring(), Rect::new(3.0, 0.0, 4.0, 1.0).to_ring()]);
+    assert_eq!(bridge_count(&apart), 0);
+    same_region((&bridged, FillRule::NonZero), (&apart, FillRule::NonZero), 1e-12).unwrap();
+    assert_eq!(
+        same_region((&bridged, FillRule::NonZero), (&rect(0.0, 0.0, 1.0, 1.0), FillRule::NonZero), 1e-12),
+        Err(1.0)
+    );
+}
+
+#[test]
+fn tolerance_scales_with_the_inputs_box() {
+    let (a, b, _) = squares();
+    assert!((tolerance(&a, &b, 1e-9) - 9e-9).abs() < 1e-20);
+}
+
+#[test]
+fn identity_on_generated_cases() {
+    // A ∩ A = A ∪ A = A and A − A = A ⊕ A = ∅ for simple counter-clockwise stars.
+    for i in 0..10 {
+        let case = polygon_case("star", 11, i, WindowKind::Any).unwrap();
+        let a = &case.subject;
+        let empty = Polygons::empty();
+        for (op, out) in
+            [(BoolOp::Intersection, a), (BoolOp::Union, a), (BoolOp::Difference, &empty), (BoolOp::Xor, &empty)]
+        {
+            check_polygon_op(a, a, op, FillRule::NonZero, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
+        }
+        assert!(check_polygon_op(a, a, BoolOp::Intersection, FillRule::NonZero, &empty, &EXACT).is_err());
+        let shoelace = a.signed_area();
+        assert!((area(a, FillRule::NonZero) - shoelace).abs() < 1e-9 * shoelace);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Two random rectangles: their intersection is a rectangle, which the oracle accepts; the
+    /// same rectangle moved by a visible amount it rejects.
+    #[test]
+    fn rectangle_intersections(x0 in -100i32..100, y0 in -100i32..100, w0 in 1i32..80, h0 in 1i32..80,
+                               x1 in -100i32..100, y1 in -100i32..100, w1 in 1i32..80, h1 in 1i32..80,
+                               scale in 0.001f64..1000.0) {
+        let f = |v: i32| f64::from(v) * scale;
+        let a = rect(f(x0), f(y0), f(x0 + w0), f(y0 + h0));
+        let b = rect(f(x1), f(y1), f(x1 + w1), f(y1 + h1));
+        let (lx, ly, hx, hy) = (x0.max(x1), y0.max(y1), (x0 + w0).min(x1 + w1), (y0 + h0).min(y1 + h1));
+        let out = if lx < hx && ly < hy { rect(f(lx), f(ly), f(hx), f(hy)) } else { Polygons::empty() };
+        prop_assert!(check_polygon_op(&a, &b, BoolOp::Intersection, FillRule::NonZero, &out, &EXACT).is_ok());
+        prop_assert!(check_polygon_op(&a, &b, BoolOp::Intersection, FillRule::EvenOdd, &out, &EXACT).is_ok());
+        if lx < hx && ly < hy {
+            let moved = rect(f(lx) + scale * 0.5, f(ly), f(hx) + scale * 0.5, f(hy));
+            prop_assert!(check_polygon_op(&a, &b, BoolOp::Intersection, FillRule::NonZero, &moved, &EXACT).is_err());
+        }
+    }
+
+    /// Inclusion-exclusion holds for region_area on random self-intersecting rings under every rule.
+    #[test]
+    fn region_area_inclusion_exclusion(seed in 0u64..1000, rule in 0usize..4) {
+        let case = polygon_case("scribble", seed, 0, WindowKind::Any).unwrap();
+        let fill = FillRule::ALL[rule];
+        let layers = [(&case.subject, fill), (&case.clip, fill)];
+        let by = |p: fn(bool, bool) -> bool| region_area(&layers, |i| p(i[0], i[1]));
+        let (a, b) = (area(&case.subject, fill), area(&case.clip, fill));
+        let (u, i, x, d) = (by(|x, y| x || y), by(|x, y| x && y), by(|x, y| x != y), by(|x, y| x && !y));
+        let tol = 1e-9 * 1e6;
+        prop_assert!((u + i - a - b).abs() < tol);
+        prop_assert!((x - (u - i)).abs() < tol);
+        prop_assert!((d + i - a).abs() < tol);
+    }
+
+    /// Even-odd and non-zero agree on simple rings; a ring's area under non-zero is |shoelace|,
+    /// whichever way it runs.
+    #[test]
+    fn region_area_matches_shoelace_on_stars(seed in 0u64..1000, reverse: bool) {
+        let case = polygon_case("star", seed, 1, WindowKind::Any).unwrap();
+        let mut s = case.subject.clone();
+        if reverse { s.rings[0] = s.rings[0].reversed(); }
+        let shoelace = s.signed_area().abs();
+        prop_assert!((area(&s, FillRule::NonZero) - shoelace).abs() < 1e-9 * shoelace);
+        prop_assert!((area(&s, FillRule::EvenOdd) - shoelace).abs() < 1e-9 * shoelace);
+    }
+}
