@@ -1,5 +1,6 @@
 //! clip-testkit: seeded workloads, exact oracles and a shrinker.
 
+pub mod line_oracle;
 pub mod polygon_oracle;
 pub mod workload;
 

@@ -1,0 +1,239 @@
+//! The exact oracle for line clipping: closed-set visible intervals of a segment in a window.
+//!
+//! DESIGN.md's rule: the visible part of `P(t) = a + t (b - a)`, `t` in `[0, 1]`, is the set of
+//! maximal intervals `[ta, tb]`, `tb > ta`, on which every point lies in the closed window
+//! (interior under even-odd, or boundary). Adjacent intervals are merged and isolated touch
+//! points dropped.
+
+use clip_core::{
+    FillRule, Location, Point, Polygons, Segment, SegmentIntersection, VisiblePiece, locate, segment_intersection,
+};
+use core::fmt;
+
+/// The parameter tolerance `verify` compares line clippers' pieces with.
+pub const LINE_T_TOLERANCE: f64 = 1e-9;
+
+/// Why a batch of pieces is wrong.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LineFailure {
+    /// A segment's pieces, as parameter intervals, differ from the exact ones.
+    WrongPieces {
+        /// Index of the segment in the batch.
+        segment: usize,
+        /// The exact visible intervals.
+        expected: Vec<(f64, f64)>,
+        /// The clipper's pieces as intervals.
+        got: Vec<(f64, f64)>,
+    },
+    /// A piece breaks the form: off its segment, reversed, zero length, out of order, unmerged.
+    BadPiece(String),
+}
+
+impl fmt::Display for LineFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LineFailure::WrongPieces { segment, expected, got } => {
+                write!(f, "segment {segment}: visible intervals should be {expected:?}, got {got:?}")
+            }
+            LineFailure::BadPiece(why) => write!(f, "bad piece: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for LineFailure {}
+
+/// The exact closed-set visible parameter intervals of `s` in `window` (even-odd interior,
+/// boundary included), sorted by `t`.
+///
+/// Every `t` where `s` meets an edge comes from the exact classification of the pair
+/// ([`segment_intersection`]): proper crossings from the line equations, touching points and
+/// collinear overlaps from their exact endpoints. Between consecutive such `t`s the segment is
+/// wholly in or wholly out: runs along an overlap are on the boundary (visible); the rest are
+/// classified by an exact point location of an interior point. A zero-length segment has no
+/// visible interval.
+///
+/// ```
+/// use clip_core::{Point, Polygons, Rect, Segment};
+/// use clip_testkit::line_oracle::visible_intervals;
+///
+/// let square = Polygons::from(Rect::new(0.0, 0.0, 10.0, 10.0));
+/// let s = Segment::new(Point::new(-5.0, 5.0), Point::new(15.0, 5.0));
+/// assert_eq!(visible_intervals(&square, s), vec![(0.25, 0.75)]);
+/// // Touching a corner only: nothing visible.
+/// let touch = Segment::new(Point::new(5.0, 15.0), Point::new(15.0, 5.0));
+/// assert_eq!(visible_intervals(&square, touch), vec![]);
+/// ```
+pub fn visible_intervals(window: &Polygons, s: Segment) -> Vec<(f64, f64)> {
+    if s.is_degenerate() || !s.a.is_finite() || !s.b.is_finite() {
+        return Vec::new();
+    }
+    let bounds = s.bounds();
+    let mut ts = vec![0.0, 1.0];
+    let mut overlaps: Vec<(f64, f64)> = Vec::new();
+    for e in window.edges() {
+        if !bounds.intersects(&e.bounds()) {
+            continue;
+        }
+        match segment_intersection(s, e) {
+            SegmentIntersection::None => {}
+            SegmentIntersection::Crossing(_) => ts.push(crossing_t(s, e)),
+            SegmentIntersection::Touching(p) => ts.push(t_of(s, p)),
+            SegmentIntersection::Overlap(o) => {
+                let (ta, tb) = (t_of(s, o.a), t_of(s, o.b));
+                ts.extend([ta, tb]);
+                overlaps.push((ta.min(tb), ta.max(tb)));
+            }
+        }
+    }
+    ts.sort_unstable_by(f64::total_cmp);
+    ts.dedup();
+    let mut out: Vec<(f64, f64)> = Vec::new();
+    for w in ts.windows(2) {
+        let (ta, tb) = (w[0], w[1]);
+        if tb <= ta || !run_is_visible(window, s, ta, tb, &overlaps) {
+            continue;
+        }
+        match out.last_mut() {
+            Some(last) if last.1 == ta => last.1 = tb,
+            _ => out.push((ta, tb)),
+        }
+    }
+    out
+}
+
+/// `t` of a point known to lie on `s`: exact at the endpoints, else by projection.
+fn t_of(s: Segment, p: Point) -> f64 {
+    if p == s.a {
+        0.0
+    } else if p == s.b {
+        1.0
+    } else {
+        s.param_of(p).clamp(0.0, 1.0)
+    }
+}
+
+/// `t` on `s` where the interiors of `s` and `e` cross (known to cross).
+fn crossing_t(s: Segment, e: Segment) -> f64 {
+    let (ds, de) = (s.b - s.a, e.b - e.a);
+    let t = (e.a - s.a).cross(de) / ds.cross(de);
+    if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.5 }
+}
+
+/// Whether the run `(ta, tb)` of `s`, which meets no edge inside, is in the closed window.
+fn run_is_visible(window: &Polygons, s: Segment, ta: f64, tb: f64, overlaps: &[(f64, f64)]) -> bool {
+    if overlaps.iter().any(|&(oa, ob)| oa <= ta && tb <= ob) {
+        return true; // along an edge: boundary
+    }
+    // The midpoint, or if rounding lands it on an edge, other interior points of the run.
+    for f in [0.5, 0.25, 0.75, 0.125, 0.875] {
+        match locate(s.at(ta + (tb - ta) * f), window, FillRule::EvenOdd) {
+            Location::Inside => return true,
+            Location::Outside => return false,
+            Location::Boundary => {}
+        }
+    }
+    true
+}
+
+/// Each segment's pieces as parameter intervals `(t(piece.a), t(piece.b))` on that segment, in
+/// the order given; one list per segment.
+pub fn pieces_to_intervals(segments: &[Segment], pieces: &[VisiblePiece]) -> Vec<Vec<(f64, f64)>> {
+    let mut out = vec![Vec::new(); segments.len()];
+    for p in pieces {
+        if let Some(s) = segments.get(p.segment) {
+            out[p.segment].push((t_of_piece(s, p.piece.a), t_of_piece(s, p.piece.b)));
+        }
+    }
+    out
+}
+
+fn t_of_piece(s: &Segment, p: Point) -> f64 {
+    if p == s.a {
+        0.0
+    } else if p == s.b {
+        1.0
+    } else {
+        s.param_of(p)
+    }
+}
+
+/// Checks a clipper's pieces for a batch: segment indices valid and in input order; each piece
+/// of positive length, on its segment (within `t_tolerance` of its length), running its way,
+/// inside `[0, 1]`; a segment's pieces in increasing `t`, apart (pieces that meet exactly should
+/// have been merged); and, as `t`-intervals, equal to [`visible_intervals`] within
+/// `t_tolerance` (gaps and intervals shorter than it are disregarded on both sides, as
+/// rounding may make or miss them).
+pub fn check_line_batch(
+    window: &Polygons,
+    segments: &[Segment],
+    pieces: &[VisiblePiece],
+    t_tolerance: f64,
+) -> Result<(), LineFailure> {
+    let bad = |why: String| Err(LineFailure::BadPiece(why));
+    let mut last_segment = 0;
+    for (k, p) in pieces.iter().enumerate() {
+        let Some(s) = segments.get(p.segment) else {
+            return bad(format!("piece {k} names segment {} of a batch of {}", p.segment, segments.len()));
+        };
+        if p.segment < last_segment {
+            return bad(format!("piece {k} (segment {}) comes after segment {last_segment}'s", p.segment));
+        }
+        last_segment = p.segment;
+        if !p.piece.a.is_finite() || !p.piece.b.is_finite() || p.piece.is_degenerate() {
+            return bad(format!("piece {k} of segment {} is empty or not finite: {:?}", p.segment, p.piece));
+        }
+        let len = s.length();
+        let off = |q: Point| (q - s.a).cross(s.b - s.a).abs() / len;
+        if len == 0.0 || off(p.piece.a) > t_tolerance * len || off(p.piece.b) > t_tolerance * len {
+            return bad(format!("piece {k} {:?} is not on segment {} {:?}", p.piece, p.segment, s));
+        }
+        let (ta, tb) = (s.param_of(p.piece.a), s.param_of(p.piece.b));
+        if tb <= ta {
+            return bad(format!("piece {k} of segment {} runs against it (t {ta} -> {tb})", p.segment));
+        }
+        if ta < -t_tolerance || tb > 1.0 + t_tolerance {
+            return bad(format!("piece {k} of segment {} leaves it (t {ta} -> {tb})", p.segment));
+        }
+        if k > 0 && pieces[k - 1].segment == p.segment {
+            let prev = pieces[k - 1].piece;
+            if prev.b == p.piece.a {
+                return bad(format!(
+                    "pieces {} and {k} of segment {} meet at {:?}: they should be one",
+                    k - 1,
+                    p.segment,
+                    p.piece.a
+                ));
+            }
+            if s.param_of(prev.b) > ta + t_tolerance {
+                return bad(format!("pieces {} and {k} of segment {} overlap or are out of order", k - 1, p.segment));
+            }
+        }
+    }
+    let got = pieces_to_intervals(segments, pieces);
+    for (i, s) in segments.iter().enumerate() {
+        let expected = visible_intervals(window, *s);
+        if !same_intervals(&expected, &got[i], t_tolerance) {
+            return Err(LineFailure::WrongPieces { segment: i, expected, got: got[i].clone() });
+        }
+    }
+    Ok(())
+}
+
+/// Equal within `tol` once gaps no longer than `tol` are closed and intervals no longer than
+/// `tol` dropped.
+fn same_intervals(a: &[(f64, f64)], b: &[(f64, f64)], tol: f64) -> bool {
+    let (a, b) = (coarse(a, tol), coarse(b, tol));
+    a.len() == b.len() && a.iter().zip(&b).all(|(x, y)| (x.0 - y.0).abs() <= tol && (x.1 - y.1).abs() <= tol)
+}
+
+fn coarse(v: &[(f64, f64)], tol: f64) -> Vec<(f64, f64)> {
+    let mut out: Vec<(f64, f64)> = Vec::with_capacity(v.len());
+    for &(a, b) in v {
+        match out.last_mut() {
+            Some(last) if a - last.1 <= tol => last.1 = last.1.max(b),
+            _ => out.push((a, b)),
+        }
+    }
+    out.retain(|&(a, b)| b - a > tol);
+    out
+}
