@@ -2,6 +2,7 @@
 
 pub mod line_oracle;
 pub mod polygon_oracle;
+pub mod shrink;
 pub mod workload;
 
 #[cfg(feature = "peers")]
