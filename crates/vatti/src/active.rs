@@ -1,0 +1,183 @@
+//! The active edge table (the paper's AET): the edges crossing the current scanbeam, ordered by x.
+
+use clip_core::Point;
+use clip_core::predicates::{Orientation, orient};
+
+use crate::bounds::NONE;
+
+/// An edge of a bound while it is active (the paper's edge record, Table 1). Never horizontal.
+#[derive(Clone, Debug)]
+pub(crate) struct Edge {
+    /// Lower end.
+    pub bot: Point,
+    /// Upper end (`top.y > bot.y`).
+    pub top: Point,
+    /// x at the current scanline (the paper's `xbot`).
+    pub curr_x: f64,
+    /// Subject or clip.
+    pub kind: u8,
+    /// Winding change when crossing this edge from left to right: +1 where the ring runs
+    /// downwards, -1 where it runs upwards (counter-clockwise rings wind +1 inside).
+    pub wind_dx: i32,
+    /// Winding numbers (subject, clip) of the region just left of this edge.
+    pub wind_left: [i32; 2],
+    /// Output polygon this edge contributes to, or `NONE` (the paper's `poly`).
+    pub outrec: u32,
+    /// Input vertex at `top`.
+    pub top_vertex: u32,
+    /// True when the bound walks the ring forwards.
+    pub forward: bool,
+    /// False once the edge has ended (reached its top and was replaced or removed).
+    pub alive: bool,
+    /// True while the edge waits to slide along a horizontal at the current scanline.
+    pub moving: bool,
+    /// Index in the active edge table.
+    pub pos: u32,
+}
+
+impl Edge {
+    /// Winding numbers of the region just right of this edge.
+    #[inline]
+    pub(crate) fn wind_right(&self) -> [i32; 2] {
+        let mut w = self.wind_left;
+        w[self.kind as usize] += self.wind_dx;
+        w
+    }
+
+    /// x where the edge crosses height `y`: exact at the ends, and correctly rounded when the
+    /// product fits (always for integer grids), since the division comes last.
+    #[inline]
+    pub(crate) fn x_at(&self, y: f64) -> f64 {
+        if y == self.top.y {
+            self.top.x
+        } else if y == self.bot.y {
+            self.bot.x
+        } else {
+            self.bot.x + ((y - self.bot.y) * (self.top.x - self.bot.x)) / (self.top.y - self.bot.y)
+        }
+    }
+
+    /// True when the edge ends at or below `y`.
+    #[inline]
+    pub(crate) fn ends_by(&self, y: f64) -> bool {
+        self.top.y <= y
+    }
+
+    /// Where `p` lies relative to the edge's line: `CounterClockwise` is left.
+    #[inline]
+    pub(crate) fn side_of(&self, p: Point) -> Orientation {
+        orient(self.bot, self.top, p)
+    }
+}
+
+/// The active edges: an arena (edges are never freed during a sweep) and their x order.
+#[derive(Debug, Default)]
+pub(crate) struct ActiveEdges {
+    pub edges: Vec<Edge>,
+    pub order: Vec<u32>,
+}
+
+impl ActiveEdges {
+    /// A new edge in the arena (not yet in the order).
+    pub(crate) fn create(&mut self, bot: Point, top: Point, kind: u8, forward: bool, top_vertex: u32) -> u32 {
+        let id = self.edges.len() as u32;
+        self.edges.push(Edge {
+            bot,
+            top,
+            curr_x: bot.x,
+            kind,
+            wind_dx: if forward { -1 } else { 1 },
+            wind_left: [0, 0],
+            outrec: NONE,
+            top_vertex,
+            forward,
+            alive: true,
+            moving: false,
+            pos: NONE,
+        });
+        id
+    }
+
+    #[inline]
+    pub(crate) fn get(&self, id: u32) -> &Edge {
+        &self.edges[id as usize]
+    }
+
+    #[inline]
+    pub(crate) fn get_mut(&mut self, id: u32) -> &mut Edge {
+        &mut self.edges[id as usize]
+    }
+
+    #[inline]
+    pub(crate) fn at(&self, pos: usize) -> u32 {
+        self.order[pos]
+    }
+
+    #[inline]
+    pub(crate) fn len(&self) -> usize {
+        self.order.len()
+    }
+
+    #[inline]
+    pub(crate) fn pos(&self, id: u32) -> usize {
+        self.edges[id as usize].pos as usize
+    }
+
+    /// Winding numbers just right of position `pos - 1`: the region a new edge at `pos` has on
+    /// its left.
+    #[inline]
+    pub(crate) fn wind_before(&self, pos: usize) -> [i32; 2] {
+        if pos == 0 { [0, 0] } else { self.get(self.order[pos - 1]).wind_right() }
+    }
+
+    /// Puts edge `id` at `pos`.
+    pub(crate) fn insert(&mut self, pos: usize, id: u32) {
+        self.order.insert(pos, id);
+        self.renumber(pos);
+    }
+
+    /// Replaces the edge at `pos` with `id`.
+    pub(crate) fn replace(&mut self, pos: usize, id: u32) {
+        let old = self.order[pos];
+        self.edges[old as usize].alive = false;
+        self.order[pos] = id;
+        self.edges[id as usize].pos = pos as u32;
+    }
+
+    /// Removes the two edges at `pos` and `pos + 1`.
+    pub(crate) fn remove_pair(&mut self, pos: usize) {
+        for id in self.order.drain(pos..pos + 2) {
+            self.edges[id as usize].alive = false;
+        }
+        self.renumber(pos);
+    }
+
+    /// Swaps the adjacent edges at `pos` and `pos + 1`.
+    #[inline]
+    pub(crate) fn swap(&mut self, pos: usize) {
+        self.order.swap(pos, pos + 1);
+        let (a, b) = (self.order[pos], self.order[pos + 1]);
+        self.edges[a as usize].pos = pos as u32;
+        self.edges[b as usize].pos = pos as u32 + 1;
+    }
+
+    fn renumber(&mut self, from: usize) {
+        for (i, &id) in self.order.iter().enumerate().skip(from) {
+            self.edges[id as usize].pos = i as u32;
+        }
+    }
+
+    /// Where a new edge from `p` (on the current scanline) towards `toward` goes: before the
+    /// first edge that passes right of `p`, or through `p` heading right of the new edge.
+    /// Exact; binary search over an order that is sorted at the scanline.
+    pub(crate) fn insert_position(&self, p: Point, toward: Point) -> usize {
+        self.order.partition_point(|&id| {
+            let e = self.get(id);
+            match e.side_of(p) {
+                Orientation::Clockwise => true,
+                Orientation::CounterClockwise => false,
+                Orientation::Collinear => orient(p, toward, e.top) != Orientation::Clockwise,
+            }
+        })
+    }
+}

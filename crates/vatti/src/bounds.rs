@@ -1,0 +1,98 @@
+//! Bounds and the local minima table (the paper's LMT): the input rings as linked vertices, each
+//! local minimum the start of two bounds that climb to local maxima.
+
+use clip_core::{Point, Polygons};
+
+use crate::simplify::simplify_ring;
+
+/// "No index" for the u32 links of the sweep's arenas.
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// Which operand an edge belongs to (the paper's clip/subject type flag); indexes winding pairs.
+pub(crate) const SUBJECT: u8 = 0;
+/// See [`SUBJECT`].
+pub(crate) const CLIP: u8 = 1;
+
+/// An input vertex, linked to its ring neighbours.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Vertex {
+    pub pt: Point,
+    pub next: u32,
+    pub prev: u32,
+}
+
+/// A local minimum: where two bounds start. With a horizontal bottom edge `vertex -> next`,
+/// the backward bound starts at `vertex` and the forward bound at `next`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LocalMinimum {
+    pub vertex: u32,
+    pub kind: u8,
+    /// True when the minimum is a horizontal edge from `vertex` to its ring successor.
+    pub horizontal: bool,
+}
+
+/// All input vertices and the local minima table sorted by y.
+#[derive(Debug, Default)]
+pub(crate) struct Bounds {
+    pub vertices: Vec<Vertex>,
+    pub minima: Vec<LocalMinimum>,
+}
+
+impl Bounds {
+    /// Links every ring of both operands (repeated and collinear vertices removed, which leaves
+    /// the region unchanged) and lists their local minima by increasing y.
+    pub(crate) fn build(subject: &Polygons, clip: &Polygons) -> Bounds {
+        let mut b = Bounds::default();
+        for (kind, polygons) in [(SUBJECT, subject), (CLIP, clip)] {
+            for ring in &polygons.rings {
+                b.add_ring(&simplify_ring(&ring.points), kind);
+            }
+        }
+        let vertices = &b.vertices;
+        b.minima.sort_by(|p, q| vertices[p.vertex as usize].pt.y.total_cmp(&vertices[q.vertex as usize].pt.y));
+        b
+    }
+
+    fn add_ring(&mut self, points: &[Point], kind: u8) {
+        let n = points.len() as u32;
+        if n < 3 {
+            return;
+        }
+        let base = self.vertices.len() as u32;
+        for (i, &pt) in points.iter().enumerate() {
+            let i = i as u32;
+            self.vertices.push(Vertex { pt, next: base + (i + 1) % n, prev: base + (i + n - 1) % n });
+        }
+        for v in base..base + n {
+            let here = self.pt(v);
+            let before = self.pt(self.vertices[v as usize].prev);
+            let next = self.vertices[v as usize].next;
+            let after = self.pt(next);
+            if before.y > here.y && after.y > here.y {
+                self.minima.push(LocalMinimum { vertex: v, kind, horizontal: false });
+            } else if before.y > here.y && after.y == here.y && self.pt(self.vertices[next as usize].next).y > here.y {
+                // Simplified rings have no two horizontal edges in a row.
+                self.minima.push(LocalMinimum { vertex: v, kind, horizontal: true });
+            }
+        }
+    }
+
+    /// The vertex's point.
+    #[inline]
+    pub(crate) fn pt(&self, v: u32) -> Point {
+        self.vertices[v as usize].pt
+    }
+
+    /// The next vertex along a bound: the ring successor for a forward bound, else the predecessor.
+    #[inline]
+    pub(crate) fn along(&self, v: u32, forward: bool) -> u32 {
+        let vx = &self.vertices[v as usize];
+        if forward { vx.next } else { vx.prev }
+    }
+
+    /// y of a local minimum.
+    #[inline]
+    pub(crate) fn minimum_y(&self, m: &LocalMinimum) -> f64 {
+        self.pt(m.vertex).y
+    }
+}

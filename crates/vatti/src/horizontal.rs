@@ -1,0 +1,61 @@
+//! Horizontal edges (the paper's Extensions): vertex classes ignore them, and an edge reaching
+//! one slides along the scanline to its far end, crossing the edges on the way.
+
+use clip_core::Point;
+use clip_core::predicates::Orientation;
+use clip_core::predicates::orient;
+
+use crate::sweep::{Slide, Sweep};
+
+impl Sweep<'_> {
+    /// Slides `s.edge` along the scanline `y` from `s.from_x` to `s.to_x`, crossing every edge
+    /// met on the way (each crossing at the other edge's x on the scanline). At the far end it
+    /// passes edges through that point that head left of it (moving right) or right of it
+    /// (moving left), decided exactly. Each step moves one place in one direction, so at most
+    /// the table's length steps are taken.
+    pub(crate) fn slide(&mut self, s: Slide, y: f64) {
+        let (lo, hi) = (s.from_x.min(s.to_x), s.from_x.max(s.to_x));
+        let rightwards = s.to_x > s.from_x;
+        let end = Point::new(s.to_x, y);
+        let top = self.ael.get(s.edge).top;
+        for _ in 0..self.ael.len() {
+            let pos = self.ael.pos(s.edge);
+            let neighbour = if rightwards {
+                (pos + 1 < self.ael.len()).then(|| self.ael.at(pos + 1))
+            } else {
+                pos.checked_sub(1).map(|p| self.ael.at(p))
+            };
+            let Some(k) = neighbour else { break };
+            if !self.passes(k, end, top, rightwards) {
+                break;
+            }
+            let x = self.ael.get(k).curr_x.clamp(lo, hi);
+            if rightwards {
+                self.cross(pos, Point::new(x, y));
+            } else {
+                self.cross(pos - 1, Point::new(x, y));
+            }
+        }
+        self.ael.get_mut(s.edge).curr_x = s.to_x;
+    }
+
+    /// True when an edge sliding towards `end` (and heading to `top` from there) must pass `k`.
+    fn passes(&self, k: u32, end: Point, top: Point, rightwards: bool) -> bool {
+        let e = self.ael.get(k);
+        if e.curr_x != end.x {
+            return (e.curr_x < end.x) == rightwards;
+        }
+        if e.ends_by(end.y) || e.moving {
+            return false;
+        }
+        match e.side_of(end) {
+            // `end` right of k: k is left of the end point.
+            Orientation::Clockwise => rightwards,
+            Orientation::CounterClockwise => !rightwards,
+            Orientation::Collinear => {
+                let turn = orient(end, top, e.top);
+                if rightwards { turn == Orientation::CounterClockwise } else { turn == Orientation::Clockwise }
+            }
+        }
+    }
+}

@@ -1,0 +1,98 @@
+//! Edge crossings inside a scanbeam: the paper's sorted edge table (ST) finds them from the
+//! edges' x at the top, the intersection table (IT) holds them sorted by y, and they are
+//! processed so that only adjacent edges are ever swapped.
+
+use clip_core::Point;
+
+use crate::sweep::Sweep;
+
+/// An entry of the intersection table: `left` precedes `right` in the active edge table.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Intersection {
+    pub left: u32,
+    pub right: u32,
+    pub pt: Point,
+}
+
+impl Sweep<'_> {
+    /// Finds and processes every crossing in the scanbeam `[yb, yt]`, emitting trapezoids
+    /// between consecutive crossing heights when asked.
+    pub(crate) fn process_intersections(&mut self, yb: f64, yt: f64) {
+        let mut table = self.intersection_table(yb, yt);
+        let mut y_prev = yb;
+        for i in 0..table.len() {
+            if !self.adjacent(&table[i]) {
+                // Crossings at (nearly) one height may come in any order; take the next one that
+                // is adjacent now. One always is: the table holds exactly the inversions left.
+                match (i + 1..table.len()).find(|&j| self.adjacent(&table[j])) {
+                    Some(j) => table.swap(i, j),
+                    None => break,
+                }
+            }
+            let node = table[i];
+            if self.traps.is_some() && node.pt.y > y_prev {
+                self.emit_slab(y_prev, node.pt.y);
+                y_prev = node.pt.y;
+            }
+            let pos = self.ael.pos(node.left);
+            self.cross(pos, node.pt);
+        }
+        if self.traps.is_some() && yt > y_prev {
+            self.emit_slab(y_prev, yt);
+        }
+    }
+
+    #[inline]
+    fn adjacent(&self, node: &Intersection) -> bool {
+        self.ael.pos(node.left) + 1 == self.ael.pos(node.right)
+    }
+
+    /// Builds the intersection table: the active edges are inserted right to left by their x
+    /// at `yt`; each edge an edge has to jump over is a crossing (the paper's ST pass).
+    fn intersection_table(&mut self, yb: f64, yt: f64) -> Vec<Intersection> {
+        let n = self.ael.len();
+        let mut table = Vec::new();
+        if n < 2 {
+            return table;
+        }
+        let xtop: Vec<f64> = self.ael.order.iter().map(|&id| self.ael.get(id).x_at(yt)).collect();
+        // Sorted edge table: positions in the active edge table, by x at the top.
+        let mut st: Vec<u32> = Vec::with_capacity(n);
+        for i in 0..n {
+            let x = xtop[i];
+            let mut j = st.len();
+            while j > 0 && x < xtop[st[j - 1] as usize] {
+                j -= 1;
+                let (left, right) = (self.ael.at(st[j] as usize), self.ael.at(i));
+                table.push(Intersection { left, right, pt: self.crossing_point(left, right, yb, yt) });
+            }
+            st.insert(j, i as u32);
+        }
+        table.sort_by(|a, b| a.pt.y.total_cmp(&b.pt.y));
+        table
+    }
+
+    /// Where edges `a` and `b` cross, computed once and kept inside the scanbeam: y clamped to
+    /// `[yb, yt]` (x then taken on the steeper edge), x clamped to the edges' span in the beam.
+    fn crossing_point(&self, a: u32, b: u32, yb: f64, yt: f64) -> Point {
+        let (ea, eb) = (self.ael.get(a), self.ael.get(b));
+        let (d1, d2) = (ea.top - ea.bot, eb.top - eb.bot);
+        let den = d1.cross(d2);
+        let num = (eb.bot - ea.bot).cross(d2);
+        // Division last: exact whenever the true point is representable and the products fit.
+        let mut p = Point::new((ea.bot.x * den + num * d1.x) / den, (ea.bot.y * den + num * d1.y) / den);
+        if !p.is_finite() {
+            let s = num / den;
+            p = Point::new(ea.bot.x + s * d1.x, ea.bot.y + s * d1.y);
+        }
+        if !(p.y >= yb && p.y <= yt) {
+            let y = if p.y > yt { yt } else { yb };
+            let steeper = if (d1.x / d1.y).abs() <= (d2.x / d2.y).abs() { ea } else { eb };
+            p = Point::new(steeper.x_at(y), y);
+        }
+        let xs = [ea.x_at(yb), ea.x_at(yt), eb.x_at(yb), eb.x_at(yt)];
+        let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y)
+    }
+}

@@ -1,0 +1,129 @@
+//! Output polygons built from both ends as the sweep goes (the paper's polygon nodes with their
+//! L and R ends): AddLocalMin, AddLeft, AddRight, AddLocalMax and AppendPolygon.
+//!
+//! Each open polygon is a circular doubly linked list of points whose `next` order has the
+//! result on its left (counter-clockwise outers, clockwise holes). Its *left* end (fed by the
+//! edge that has the result on its right) and its *right* end are adjacent in the circle, so
+//! both grow by inserting between them.
+
+use clip_core::Point;
+
+use crate::bounds::NONE;
+
+#[derive(Clone, Copy, Debug)]
+struct OutPt {
+    pt: Point,
+    next: u32,
+    prev: u32,
+}
+
+/// An output polygon (the paper's polygon node).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct OutRec {
+    /// The point at the left end (the paper's L).
+    left: u32,
+    /// The point at the right end (the paper's R).
+    right: u32,
+    /// Edge feeding the left end, `NONE` once closed.
+    pub left_edge: u32,
+    /// Edge feeding the right end, `NONE` once closed.
+    pub right_edge: u32,
+    /// True once the ring is closed and its points final.
+    closed: bool,
+}
+
+/// All output polygons of one sweep.
+#[derive(Debug, Default)]
+pub(crate) struct OutputBuilder {
+    pts: Vec<OutPt>,
+    recs: Vec<OutRec>,
+}
+
+impl OutputBuilder {
+    /// AddLocalMin: a new polygon holding `p`, fed by `left_edge` and `right_edge`.
+    pub(crate) fn add_local_min(&mut self, left_edge: u32, right_edge: u32, p: Point) -> u32 {
+        let pt = self.pts.len() as u32;
+        self.pts.push(OutPt { pt: p, next: pt, prev: pt });
+        let rec = self.recs.len() as u32;
+        self.recs.push(OutRec { left: pt, right: pt, left_edge, right_edge, closed: false });
+        rec
+    }
+
+    #[inline]
+    pub(crate) fn rec(&self, rec: u32) -> &OutRec {
+        &self.recs[rec as usize]
+    }
+
+    #[inline]
+    pub(crate) fn rec_mut(&mut self, rec: u32) -> &mut OutRec {
+        &mut self.recs[rec as usize]
+    }
+
+    /// AddLeft / AddRight: appends `p` at the left or right end (nothing if it repeats the end).
+    pub(crate) fn add(&mut self, rec: u32, at_left: bool, p: Point) {
+        let r = self.recs[rec as usize];
+        let end = if at_left { r.left } else { r.right };
+        if self.pts[end as usize].pt == p {
+            return;
+        }
+        let id = self.pts.len() as u32;
+        self.pts.push(OutPt { pt: p, next: r.left, prev: r.right });
+        self.pts[r.right as usize].next = id;
+        self.pts[r.left as usize].prev = id;
+        let r = &mut self.recs[rec as usize];
+        if at_left {
+            r.left = id;
+        } else {
+            r.right = id;
+        }
+    }
+
+    /// The two ends of one polygon met: it is a closed ring.
+    pub(crate) fn close(&mut self, rec: u32) {
+        let r = &mut self.recs[rec as usize];
+        r.closed = true;
+        r.left_edge = NONE;
+        r.right_edge = NONE;
+    }
+
+    /// AppendPolygon: the right end of `x` met the left end of `y` (a local maximum of two
+    /// different polygons). `y`'s chain is appended after `x`'s; `x` keeps its left edge and takes
+    /// `y`'s right edge, which the caller re-points to `x`. `y` is left empty.
+    pub(crate) fn append(&mut self, x: u32, y: u32) {
+        let (rx, ry) = (self.recs[x as usize], self.recs[y as usize]);
+        self.pts[rx.right as usize].next = ry.left;
+        self.pts[ry.left as usize].prev = rx.right;
+        self.pts[ry.right as usize].next = rx.left;
+        self.pts[rx.left as usize].prev = ry.right;
+        let r = &mut self.recs[x as usize];
+        r.right = ry.right;
+        r.right_edge = ry.right_edge;
+        let e = &mut self.recs[y as usize];
+        e.left_edge = NONE;
+        e.right_edge = NONE;
+        e.left = NONE;
+        e.right = NONE;
+    }
+
+    /// Every closed ring, each in `next` order (the result on its left).
+    pub(crate) fn rings(&self) -> Vec<Vec<Point>> {
+        let mut rings = Vec::new();
+        for r in &self.recs {
+            if !r.closed || r.left == NONE {
+                continue;
+            }
+            let mut ring = Vec::new();
+            let mut p = r.left;
+            // A ring holds at most every point ever made: the bound guards a corrupt list.
+            for _ in 0..self.pts.len() {
+                ring.push(self.pts[p as usize].pt);
+                p = self.pts[p as usize].next;
+                if p == r.left {
+                    break;
+                }
+            }
+            rings.push(ring);
+        }
+        rings
+    }
+}

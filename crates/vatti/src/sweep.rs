@@ -1,0 +1,492 @@
+//! The sweep: scanbeams bottom to top, local minima inserted, edge tops processed, and the
+//! events that change the output (crossings, starts and ends of bounds).
+
+use clip_core::predicates::{Orientation, orient};
+use clip_core::{Point, Trapezoid};
+
+use crate::active::ActiveEdges;
+use crate::bounds::{Bounds, LocalMinimum, NONE};
+use crate::contribution::{Crossing, Rules, classify};
+use crate::output::OutputBuilder;
+use crate::scanbeam::Scanbeams;
+
+/// A pending slide along a horizontal edge at the current scanline.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Slide {
+    /// The edge that slides.
+    pub edge: u32,
+    /// Where it starts and where it stops.
+    pub from_x: f64,
+    pub to_x: f64,
+    /// For a horizontal local maximum, the vertex where the partner bound ends; else `NONE`.
+    pub max_vertex: u32,
+}
+
+/// One run of the clipper over two operands.
+pub(crate) struct Sweep<'a> {
+    pub rules: Rules,
+    pub bounds: &'a Bounds,
+    pub ael: ActiveEdges,
+    pub beams: Scanbeams,
+    pub out: OutputBuilder,
+    /// Trapezoids, when asked for.
+    pub traps: Option<Vec<Trapezoid>>,
+    /// Active edge ending at each vertex, for bounds walking forwards / backwards (to find the
+    /// partner at a local maximum).
+    ending_fwd: Vec<u32>,
+    ending_bwd: Vec<u32>,
+    next_minimum: usize,
+    // Work lists reused between scanlines.
+    maxima: Vec<u32>,
+    settle: Vec<u32>,
+    slides: Vec<Slide>,
+}
+
+impl<'a> Sweep<'a> {
+    pub(crate) fn new(bounds: &'a Bounds, rules: Rules, trapezoids: bool) -> Sweep<'a> {
+        let n = bounds.vertices.len();
+        Sweep {
+            rules,
+            bounds,
+            ael: ActiveEdges::default(),
+            beams: Scanbeams::default(),
+            out: OutputBuilder::default(),
+            traps: trapezoids.then(Vec::new),
+            ending_fwd: vec![NONE; n],
+            ending_bwd: vec![NONE; n],
+            next_minimum: 0,
+            maxima: Vec::new(),
+            settle: Vec::new(),
+            slides: Vec::new(),
+        }
+    }
+
+    /// Runs the whole sweep. Every scanline is a distinct y above the previous one, taken from
+    /// the finitely many vertex heights, so the loop ends.
+    pub(crate) fn run(&mut self) {
+        let Some(first) = self.bounds.minima.first() else { return };
+        let mut y = self.bounds.minimum_y(first);
+        loop {
+            self.top_of_scanbeam(y);
+            self.insert_local_minima(y);
+            let next_lmt = self.bounds.minima.get(self.next_minimum).map(|m| self.bounds.minimum_y(m));
+            let next = match (self.beams.next_above(y), next_lmt) {
+                (Some(a), Some(b)) => a.min(b),
+                (a, b) => match a.or(b) {
+                    Some(v) => v,
+                    None => break,
+                },
+            };
+            self.process_intersections(y, next);
+            y = next;
+        }
+    }
+
+    // ---- edges ----
+
+    /// Makes the active edge for the bound leaving vertex `from` towards `to`.
+    fn new_edge(&mut self, from: u32, to: u32, kind: u8, forward: bool) -> u32 {
+        let (bot, top) = (self.bounds.pt(from), self.bounds.pt(to));
+        let id = self.ael.create(bot, top, kind, forward, to);
+        if forward {
+            self.ending_fwd[to as usize] = id;
+        } else {
+            self.ending_bwd[to as usize] = id;
+        }
+        self.beams.mark(top.y);
+        id
+    }
+
+    /// The other bound's edge ending at vertex `v`, opposite in direction to `id`.
+    fn partner_at(&self, id: u32, v: u32) -> Option<u32> {
+        let e = self.ael.get(id);
+        let p = if e.forward { self.ending_bwd[v as usize] } else { self.ending_fwd[v as usize] };
+        (p != NONE && self.ael.get(p).alive && self.ael.get(p).top_vertex == v).then_some(p)
+    }
+
+    // ---- local minima ----
+
+    fn insert_local_minima(&mut self, y: f64) {
+        while let Some(&m) = self.bounds.minima.get(self.next_minimum) {
+            if self.bounds.minimum_y(&m) != y {
+                break;
+            }
+            self.next_minimum += 1;
+            self.insert_local_minimum(m);
+        }
+    }
+
+    /// AddEdges for one local minimum: both bounds enter the table side by side at its vertex;
+    /// with a horizontal bottom the forward bound then slides to the horizontal's other end.
+    fn insert_local_minimum(&mut self, m: LocalMinimum) {
+        let v = m.vertex;
+        let vx = self.bounds.vertices[v as usize];
+        let p = vx.pt;
+        let backward = self.new_edge(v, vx.prev, m.kind, false);
+        let (fwd_from, fwd_to) = if m.horizontal {
+            let u = vx.next;
+            (u, self.bounds.vertices[u as usize].next)
+        } else {
+            (v, vx.next)
+        };
+        let forward = self.new_edge(fwd_from, fwd_to, m.kind, true);
+        // Which goes left: by direction at `p`; with a horizontal bottom, the forward bound sits on
+        // the side of the horizontal's far end, next to where the backward bound belongs.
+        let (backward_top, forward_top) = (self.ael.get(backward).top, self.ael.get(forward).top);
+        let forward_left = if m.horizontal {
+            self.bounds.pt(fwd_from).x < p.x
+        } else {
+            orient(p, backward_top, forward_top) == Orientation::CounterClockwise
+        };
+        let (left, right) = if forward_left { (forward, backward) } else { (backward, forward) };
+        let pos = self.ael.insert_position(p, if m.horizontal { backward_top } else { self.ael.get(left).top });
+        self.ael.get_mut(forward).curr_x = p.x;
+        let wl = self.ael.wind_before(pos);
+        self.ael.get_mut(left).wind_left = wl;
+        self.ael.insert(pos, left);
+        let wm = self.ael.get(left).wind_right();
+        self.ael.get_mut(right).wind_left = wm;
+        self.ael.insert(pos + 1, right);
+        let (i0, i1) = (self.rules.inside(wl), self.rules.inside(wm));
+        if i0 != i1 {
+            if i1 { self.start_output(left, right, p) } else { self.start_output(right, left, p) }
+        }
+        if m.horizontal {
+            let to = self.bounds.pt(fwd_from);
+            self.slide(Slide { edge: forward, from_x: p.x, to_x: to.x, max_vertex: NONE }, p.y);
+            self.add_point(forward, to);
+        } else {
+            self.settle(right);
+            self.settle(left);
+        }
+    }
+
+    // ---- top of scanbeam ----
+
+    /// Edges reaching scanline `y`: intermediate vertices hand over to successor edges, local
+    /// maxima end pairs of bounds, horizontals make edges slide.
+    fn top_of_scanbeam(&mut self, y: f64) {
+        let (mut maxima, mut settle, mut slides) =
+            (std::mem::take(&mut self.maxima), std::mem::take(&mut self.settle), std::mem::take(&mut self.slides));
+        for pos in 0..self.ael.len() {
+            let id = self.ael.at(pos);
+            let e = self.ael.get_mut(id);
+            if e.top.y != y {
+                e.curr_x = e.x_at(y);
+                continue;
+            }
+            e.curr_x = e.top.x;
+            let (t, forward) = (e.top_vertex, e.forward);
+            let u = self.bounds.along(t, forward);
+            let (tp, up) = (self.bounds.pt(t), self.bounds.pt(u));
+            if up.y > y {
+                settle.push(self.succeed(pos, t, u));
+            } else if up.y < y {
+                maxima.push(id);
+            } else {
+                let w = self.bounds.along(u, forward);
+                if self.bounds.pt(w).y > y {
+                    let s = self.succeed(pos, u, w);
+                    let e = self.ael.get_mut(s);
+                    e.curr_x = tp.x;
+                    e.moving = true;
+                    slides.push(Slide { edge: s, from_x: tp.x, to_x: up.x, max_vertex: NONE });
+                } else if forward {
+                    self.ael.get_mut(id).moving = true;
+                    slides.push(Slide { edge: id, from_x: tp.x, to_x: up.x, max_vertex: u });
+                }
+            }
+        }
+        for &id in &maxima {
+            if !self.ael.get(id).alive {
+                continue;
+            }
+            let t = self.ael.get(id).top_vertex;
+            let tp = self.bounds.pt(t);
+            if let Some(partner) = self.partner_at(id, t) {
+                self.meet(id, partner, tp, tp.x, tp.x, tp.y);
+            }
+        }
+        for &id in &settle {
+            if self.ael.get(id).alive {
+                self.settle(id);
+            }
+        }
+        for &s in &slides {
+            self.ael.get_mut(s.edge).moving = false;
+            if s.max_vertex == NONE {
+                self.slide(s, y);
+                let to = Point::new(s.to_x, y);
+                self.add_point(s.edge, to);
+                self.settle(s.edge);
+            } else if let Some(partner) = self.partner_at(s.edge, s.max_vertex) {
+                let e = self.ael.get(s.edge);
+                let tp = e.top;
+                if e.outrec != NONE {
+                    self.add_point(s.edge, tp);
+                }
+                let mp = self.bounds.pt(s.max_vertex);
+                self.meet(s.edge, partner, mp, s.from_x, s.to_x, y);
+            }
+        }
+        maxima.clear();
+        settle.clear();
+        slides.clear();
+        (self.maxima, self.settle, self.slides) = (maxima, settle, slides);
+    }
+
+    /// Replaces the edge at `pos` with its bound's next edge `from -> to` (an intermediate vertex
+    /// at the old edge's top: its output chain, if any, gets the vertex and moves on).
+    fn succeed(&mut self, pos: usize, from: u32, to: u32) -> u32 {
+        let old = self.ael.at(pos);
+        let (kind, forward, wl, rec, top) = {
+            let e = self.ael.get(old);
+            (e.kind, e.forward, e.wind_left, e.outrec, e.top)
+        };
+        if rec != NONE {
+            self.add_point(old, top);
+        }
+        let s = self.new_edge(from, to, kind, forward);
+        let e = self.ael.get_mut(s);
+        e.wind_left = wl;
+        e.curr_x = top.x;
+        self.ael.replace(pos, s);
+        if rec != NONE {
+            self.hand_over(old, s);
+        }
+        s
+    }
+
+    /// Moves edge `id` across the edges between it and `partner` (crossings at the
+    /// scanline, x clamped to `[from_x, to_x]`), then ends both bounds at `p`: AddLocalMax.
+    fn meet(&mut self, id: u32, partner: u32, p: Point, from_x: f64, to_x: f64, y: f64) {
+        let (lo, hi) = (from_x.min(to_x), from_x.max(to_x));
+        let n = self.ael.len();
+        for _ in 0..n {
+            let (pos, ppos) = (self.ael.pos(id), self.ael.pos(partner));
+            if pos + 1 == ppos || ppos + 1 == pos {
+                break;
+            }
+            if ppos > pos {
+                let k = self.ael.at(pos + 1);
+                let x = self.ael.get(k).curr_x.clamp(lo, hi);
+                self.cross(pos, Point::new(x, y));
+            } else {
+                let k = self.ael.at(pos - 1);
+                let x = self.ael.get(k).curr_x.clamp(lo, hi);
+                self.cross(pos - 1, Point::new(x, y));
+            }
+        }
+        let (pos, ppos) = (self.ael.pos(id), self.ael.pos(partner));
+        if pos + 1 == ppos || ppos + 1 == pos {
+            self.end_pair(pos.min(ppos), p);
+        }
+    }
+
+    /// Orders a new edge starting at its bottom among edges through the same point by
+    /// direction above it: exact, with crossings at that point.
+    fn settle(&mut self, id: u32) {
+        let (p, top) = (self.ael.get(id).bot, self.ael.get(id).top);
+        let n = self.ael.len();
+        for _ in 0..n {
+            let pos = self.ael.pos(id);
+            if pos + 1 >= self.ael.len() {
+                break;
+            }
+            let k = self.ael.get(self.ael.at(pos + 1));
+            if k.moving || k.ends_by(p.y) || k.side_of(p) != Orientation::Collinear {
+                break;
+            }
+            if orient(p, top, k.top) != Orientation::CounterClockwise {
+                break;
+            }
+            self.cross(pos, p);
+        }
+        for _ in 0..n {
+            let pos = self.ael.pos(id);
+            if pos == 0 {
+                break;
+            }
+            let k = self.ael.get(self.ael.at(pos - 1));
+            if k.moving || k.ends_by(p.y) || k.side_of(p) != Orientation::Collinear {
+                break;
+            }
+            if orient(p, top, k.top) != Orientation::Clockwise {
+                break;
+            }
+            self.cross(pos - 1, p);
+        }
+    }
+
+    // ---- events ----
+
+    /// Swaps the adjacent edges at `pos` and `pos + 1`, which cross at `p`, updating their
+    /// winding counts and the output (see [`crate::contribution`]).
+    pub(crate) fn cross(&mut self, pos: usize, p: Point) {
+        let (a, b) = (self.ael.at(pos), self.ael.at(pos + 1));
+        let (ea, eb) = (self.ael.get(a), self.ael.get(b));
+        let wl = ea.wind_left;
+        let mid = ea.wind_right();
+        let mut right = mid;
+        right[eb.kind as usize] += eb.wind_dx;
+        let mut mid_after = wl;
+        mid_after[eb.kind as usize] += eb.wind_dx;
+        let r = self.rules;
+        let class = classify(r.inside(wl), r.inside(mid), r.inside(right), r.inside(mid_after));
+        self.ael.get_mut(b).wind_left = wl;
+        self.ael.get_mut(a).wind_left = mid_after;
+        self.ael.swap(pos);
+        match class {
+            Crossing::Nothing => {}
+            Crossing::AToB => {
+                self.add_point(a, p);
+                self.hand_over(a, b);
+            }
+            Crossing::BToA => {
+                self.add_point(b, p);
+                self.hand_over(b, a);
+            }
+            Crossing::LocalMin { b_is_left } => {
+                if b_is_left {
+                    self.start_output(b, a, p)
+                } else {
+                    self.start_output(a, b, p)
+                }
+            }
+            Crossing::LocalMax => self.end_output(a, b, p),
+            Crossing::Pinch { b_is_left } => {
+                let (ra, rb) = (self.ael.get(a).outrec, self.ael.get(b).outrec);
+                if ra == rb {
+                    self.end_output(a, b, p);
+                    if b_is_left { self.start_output(b, a, p) } else { self.start_output(a, b, p) }
+                } else {
+                    self.add_point(a, p);
+                    self.add_point(b, p);
+                    self.swap_outputs(a, b);
+                }
+            }
+        }
+    }
+
+    /// Removes the adjacent pair at `pos`, whose bounds meet at `p` (a local maximum).
+    fn end_pair(&mut self, pos: usize, p: Point) {
+        let (a, b) = (self.ael.at(pos), self.ael.at(pos + 1));
+        if self.ael.get(a).outrec != NONE || self.ael.get(b).outrec != NONE {
+            self.end_output(a, b, p);
+        }
+        self.ael.remove_pair(pos);
+    }
+
+    // ---- output glue ----
+
+    fn start_output(&mut self, left: u32, right: u32, p: Point) {
+        let rec = self.out.add_local_min(left, right, p);
+        self.ael.get_mut(left).outrec = rec;
+        self.ael.get_mut(right).outrec = rec;
+        self.node_neighbours(left, p);
+        self.node_neighbours(right, p);
+    }
+
+    /// Output vertex `p` also goes into the chains of contributing edges that pass exactly
+    /// through it (coincident edges lie next to `id`), so overlapping output edges share their
+    /// end points and cancel in the clean-up.
+    fn node_neighbours(&mut self, id: u32, p: Point) {
+        for rightwards in [false, true] {
+            let mut pos = self.ael.pos(id);
+            for _ in 0..self.ael.len() {
+                let next = if rightwards { pos + 1 } else { pos.wrapping_sub(1) };
+                if next >= self.ael.len() {
+                    break;
+                }
+                pos = next;
+                let k = self.ael.at(pos);
+                let e = self.ael.get(k);
+                if p.y < e.bot.y || p.y > e.top.y || e.side_of(p) != Orientation::Collinear {
+                    break;
+                }
+                if e.outrec != NONE && p != e.bot && p != e.top {
+                    let left = self.is_left(k);
+                    self.out.add(e.outrec, left, p);
+                }
+            }
+        }
+    }
+
+    /// True when `id` feeds the left end of its output polygon.
+    #[inline]
+    fn is_left(&self, id: u32) -> bool {
+        let rec = self.ael.get(id).outrec;
+        rec != NONE && self.out.rec(rec).left_edge == id
+    }
+
+    /// AddLeft or AddRight, by the edge's side.
+    pub(crate) fn add_point(&mut self, id: u32, p: Point) {
+        let rec = self.ael.get(id).outrec;
+        if rec != NONE {
+            let left = self.is_left(id);
+            self.out.add(rec, left, p);
+            self.node_neighbours(id, p);
+        }
+    }
+
+    /// `to` takes over `from`'s output chain, on the same side.
+    fn hand_over(&mut self, from: u32, to: u32) {
+        let rec = self.ael.get(from).outrec;
+        if rec == NONE {
+            return;
+        }
+        let r = self.out.rec_mut(rec);
+        if r.left_edge == from {
+            r.left_edge = to;
+        } else {
+            r.right_edge = to;
+        }
+        self.ael.get_mut(from).outrec = NONE;
+        self.ael.get_mut(to).outrec = rec;
+    }
+
+    /// Two edges of different output polygons exchange them, each keeping its side.
+    fn swap_outputs(&mut self, a: u32, b: u32) {
+        let (ra, rb) = (self.ael.get(a).outrec, self.ael.get(b).outrec);
+        let (a_left, b_left) = (self.is_left(a), self.is_left(b));
+        if ra != NONE {
+            let r = self.out.rec_mut(ra);
+            if a_left { r.left_edge = b } else { r.right_edge = b }
+        }
+        if rb != NONE {
+            let r = self.out.rec_mut(rb);
+            if b_left { r.left_edge = a } else { r.right_edge = a }
+        }
+        self.ael.get_mut(a).outrec = rb;
+        self.ael.get_mut(b).outrec = ra;
+    }
+
+    /// AddLocalMax: both edges stop contributing at `p`; one polygon closes, or two join.
+    fn end_output(&mut self, a: u32, b: u32, p: Point) {
+        let (ra, rb) = (self.ael.get(a).outrec, self.ael.get(b).outrec);
+        if ra == NONE || rb == NONE {
+            // Only reachable if the contribution bookkeeping were inconsistent: keep the point.
+            self.add_point(a, p);
+            self.add_point(b, p);
+            self.ael.get_mut(a).outrec = NONE;
+            self.ael.get_mut(b).outrec = NONE;
+            return;
+        }
+        if ra == rb {
+            self.add_point(a, p);
+            self.out.close(ra);
+        } else {
+            self.add_point(a, p);
+            self.add_point(b, p);
+            // The polygon whose right end is here comes first.
+            let (x, y) = if self.is_left(a) { (rb, ra) } else { (ra, rb) };
+            self.out.append(x, y);
+            let moved = self.out.rec(x).right_edge;
+            if moved != NONE {
+                self.ael.get_mut(moved).outrec = x;
+            }
+        }
+        self.ael.get_mut(a).outrec = NONE;
+        self.ael.get_mut(b).outrec = NONE;
+    }
+}
