@@ -9,7 +9,7 @@ mod sampling;
 mod validity;
 
 pub use region_area::{region_area, region_area_with_witness};
-pub use validity::{bridge_count, check_valid_output};
+pub use validity::{bridge_count, check_valid_output, check_valid_output_within};
 
 use clip_core::{BoolOp, FillRule, Point, Polygons, Rect};
 use core::fmt;
@@ -112,7 +112,8 @@ impl fmt::Display for PolygonFailure {
 impl std::error::Error for PolygonFailure {}
 
 /// The full oracle for one output of `subject op clip` under `fill`: validity (if
-/// conventional), every sample point (a 12 x 12 grid and 112 seeded random points over the
+/// conventional; crossings within the tolerance times the extent of an end point count as
+/// touching, see [`check_valid_output_within`]), every sample point (a 12 x 12 grid and 112 seeded random points over the
 /// bounding box of inputs and output) farther than a margin from every edge classified exactly,
 /// and the area of the symmetric difference within the tolerance.
 pub fn check_polygon_op(
@@ -123,14 +124,15 @@ pub fn check_polygon_op(
     output: &Polygons,
     rules: &OutputRules,
 ) -> Result<(), PolygonFailure> {
-    if rules.conventional {
-        check_valid_output(output)?;
-    } else if let Some(p) = output.points().find(|p| !p.is_finite()) {
+    if let Some(p) = output.points().find(|p| !p.is_finite()) {
         return Err(PolygonFailure::Invalid(format!("non-finite output vertex ({}, {})", p.x, p.y)));
     }
     let b = subject.bounds().union(clip.bounds()).union(output.bounds());
     if b.is_empty() {
         return Ok(());
+    }
+    if rules.conventional {
+        check_valid_output_within(output, b.extent() * rules.relative_tolerance)?;
     }
     check_sample_points(subject, clip, op, fill, output, rules, &b)?;
     let tol = tolerance(subject, clip, rules.relative_tolerance);

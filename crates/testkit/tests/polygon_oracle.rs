@@ -283,3 +283,18 @@ proptest! {
         prop_assert!((area(&s, FillRule::EvenOdd) - shoelace).abs() < 1e-9 * shoelace);
     }
 }
+
+#[test]
+fn a_vertex_rounded_across_an_edge_it_touches_is_tolerated_within_the_snap() {
+    // A triangle whose apex should touch the square's top edge at (5, 10) but was rounded
+    // 1e-12 below it: a crossing by rounding, not by topology.
+    let square = Rect::new(0.0, 0.0, 10.0, 10.0).to_ring();
+    let apex = ring(&[(2.0, 20.0), (5.0, 10.0 - 1e-12), (8.0, 20.0)]);
+    let out = Polygons::new(vec![square, apex]);
+    assert!(check_valid_output(&out).is_err());
+    check_valid_output_within(&out, 1e-9).unwrap();
+    // A real crossing stays one.
+    let deep =
+        Polygons::new(vec![Rect::new(0.0, 0.0, 10.0, 10.0).to_ring(), ring(&[(2.0, 20.0), (5.0, 9.0), (8.0, 20.0)])]);
+    assert!(check_valid_output_within(&deep, 1e-9).is_err());
+}

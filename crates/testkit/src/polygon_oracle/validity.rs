@@ -57,13 +57,22 @@ fn for_each_close_pair(
 /// no two rings (or two passes of one ring) crossing at a shared point; outer rings
 /// counter-clockwise and holes clockwise by nesting depth (the number of rings around them).
 ///
-/// Rings may touch at points without crossing, and different rings may share an edge.
+/// Rings may touch at points without crossing, and different rings may share an edge. Exact:
+/// see [`check_valid_output_within`] for output whose vertices were rounded.
 pub fn check_valid_output(output: &Polygons) -> Result<(), PolygonFailure> {
+    check_valid_output_within(output, 0.0)
+}
+
+/// [`check_valid_output`], except that two edges crossing within `snap` of an end point of
+/// either count as touching there: a vertex rounded (or snapped to a peer's integer grid) onto
+/// the wrong side of an edge it should touch. [`super::check_polygon_op`] uses the case's
+/// relative tolerance times its extent.
+pub fn check_valid_output_within(output: &Polygons, snap: f64) -> Result<(), PolygonFailure> {
     for (r, ring) in output.rings.iter().enumerate() {
         check_ring_form(r, ring)?;
     }
     let edges = ring_edges(output);
-    for_each_close_pair(&edges, |e, f| check_pair(output, e, f))?;
+    for_each_close_pair(&edges, |e, f| check_pair(output, e, f, snap))?;
     check_orientation(output)
 }
 
@@ -112,13 +121,14 @@ fn adjacent(output: &Polygons, e: &RingEdge, f: &RingEdge) -> bool {
     j == i + 1 || (i == 0 && j == n - 1)
 }
 
-fn check_pair(output: &Polygons, e: &RingEdge, f: &RingEdge) -> Result<(), PolygonFailure> {
+fn check_pair(output: &Polygons, e: &RingEdge, f: &RingEdge, snap: f64) -> Result<(), PolygonFailure> {
     if adjacent(output, e, f) {
         return Ok(());
     }
     let at = |p: Point| format!("({}, {})", p.x, p.y);
     match segment_intersection(e.segment, f.segment) {
         SegmentIntersection::None => Ok(()),
+        SegmentIntersection::Crossing(p) if near_an_end(p, e.segment, f.segment, snap) => Ok(()),
         SegmentIntersection::Crossing(p) => {
             invalid(format!("ring {} edge {} crosses ring {} edge {} near {}", e.ring, e.index, f.ring, f.index, at(p)))
         }
@@ -146,6 +156,10 @@ fn check_pair(output: &Polygons, e: &RingEdge, f: &RingEdge) -> Result<(), Polyg
             }
         }
     }
+}
+
+fn near_an_end(p: Point, e: Segment, f: Segment, snap: f64) -> bool {
+    snap > 0.0 && [e.a, e.b, f.a, f.b].iter().any(|&q| p.distance(q) <= snap)
 }
 
 /// The ring's way through `p` on edge `e`: the points it comes from and goes to.
