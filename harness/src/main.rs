@@ -1,2 +1,47 @@
-//! clipbench: the harness CLI.
-fn main() {}
+//! clipbench: verify clipping algorithms against exact oracles and peer libraries, and run one
+//! clipping operation on files by hand. One module per command; the clippers are in `registry`.
+
+mod cli_error;
+mod clip;
+mod read;
+mod registry;
+mod verify;
+mod write;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
+/// Clipper2), and one-off clipping of WKT/GeoJSON files.
+#[derive(Debug, Parser)]
+#[command(name = "clipbench", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Run every registered clipper on the seeded workloads against the exact oracles and each
+    /// other; print a summary table and write shrunk failure cases.
+    Verify(verify::VerifyArgs),
+    /// One boolean operation (or line clipping) on files with a registered clipper.
+    Clip(clip::ClipArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let registry = registry::registry();
+    let result = match &cli.command {
+        Command::Verify(args) => verify::run(args, registry),
+        Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("clipbench: {e}");
+            ExitCode::from(e.code)
+        }
+    }
+}

@@ -1,0 +1,94 @@
+//! `clipbench bench`: every registered polygon clipper against geo and Clipper2 on the seeded
+//! workloads, all four operations, timed in interleaved rounds; ratios to Clipper2 come from the
+//! same run. Rectangle windows add the rectangle-only clippers; large cases also get peak memory.
+
+mod plan;
+mod rounds;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use serde_json::json;
+
+use crate::cli_error::CliError;
+use crate::measure::out_dir::ready_out_dir;
+use crate::measure::provenance::Provenance;
+use crate::measure::raw::write_csv;
+use crate::registry::Registry;
+use crate::report;
+
+pub use rounds::MemoryRecord;
+
+/// The raw timings.
+pub const CSV: &str = "bench.csv";
+/// Peak memory of the large cases.
+pub const MEMORY_CSV: &str = "bench-memory.csv";
+/// The sidecar of [`CSV`].
+pub const META: &str = "bench.meta.json";
+/// The baseline every ratio is taken against.
+pub const BASELINE: &str = "clipper2";
+
+/// Arguments of `clipbench bench`.
+#[derive(Debug, clap::Args)]
+pub struct BenchArgs {
+    /// Fewer sizes (large cases up to 10^5 vertices), rounds and a shorter cap: a few minutes.
+    #[arg(long)]
+    pub quick: bool,
+    /// Folder for the CSV, markdown, SVG and REPORT.md files.
+    #[arg(long, default_value = "results")]
+    pub out: PathBuf,
+    /// Seed of the generated cases.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Time cap per point in seconds: once one call takes longer, larger sizes of that workload
+    /// are skipped for that clipper (default 2, quick 0.5).
+    #[arg(long, value_name = "SECONDS")]
+    pub cap: Option<f64>,
+    /// Timed rounds per point (default 7, quick 3).
+    #[arg(long, value_name = "N")]
+    pub rounds: Option<usize>,
+}
+
+/// Runs the command: measures, writes the raw files, then the tables, plots and REPORT.md.
+pub fn run(args: &BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> {
+    let cap = args.cap.unwrap_or(if args.quick { 0.5 } else { 2.0 });
+    if !(cap.is_finite() && cap > 0.0) {
+        return Err(CliError::usage("--cap must be a positive number of seconds"));
+    }
+    let rounds = args.rounds.unwrap_or(if args.quick { 3 } else { 7 });
+    if rounds == 0 {
+        return Err(CliError::usage("--rounds must be at least 1"));
+    }
+    if registry.find_polygon(BASELINE).is_none() {
+        return Err(CliError::failed(format!("the baseline clipper '{BASELINE}' is not registered")));
+    }
+    let out = ready_out_dir(&args.out)?;
+    let groups = plan::groups(args.quick);
+    let settings = rounds::Settings { seed: args.seed, rounds, cap_seconds: cap, quick: args.quick };
+    let measured = rounds::run(&groups, registry, &settings)?;
+
+    write_csv(&out.join(CSV), &measured.rows)?;
+    write_csv(&out.join(MEMORY_CSV), &measured.memory)?;
+    let parameters = json!({
+        "quick": args.quick,
+        "rounds": rounds,
+        "cap_seconds": cap,
+        "fill_rule": "even-odd",
+        "groups": groups.iter().map(plan::Group::describe).collect::<Vec<_>>(),
+        "clippers": registry.polygon.iter().map(|e| e.clipper.name()).collect::<Vec<_>>(),
+        "baseline": BASELINE,
+    });
+    let mut provenance = Provenance::now(if args.quick { "bench --quick" } else { "bench" }, args.seed, parameters);
+    provenance.notes.push(
+        "Clipper2's rectangle clipper (RectClip64) is not exposed by the clipper2 0.6 crate (only by clipper2c-sys's \
+         unsafe FFI, and this workspace forbids unsafe code), so the rectangle-window groups time Clipper2's general \
+         intersection."
+            .to_owned(),
+    );
+    provenance.notes.extend(measured.notes);
+    provenance.write(&out.join(META))?;
+    report::bench_tables::write(&out)?;
+    report::document::write(&out)?;
+    eprintln!("clipbench: wrote {}", out.join(report::document::REPORT_FILE).display());
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,99 @@
+//! What `bench` measures: groups of cases (a workload, a window kind, case indices, sizes, ops).
+
+use clip_core::{BoolOp, WindowKind};
+
+/// One group of the benchmark: a plot and a table each.
+#[derive(Clone, Debug)]
+pub struct Group {
+    /// Name in the result files (`star`, `large-smooth`, `star-rect`, ...).
+    pub label: &'static str,
+    /// The clip-testkit workload the cases come from.
+    pub workload: &'static str,
+    /// The clip operand: the workload's own (`Any`) or a rectangle over the subject.
+    pub window: WindowKind,
+    /// Case indices; times are averaged over them.
+    pub indices: Vec<usize>,
+    /// Subject edge counts, ascending.
+    pub sizes: Vec<usize>,
+    /// Operations timed.
+    pub ops: Vec<BoolOp>,
+    /// Whether peak memory is measured too.
+    pub memory: bool,
+}
+
+impl Group {
+    /// The group in words, for the sidecar.
+    pub fn describe(&self) -> String {
+        format!(
+            "{}: workload {}, window {:?}, cases {:?}, sizes {:?}, ops {}",
+            self.label,
+            self.workload,
+            self.window,
+            self.indices,
+            self.sizes,
+            self.ops.iter().map(|o| o.name()).collect::<Vec<_>>().join("/")
+        )
+    }
+}
+
+/// The groups: `star`, `scribble`, `grid`, `holes` at 4-200 edges with three cases each;
+/// `large` smooth blobs (even indices) and checkerboards (odd indices) up to 10^6 vertices (10^5
+/// quick); rectangle windows over `star` and `large` smooth subjects, intersection only.
+pub fn groups(quick: bool) -> Vec<Group> {
+    let small: Vec<usize> = if quick { vec![4, 20, 100, 200] } else { vec![4, 10, 20, 40, 100, 200] };
+    let large: Vec<usize> =
+        if quick { vec![1_000, 10_000, 100_000] } else { vec![1_000, 10_000, 100_000, 1_000_000] };
+    let cases: Vec<usize> = if quick { vec![0, 1] } else { vec![0, 1, 2] };
+    let all = BoolOp::ALL.to_vec();
+    let any = |label, workload| Group {
+        label,
+        workload,
+        window: WindowKind::Any,
+        indices: cases.clone(),
+        sizes: small.clone(),
+        ops: all.clone(),
+        memory: false,
+    };
+    vec![
+        any("star", "star"),
+        any("scribble", "scribble"),
+        any("grid", "grid"),
+        any("holes", "holes"),
+        Group {
+            label: "large-smooth",
+            workload: "large",
+            window: WindowKind::Any,
+            indices: vec![0],
+            sizes: large.clone(),
+            ops: all.clone(),
+            memory: true,
+        },
+        Group {
+            label: "large-checkerboard",
+            workload: "large",
+            window: WindowKind::Any,
+            indices: vec![1],
+            sizes: large.clone(),
+            ops: all,
+            memory: true,
+        },
+        Group {
+            label: "star-rect",
+            workload: "star",
+            window: WindowKind::Rectangle,
+            indices: cases,
+            sizes: small,
+            ops: vec![BoolOp::Intersection],
+            memory: false,
+        },
+        Group {
+            label: "large-rect",
+            workload: "large",
+            window: WindowKind::Rectangle,
+            indices: vec![0],
+            sizes: large,
+            ops: vec![BoolOp::Intersection],
+            memory: true,
+        },
+    ]
+}

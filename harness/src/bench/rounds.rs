@@ -1,0 +1,229 @@
+//! The bench's measuring loop: per group, size and operation, every applicable clipper on every
+//! case in interleaved rounds, with a time cap per point and peak memory for large cases.
+
+use std::collections::BTreeMap;
+use std::hint::black_box;
+use std::time::Duration;
+
+use clip_core::{BoolOp, FillRule, PolygonClipper};
+use clip_testkit::workload::{PolygonCase, polygon_case_sized};
+use serde::{Deserialize, Serialize};
+
+use super::plan::Group;
+use crate::cli_error::CliError;
+use crate::measure::peak_memory::PeakMemory;
+use crate::measure::progress::bar;
+use crate::measure::raw::Measurement;
+use crate::measure::timing::{iterations_for, per_call_ns, timed};
+use crate::registry::Registry;
+
+/// Every case is read under this rule (the papers' parity rule, and every clipper supports it).
+const FILL: FillRule = FillRule::EvenOdd;
+
+/// How much to measure.
+#[derive(Clone, Copy, Debug)]
+pub struct Settings {
+    /// Seed of the cases.
+    pub seed: u64,
+    /// Timed rounds per point.
+    pub rounds: usize,
+    /// A clipper whose single call exceeds this skips the group's larger sizes.
+    pub cap_seconds: f64,
+    /// Shorter measurements.
+    pub quick: bool,
+}
+
+/// One row of `bench-memory.csv`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MemoryRecord {
+    /// Group label.
+    pub workload: String,
+    /// Case index.
+    pub case: String,
+    /// The clipper.
+    pub clipper: String,
+    /// Subject edges.
+    pub size: usize,
+    /// The operation.
+    pub op: String,
+    /// Resident memory before the call, KiB.
+    pub rss_before_kib: u64,
+    /// Peak resident memory above that during the call, KiB.
+    pub peak_extra_kib: u64,
+}
+
+/// What a bench run measured.
+pub struct Measured {
+    /// Timings.
+    pub rows: Vec<Measurement>,
+    /// Peak memory of the large groups.
+    pub memory: Vec<MemoryRecord>,
+    /// Skipped points and why.
+    pub notes: Vec<String>,
+}
+
+/// Why a clipper stopped early in a group.
+struct Stopped {
+    size: usize,
+    reason: String,
+}
+
+/// Runs every group.
+pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result<Measured, CliError> {
+    let points: usize = groups.iter().map(|g| g.sizes.len() * g.ops.len()).sum();
+    let progress = bar(points, "bench");
+    let mut measured = Measured { rows: Vec::new(), memory: Vec::new(), notes: Vec::new() };
+    let mut memory_available = true;
+    for group in groups {
+        let mut stopped: BTreeMap<&'static str, Stopped> = BTreeMap::new();
+        // Last measured single-call time and size per clipper, to predict the next size.
+        let mut last: BTreeMap<&'static str, (usize, Duration)> = BTreeMap::new();
+        for &size in &group.sizes {
+            let cases: Vec<PolygonCase> = group
+                .indices
+                .iter()
+                .map(|&i| polygon_case_sized(group.workload, settings.seed, i, size, group.window))
+                .collect::<Result<_, _>>()
+                .map_err(|e| CliError::failed(e.to_string()))?;
+            for &op in &group.ops {
+                progress.set_message(format!("{} {size} {}", group.label, op.name()));
+                let clippers: Vec<&dyn PolygonClipper> = registry
+                    .polygon
+                    .iter()
+                    .map(|e| e.clipper.as_ref())
+                    .filter(|c| {
+                        let caps = c.capabilities();
+                        caps.supports(op, FILL) && cases.iter().all(|k| caps.window.accepts(&k.clip))
+                    })
+                    .collect();
+                let mut timed_here = Vec::new();
+                for c in clippers {
+                    if stopped.contains_key(c.name()) {
+                        continue;
+                    }
+                    if let Some(&(prev_size, prev)) = last.get(c.name()) {
+                        let predicted = prev.as_secs_f64() * size as f64 / prev_size as f64;
+                        if prev_size < size && predicted > 4.0 * settings.cap_seconds {
+                            let reason = format!(
+                                "predicted {predicted:.1} s per call from {prev:.2?} at {prev_size} edges, over 4x the {} s cap",
+                                settings.cap_seconds
+                            );
+                            stopped.insert(c.name(), Stopped { size, reason });
+                            continue;
+                        }
+                    }
+                    match calibrate(c, &cases, op) {
+                        Ok(single) => {
+                            last.insert(c.name(), (size, single));
+                            let over = single.as_secs_f64() > settings.cap_seconds;
+                            timed_here.push((c, single, over));
+                            if over {
+                                let reason =
+                                    format!("one call took {single:.2?} at {size} edges, over the {} s cap", settings.cap_seconds);
+                                stopped.insert(c.name(), Stopped { size: size + 1, reason });
+                            }
+                        }
+                        Err(e) => {
+                            stopped.insert(c.name(), Stopped { size, reason: format!("failed: {e}") });
+                        }
+                    }
+                }
+                measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
+                if group.memory && op == BoolOp::Intersection {
+                    for (c, _, _) in &timed_here {
+                        for (index, case) in group.indices.iter().zip(&cases) {
+                            match peak_memory(*c, case, op) {
+                                Some((rss_before_kib, peak_extra_kib)) => measured.memory.push(MemoryRecord {
+                                    workload: group.label.to_owned(),
+                                    case: index.to_string(),
+                                    clipper: c.name().to_owned(),
+                                    size,
+                                    op: op.name().to_owned(),
+                                    rss_before_kib,
+                                    peak_extra_kib,
+                                }),
+                                None => memory_available = false,
+                            }
+                        }
+                    }
+                }
+                progress.inc(1);
+            }
+        }
+        for (name, s) in stopped {
+            let from = if group.sizes.iter().any(|&z| z >= s.size) {
+                format!("sizes from {} on were skipped", group.sizes.iter().find(|&&z| z >= s.size).unwrap_or(&s.size))
+            } else {
+                "no larger size was planned".to_owned()
+            };
+            measured.notes.push(format!("{}: {name}: {}; {from}.", group.label, s.reason));
+        }
+    }
+    progress.finish_and_clear();
+    if !memory_available {
+        measured.notes.push(
+            "Peak memory unavailable: /proc/self/clear_refs could not be written (not Linux, or /proc is read-only)."
+                .to_owned(),
+        );
+    }
+    Ok(measured)
+}
+
+/// One untimed warm-up call per case, then the slowest case's time for one call.
+fn calibrate(c: &dyn PolygonClipper, cases: &[PolygonCase], op: BoolOp) -> Result<Duration, String> {
+    let mut slowest = Duration::ZERO;
+    for case in cases {
+        let (result, took) = timed(|| c.clip(&case.subject, &case.clip, op, FILL));
+        result.map_err(|e| format!("{} on {}: {e}", c.name(), case.description))?;
+        slowest = slowest.max(took);
+    }
+    Ok(slowest)
+}
+
+/// Interleaved rounds over cases and clippers; a clipper over the cap is timed once.
+fn measure_point(
+    group: &Group,
+    size: usize,
+    op: BoolOp,
+    cases: &[PolygonCase],
+    clippers: &[(&dyn PolygonClipper, Duration, bool)],
+    settings: &Settings,
+    rows: &mut Vec<Measurement>,
+) {
+    let target = if settings.quick { Duration::from_millis(2) } else { Duration::from_millis(5) };
+    for round in 0..settings.rounds {
+        for (k, (index, case)) in group.indices.iter().zip(cases).enumerate() {
+            let n = clippers.len();
+            for j in 0..n {
+                let (c, single, over) = clippers[(j + round + k) % n.max(1)];
+                if over && round > 0 {
+                    continue;
+                }
+                let iterations = iterations_for(single, target);
+                let time_ns = per_call_ns(iterations, || c.clip(black_box(&case.subject), &case.clip, op, FILL));
+                rows.push(Measurement {
+                    workload: group.label.to_owned(),
+                    case: index.to_string(),
+                    clipper: c.name().to_owned(),
+                    phase: "clip".to_owned(),
+                    size,
+                    op: op.name().to_owned(),
+                    fill_rule: FILL.name().to_owned(),
+                    repetition: round,
+                    iterations,
+                    time_ns,
+                });
+            }
+        }
+    }
+}
+
+/// Resident memory before one call and its peak above that, in KiB; `None` where /proc does not
+/// allow it.
+fn peak_memory(c: &dyn PolygonClipper, case: &PolygonCase, op: BoolOp) -> Option<(u64, u64)> {
+    let probe = PeakMemory::start()?;
+    let result = c.clip(&case.subject, &case.clip, op, FILL);
+    let extra = probe.extra_kib()?;
+    drop(black_box(result));
+    Some((probe.rss_before_kib(), extra))
+}

@@ -1,0 +1,195 @@
+//! A line chart as an SVG file: measured series as solid lines with dots, the papers' series as
+//! dashed lines with hollow triangles; text is plain SVG text, so no font library is needed.
+
+use std::error::Error;
+use std::ops::Range;
+use std::path::Path;
+
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::prelude::*;
+
+use crate::cli_error::CliError;
+
+/// One series of points.
+#[derive(Clone, Debug)]
+pub struct Series {
+    /// Legend text.
+    pub label: String,
+    /// Line and marker colour.
+    pub colour: RGBColor,
+    /// `(x, y)` points, in x order.
+    pub points: Vec<(f64, f64)>,
+    /// A paper's own numbers (dashed, hollow triangles) rather than ours (solid, dots).
+    pub paper: bool,
+}
+
+/// A chart: title, axis labels with units, axis scales and series.
+#[derive(Clone, Debug)]
+pub struct Chart {
+    /// Caption above the plot.
+    pub title: String,
+    /// X axis description, with unit.
+    pub x_label: String,
+    /// Y axis description, with unit.
+    pub y_label: String,
+    /// Logarithmic x axis.
+    pub log_x: bool,
+    /// Logarithmic y axis.
+    pub log_y: bool,
+    /// The series, drawn in order.
+    pub series: Vec<Series>,
+}
+
+const SIZE: (u32, u32) = (960, 620);
+
+impl Chart {
+    /// Draws the chart into an SVG file at `path`.
+    pub fn write_svg(&self, path: &Path) -> Result<(), CliError> {
+        let points: Vec<(f64, f64)> = self.series.iter().flat_map(|s| s.points.iter().copied()).collect();
+        let points: Vec<(f64, f64)> = points.into_iter().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
+        let xr = axis_range(points.iter().map(|p| p.0), self.log_x, false);
+        let yr = axis_range(points.iter().map(|p| p.1), self.log_y, true);
+        let drawn = match (self.log_x, self.log_y) {
+            (false, false) => self.draw(path, xr, yr),
+            (true, false) => self.draw(path, xr.log_scale(), yr),
+            (false, true) => self.draw(path, xr, yr.log_scale()),
+            (true, true) => self.draw(path, xr.log_scale(), yr.log_scale()),
+        };
+        drawn.map_err(|e| CliError::failed(format!("{}: cannot draw the plot ({e})", path.display())))
+    }
+
+    fn draw<X, Y>(&self, path: &Path, x: X, y: Y) -> Result<(), Box<dyn Error>>
+    where
+        X: AsRangedCoord<Value = f64>,
+        Y: AsRangedCoord<Value = f64>,
+        X::CoordDescType: ValueFormatter<f64>,
+        Y::CoordDescType: ValueFormatter<f64>,
+    {
+        let root = SVGBackend::new(path, SIZE).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut ctx = ChartBuilder::on(&root)
+            .caption(&self.title, ("sans-serif", 22))
+            .margin(20)
+            .x_label_area_size(55)
+            .y_label_area_size(80)
+            .build_cartesian_2d(x, y)?;
+        ctx.configure_mesh()
+            .x_labels(10)
+            .y_labels(10)
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
+            .x_desc(self.x_label.as_str())
+            .y_desc(self.y_label.as_str())
+            .axis_desc_style(("sans-serif", 17))
+            .label_style(("sans-serif", 14))
+            .light_line_style(WHITE.mix(0.0))
+            .bold_line_style(BLACK.mix(0.12))
+            .draw()?;
+        for s in &self.series {
+            let colour = s.colour;
+            let line = colour.stroke_width(2);
+            if s.paper {
+                ctx.draw_series(DashedLineSeries::new(s.points.clone(), 8, 5, line))?;
+                ctx.draw_series(s.points.iter().map(|&p| TriangleMarker::new(p, 7, line)))?
+                    .label(s.label.as_str())
+                    .legend(move |(px, py)| TriangleMarker::new((px + 10, py), 6, colour.stroke_width(2)));
+            } else {
+                ctx.draw_series(LineSeries::new(s.points.clone(), line))?
+                    .label(s.label.as_str())
+                    .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], colour.stroke_width(3)));
+                ctx.draw_series(s.points.iter().map(|&p| Circle::new(p, 4, colour.filled())))?;
+            }
+        }
+        ctx.configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK.mix(0.4))
+            .label_font(("sans-serif", 14))
+            .draw()?;
+        root.present()?;
+        Ok(())
+    }
+}
+
+/// A tick label: integers without decimals (thousands as `k`, millions as `M`), small values with
+/// up to three significant digits.
+fn tick(v: &f64) -> String {
+    let v = *v;
+    let a = v.abs();
+    if a >= 1e6 && (v / 1e6).fract() == 0.0 {
+        format!("{}M", v / 1e6)
+    } else if a >= 1e4 && (v / 1e3).fract() == 0.0 {
+        format!("{}k", v / 1e3)
+    } else if a >= 10.0 || v.fract() == 0.0 {
+        format!("{v:.0}")
+    } else {
+        let s = format!("{v:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_owned()
+    }
+}
+
+/// The axis range covering `values` with a margin: multiplicative on a log axis, additive on a
+/// linear one (and reaching down to 0 for a linear y axis of positive values). A y axis gets
+/// extra room on top for the legend.
+fn axis_range(values: impl Iterator<Item = f64>, log: bool, y: bool) -> Range<f64> {
+    let (lo, hi) = values
+        .filter(|v| !log || *v > 0.0)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    if !lo.is_finite() {
+        return if log { 1.0..10.0 } else { 0.0..1.0 };
+    }
+    if log {
+        let top = if y { hi * (hi / lo).max(4.0).powf(0.6) } else { hi * 1.4 };
+        return lo / 1.4..top;
+    }
+    let (lo, hi) = if y { (lo.min(0.0), hi.max(0.0)) } else { (lo, hi) };
+    let pad = ((hi - lo) * 0.06).max(1e-9);
+    let top = if y { hi + (hi - lo) * 0.6 } else { hi + pad };
+    (if y && lo == 0.0 { 0.0 } else { lo - pad })..top
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn writes_a_titled_svg_with_legend_text() {
+        let dir = std::env::temp_dir().join(format!("clipbench-chart-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("chart.svg");
+        let chart = Chart {
+            title: "Test title".into(),
+            x_label: "edges".into(),
+            y_label: "time (µs)".into(),
+            log_x: true,
+            log_y: true,
+            series: vec![
+                Series { label: "ours".into(), colour: RGBColor(1, 2, 3), points: vec![(4.0, 1.0), (200.0, 50.0)], paper: false },
+                Series { label: "paper".into(), colour: RGBColor(3, 2, 1), points: vec![(4.0, 2.0), (200.0, 40.0)], paper: true },
+            ],
+        };
+        chart.write_svg(&path).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        for text in ["Test title", "edges", "time (µs)", "ours", "paper"] {
+            assert!(svg.contains(text), "{text} missing");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn ticks_are_short() {
+        assert_eq!(tick(&10.0), "10");
+        assert_eq!(tick(&100_000.0), "100k");
+        assert_eq!(tick(&2_000_000.0), "2M");
+        assert_eq!(tick(&0.25), "0.25");
+        assert_eq!(tick(&2.5), "2.5");
+    }
+
+    #[test]
+    fn ranges_cover_the_values() {
+        let r = axis_range([2.0, 8.0].into_iter(), false, true);
+        assert!(r.start == 0.0 && r.end > 8.0);
+        let r = axis_range([10.0, 1000.0].into_iter(), true, false);
+        assert!(r.start < 10.0 && r.end > 1000.0);
+    }
+}

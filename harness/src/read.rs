@@ -1,0 +1,135 @@
+//! Reads WKT and GeoJSON files into polygon sets (every ring kept, orientation kept) and segments.
+
+use std::path::Path;
+use std::str::FromStr;
+
+use clip_core::{Operand, Polygons, Ring, Segment, validate_polygons, validate_segments};
+use geo::Geometry;
+
+use crate::cli_error::InputError;
+
+/// What a file holds: its rings (from polygons) and its segments (from line strings).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Shapes {
+    /// Every ring of every polygon, in file order, each with the orientation it has in the file.
+    pub rings: Vec<Ring>,
+    /// Every edge of every line string (a `LINESTRING` of n points gives n - 1 segments).
+    pub segments: Vec<Segment>,
+}
+
+impl Shapes {
+    /// The rings as one polygon operand.
+    pub fn polygons(&self) -> Polygons {
+        Polygons::new(self.rings.clone())
+    }
+}
+
+/// Reads a file: GeoJSON when its name ends in `.geojson` or `.json`, WKT otherwise.
+pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
+    let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
+    let geometries = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
+        .map_err(|problem| InputError::new(path, problem))?;
+    let mut shapes = Shapes::default();
+    for g in &geometries {
+        collect(g, &mut shapes).map_err(|problem| InputError::new(path, problem))?;
+    }
+    if shapes.rings.is_empty() && shapes.segments.is_empty() {
+        return Err(InputError::new(path, "it holds no polygon and no line string".into()));
+    }
+    Ok(shapes)
+}
+
+/// Reads a polygon operand and validates it (finite, in range, rings of at least 3 points).
+pub fn read_polygons(path: &Path, operand: Operand) -> Result<Polygons, InputError> {
+    let shapes = read_shapes(path)?;
+    if !shapes.segments.is_empty() && shapes.rings.is_empty() {
+        return Err(InputError::new(path, format!("the {operand} must be polygons, but it holds line strings")));
+    }
+    let polygons = shapes.polygons();
+    validate_polygons(&polygons, operand).map_err(|e| InputError::new(path, e.to_string()))?;
+    Ok(polygons)
+}
+
+/// Reads segments and validates them (finite, in range).
+pub fn read_segments(path: &Path) -> Result<Vec<Segment>, InputError> {
+    let shapes = read_shapes(path)?;
+    validate_segments(&shapes.segments).map_err(|e| InputError::new(path, e.to_string()))?;
+    Ok(shapes.segments)
+}
+
+fn is_geojson(path: &Path) -> bool {
+    matches!(
+        path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref(),
+        Some("geojson" | "json")
+    )
+}
+
+fn parse_wkt(text: &str) -> Result<Vec<Geometry<f64>>, String> {
+    let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
+    let geometry = Geometry::try_from(wkt).map_err(|e| format!("unusable WKT: {e}"))?;
+    Ok(vec![geometry])
+}
+
+fn parse_geojson(text: &str) -> Result<Vec<Geometry<f64>>, String> {
+    let json = geojson::GeoJson::from_str(text).map_err(|e| format!("not valid GeoJSON: {e}"))?;
+    let collection = geo::GeometryCollection::<f64>::try_from(&json).map_err(|e| format!("unusable GeoJSON: {e}"))?;
+    Ok(collection.0)
+}
+
+/// Adds a geometry's rings and segments; points are refused (they have no area and no length).
+fn collect(g: &Geometry<f64>, shapes: &mut Shapes) -> Result<(), String> {
+    match g {
+        Geometry::Polygon(p) => shapes.rings.extend(Polygons::from(p).rings),
+        Geometry::MultiPolygon(mp) => shapes.rings.extend(Polygons::from(mp).rings),
+        Geometry::Rect(r) => shapes.rings.extend(Polygons::from(&r.to_polygon()).rings),
+        Geometry::Triangle(t) => shapes.rings.extend(Polygons::from(&t.to_polygon()).rings),
+        Geometry::LineString(ls) => shapes.segments.extend(ls.lines().map(Segment::from)),
+        Geometry::MultiLineString(mls) => {
+            shapes.segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from))
+        }
+        Geometry::Line(l) => shapes.segments.push(Segment::from(*l)),
+        Geometry::GeometryCollection(c) => c.0.iter().try_for_each(|g| collect(g, shapes))?,
+        Geometry::Point(_) | Geometry::MultiPoint(_) => {
+            return Err("it holds points; expected polygons or line strings".into());
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wkt_rings_keep_their_orientation_and_order() {
+        let g = parse_wkt("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap();
+        let mut shapes = Shapes::default();
+        collect(&g[0], &mut shapes).unwrap();
+        assert_eq!(shapes.rings.len(), 2);
+        assert!(shapes.rings[0].signed_area() < 0.0, "clockwise ring read as clockwise");
+        assert!(shapes.rings[1].signed_area() > 0.0);
+        assert_eq!(shapes.rings[0].len(), 4, "closing vertex dropped");
+    }
+
+    #[test]
+    fn geojson_feature_collection_and_line_strings() {
+        let text = r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]}},
+            {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2],[3,0]]}}]}"#;
+        let mut shapes = Shapes::default();
+        for g in parse_geojson(text).unwrap() {
+            collect(&g, &mut shapes).unwrap();
+        }
+        assert_eq!(shapes.rings.len(), 1);
+        assert_eq!(shapes.segments.len(), 2);
+    }
+
+    #[test]
+    fn broken_text_is_an_error_not_a_panic() {
+        assert!(parse_wkt("POLYGON((0 0, 1 1").is_err());
+        assert!(parse_wkt("").is_err());
+        assert!(parse_geojson("{\"type\": \"Polygon\"").is_err());
+        let mut shapes = Shapes::default();
+        assert!(collect(&parse_wkt("POINT(1 2)").unwrap()[0], &mut shapes).is_err());
+    }
+}

@@ -1,0 +1,137 @@
+//! The registry: every clipper the harness knows, one line each, with where it comes from.
+//!
+//! To add a clipper, add its crate to harness/Cargo.toml and one line to [`registry`]:
+//! `.polygon(Origin::Ours, REGION_TOLERANCE, clip_vatti::VattiClipper::new())` for a polygon
+//! clipper, `.line(Origin::Ours, 1e-9, ...)` for a line clipper (its tolerance is on the
+//! parameter `t` of piece end points). Its name, operations,
+//! fill rules and windows come from its own `name()` and `capabilities()`, so every command runs
+//! it only where it applies.
+
+use clip_core::{LineClipper, PolygonClipper};
+use clip_testkit::peers::{Clipper2Clipper, GeoClipper, GeoLineClipper};
+use clip_testkit::polygon_oracle::GEO_TOLERANCE;
+
+use crate::cli_error::CliError;
+
+/// Every registered clipper.
+pub fn registry() -> Registry {
+    Registry::default()
+        .polygon(Origin::Peer, GEO_TOLERANCE, GeoClipper::new())
+        .line(Origin::Peer, GEO_TOLERANCE, GeoLineClipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
+}
+
+/// Whether a clipper is this project's (its failures fail a run) or a peer library (reported only).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Origin {
+    /// One of this project's algorithm crates.
+    Ours,
+    /// A library we compare against (`geo`, Clipper2).
+    Peer,
+}
+
+/// A registered polygon clipper.
+pub struct PolygonEntry {
+    /// The clipper.
+    pub clipper: Box<dyn PolygonClipper>,
+    /// Ours or a peer.
+    pub origin: Origin,
+    /// Relative area tolerance its output is checked with (see `clip_testkit::polygon_oracle`).
+    pub tolerance: f64,
+}
+
+/// A registered line clipper.
+pub struct LineEntry {
+    /// The clipper.
+    pub clipper: Box<dyn LineClipper>,
+    /// Ours or a peer.
+    pub origin: Origin,
+    /// Tolerance on the parameter `t` of piece end points.
+    pub tolerance: f64,
+}
+
+/// The polygon and line clippers, in registration order (a name may be both: `geo`).
+#[derive(Default)]
+pub struct Registry {
+    /// Polygon clippers.
+    pub polygon: Vec<PolygonEntry>,
+    /// Line clippers.
+    pub line: Vec<LineEntry>,
+}
+
+impl Registry {
+    /// Adds a polygon clipper.
+    pub fn polygon(mut self, origin: Origin, tolerance: f64, clipper: impl PolygonClipper + 'static) -> Registry {
+        self.polygon.push(PolygonEntry { clipper: Box::new(clipper), origin, tolerance });
+        self
+    }
+
+    /// Adds a line clipper.
+    pub fn line(mut self, origin: Origin, tolerance: f64, clipper: impl LineClipper + 'static) -> Registry {
+        self.line.push(LineEntry { clipper: Box::new(clipper), origin, tolerance });
+        self
+    }
+
+    /// Every name, each once, in registration order.
+    pub fn names(&self) -> Vec<&'static str> {
+        let mut names: Vec<&'static str> = Vec::new();
+        let all = self.polygon.iter().map(|e| e.clipper.name()).chain(self.line.iter().map(|e| e.clipper.name()));
+        for name in all {
+            if !names.contains(&name) {
+                names.push(name);
+            }
+        }
+        names
+    }
+
+    /// The polygon clipper called `name`.
+    pub fn find_polygon(&self, name: &str) -> Option<&PolygonEntry> {
+        self.polygon.iter().find(|e| e.clipper.name() == name)
+    }
+
+    /// The line clipper called `name`.
+    pub fn find_line(&self, name: &str) -> Option<&LineEntry> {
+        self.line.iter().find(|e| e.clipper.name() == name)
+    }
+
+    /// Keeps only the named clippers (all of them when `names` is empty); an unknown name is a
+    /// usage error listing the valid ones.
+    pub fn select(mut self, names: &[String]) -> Result<Registry, CliError> {
+        if names.is_empty() {
+            return Ok(self);
+        }
+        let valid = self.names();
+        if let Some(unknown) = names.iter().find(|n| !valid.contains(&n.as_str())) {
+            return Err(unknown_clipper(unknown, &valid));
+        }
+        self.polygon.retain(|e| names.iter().any(|n| n == e.clipper.name()));
+        self.line.retain(|e| names.iter().any(|n| n == e.clipper.name()));
+        Ok(self)
+    }
+}
+
+/// The usage error for a clipper name that is not registered.
+pub fn unknown_clipper(given: &str, valid: &[&str]) -> CliError {
+    CliError::usage(format!("unknown clipper '{given}' (registered: {})", valid.join(", ")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_are_unique_and_select_keeps_both_kinds() {
+        let r = registry();
+        assert_eq!(r.names(), vec!["geo", "clipper2"]);
+        let geo = registry().select(&["geo".to_owned()]).unwrap();
+        assert_eq!(geo.polygon.len(), 1);
+        assert_eq!(geo.line.len(), 1);
+    }
+
+    #[test]
+    fn unknown_name_lists_the_valid_ones() {
+        let Err(e) = registry().select(&["vati".to_owned()]) else { panic!("accepted an unknown name") };
+        assert_eq!(e.code, 2);
+        assert!(e.message.contains("'vati'") && e.message.contains("geo, clipper2"), "{}", e.message);
+    }
+}

@@ -1,0 +1,265 @@
+//! The bench from its raw CSV: per group and operation, time per call and the ratio to Clipper2
+//! measured in the same run; peak memory of the large cases; one log-log plot per group.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+use super::markdown::{duration_ns, header, num, table};
+use super::provenance_line;
+use crate::bench::{BASELINE, CSV, MEMORY_CSV, META, MemoryRecord};
+use crate::cli_error::CliError;
+use crate::measure::raw::{Measurement, read_csv};
+use crate::measure::timing::{geometric_mean, mean, median};
+use crate::plot::chart::{Chart, Series};
+use crate::plot::palette::clipper_colour;
+
+/// The markdown file.
+pub const MD: &str = "bench.md";
+
+/// One point: a clipper on a group's size and operation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    /// Time per call in ns: mean over cases of the median over rounds.
+    pub time_ns: f64,
+    /// Geometric mean over cases of (this clipper's median / Clipper2's median on the same case);
+    /// NaN where Clipper2 has no time.
+    pub ratio: f64,
+    /// Rounds behind the medians (1 for a point over the cap).
+    pub rounds: usize,
+}
+
+/// Points keyed by (group, op, size, clipper).
+pub type Points = BTreeMap<(String, String, usize, String), Point>;
+
+/// The plot file of one group.
+pub fn plot_file(group: &str) -> String {
+    format!("bench-{group}.svg")
+}
+
+/// Computes every point from raw rows.
+pub fn points(rows: &[Measurement]) -> Points {
+    let mut per_case: BTreeMap<(String, String, usize, String, String), Vec<f64>> = BTreeMap::new();
+    for r in rows {
+        per_case
+            .entry((r.workload.clone(), r.op.clone(), r.size, r.clipper.clone(), r.case.clone()))
+            .or_default()
+            .push(r.time_ns);
+    }
+    let medians: BTreeMap<_, (f64, usize)> = per_case.into_iter().map(|(k, v)| (k, (median(&v), v.len()))).collect();
+    let mut grouped: BTreeMap<(String, String, usize, String), Vec<(String, f64, usize)>> = BTreeMap::new();
+    for ((g, op, size, clipper, case), (t, n)) in &medians {
+        grouped.entry((g.clone(), op.clone(), *size, clipper.clone())).or_default().push((case.clone(), *t, *n));
+    }
+    grouped
+        .into_iter()
+        .map(|((g, op, size, clipper), cases)| {
+            let ratios: Vec<f64> = cases
+                .iter()
+                .filter_map(|(case, t, _)| {
+                    medians.get(&(g.clone(), op.clone(), size, BASELINE.to_owned(), case.clone())).map(|(b, _)| t / b)
+                })
+                .collect();
+            let ratio = if ratios.len() == cases.len() { geometric_mean(&ratios) } else { f64::NAN };
+            let time_ns = mean(&cases.iter().map(|c| c.1).collect::<Vec<_>>());
+            let rounds = cases.iter().map(|c| c.2).min().unwrap_or(0);
+            ((g, op, size, clipper), Point { time_ns, ratio, rounds })
+        })
+        .collect()
+}
+
+/// Groups in first-seen order of the raw file, clippers likewise.
+fn order(rows: &[Measurement], pick: impl Fn(&Measurement) -> &str) -> Vec<String> {
+    let mut seen = Vec::new();
+    for r in rows {
+        if !seen.iter().any(|s: &String| s == pick(r)) {
+            seen.push(pick(r).to_owned());
+        }
+    }
+    seen
+}
+
+/// One table: sizes down, clippers across, "time (ratio to Clipper2)".
+fn group_table(points: &Points, group: &str, op: &str, clippers: &[String]) -> Option<String> {
+    let sizes: BTreeSet<usize> =
+        points.keys().filter(|(g, o, _, _)| g == group && o == op).map(|(_, _, s, _)| *s).collect();
+    let present: Vec<&String> = clippers
+        .iter()
+        .filter(|c| points.keys().any(|(g, o, _, k)| g == group && o == op && k == *c))
+        .collect();
+    if sizes.is_empty() {
+        return None;
+    }
+    let mut head = vec!["Edges".to_owned()];
+    head.extend(present.iter().map(|c| format!("{c} (x {BASELINE})")));
+    let body: Vec<Vec<String>> = sizes
+        .iter()
+        .map(|&s| {
+            let mut cells = vec![s.to_string()];
+            for c in &present {
+                cells.push(match points.get(&(group.to_owned(), op.to_owned(), s, (*c).clone())) {
+                    Some(p) if p.rounds <= 1 => format!("{} ({}) ¹", duration_ns(p.time_ns), num(p.ratio, 2)),
+                    Some(p) => format!("{} ({})", duration_ns(p.time_ns), num(p.ratio, 2)),
+                    None => "skipped".to_owned(),
+                });
+            }
+            cells
+        })
+        .collect();
+    Some(table(&head, &body))
+}
+
+/// The log-log plot of one group's intersection times.
+pub fn chart(points: &Points, group: &str, clippers: &[String]) -> Chart {
+    let op = "intersection";
+    let series = clippers
+        .iter()
+        .filter_map(|c| {
+            let pts: Vec<(f64, f64)> = points
+                .iter()
+                .filter(|((g, o, _, k), _)| g == group && o == op && k == c)
+                .map(|((_, _, s, _), p)| (*s as f64, p.time_ns / 1e3))
+                .collect();
+            (!pts.is_empty()).then(|| Series { label: c.clone(), colour: clipper_colour(c), points: pts, paper: false })
+        })
+        .collect();
+    Chart {
+        title: format!("bench, {group}: intersection time per call against subject size"),
+        x_label: "subject polygon edges (log scale)".to_owned(),
+        y_label: "time per call (µs, log scale)".to_owned(),
+        log_x: true,
+        log_y: true,
+        series,
+    }
+}
+
+/// The ratios the issue asks to quote: `vatti` against Clipper2 and geo at 4, 20, 100, 200 edges
+/// and the largest size, per group, intersection.
+pub fn vatti_ratios(points: &Points, groups: &[String]) -> String {
+    let op = "intersection";
+    let mut text = String::new();
+    for g in groups {
+        let sizes: BTreeSet<usize> = points
+            .keys()
+            .filter(|(gg, o, _, c)| gg == g && o == op && c == "vatti")
+            .map(|(_, _, s, _)| *s)
+            .collect();
+        let Some(&largest) = sizes.last() else { continue };
+        let mut parts = Vec::new();
+        for s in [4, 20, 100, 200, largest].into_iter().filter(|s| sizes.contains(s)).collect::<BTreeSet<_>>() {
+            let key = |c: &str| (g.clone(), op.to_owned(), s, c.to_owned());
+            let (Some(v), Some(geo)) = (points.get(&key("vatti")), points.get(&key("geo"))) else { continue };
+            parts.push(format!("{s}: {} x clipper2, {} x geo", num(v.ratio, 2), num(v.time_ns / geo.time_ns, 2)));
+        }
+        if !parts.is_empty() {
+            text.push_str(&format!("- {g}: vatti at {}.\n", parts.join("; ")));
+        }
+    }
+    text
+}
+
+/// Peak memory of the large groups, MiB above the resident size before the call.
+fn memory_table(records: &[MemoryRecord], clippers: &[String]) -> Option<String> {
+    let mut points: BTreeMap<(String, usize), BTreeMap<String, u64>> = BTreeMap::new();
+    for r in records {
+        let cell = points.entry((r.workload.clone(), r.size)).or_default().entry(r.clipper.clone()).or_default();
+        *cell = (*cell).max(r.peak_extra_kib);
+    }
+    if points.is_empty() {
+        return None;
+    }
+    let present: Vec<&String> = clippers.iter().filter(|c| records.iter().any(|r| &r.clipper == *c)).collect();
+    let mut head = header(&["Group", "Edges"]);
+    head.extend(present.iter().map(|c| format!("{c} MiB")));
+    let body: Vec<Vec<String>> = points
+        .iter()
+        .map(|((g, s), by)| {
+            let mut cells = vec![g.clone(), s.to_string()];
+            cells.extend(present.iter().map(|c| by.get(*c).map_or("skipped".to_owned(), |k| num(*k as f64 / 1024.0, 1))));
+            cells
+        })
+        .collect();
+    Some(table(&head, &body))
+}
+
+/// Recomputes the bench tables and plots from `out`'s CSVs.
+pub fn write(out: &Path) -> Result<(), CliError> {
+    if let Some(section) = section(out)? {
+        std::fs::write(out.join(MD), section)
+            .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", out.join(MD).display())))?;
+    }
+    Ok(())
+}
+
+/// The bench's markdown section after writing its plots; `None` when `out` holds no bench results.
+pub fn section(out: &Path) -> Result<Option<String>, CliError> {
+    let csv = out.join(CSV);
+    if !csv.exists() {
+        return Ok(None);
+    }
+    let rows: Vec<Measurement> = read_csv(&csv)?;
+    let memory: Vec<MemoryRecord> = if out.join(MEMORY_CSV).exists() { read_csv(&out.join(MEMORY_CSV))? } else { Vec::new() };
+    let points = points(&rows);
+    let groups = order(&rows, |r| r.workload.as_str());
+    let clippers = order(&rows, |r| r.clipper.as_str());
+    let ops = order(&rows, |r| r.op.as_str());
+    let (_, notes) = provenance_line(&out.join(META))?;
+    let mut text = format!(
+        "## Bench: the polygon clippers against geo and Clipper2\n\n\
+         Time per call (mean over the group's cases of the median over interleaved rounds) and, in brackets, the \
+         ratio to `{BASELINE}` measured in the same run (geometric mean over cases; below 1 is faster than \
+         Clipper2). Operands read under even-odd. ¹ marks a point over the time cap, timed once.\n\n\
+         Ratios of `vatti` at 4, 20, 100, 200 edges and the largest size (intersection):\n\n{}\n{notes}\n",
+        vatti_ratios(&points, &groups)
+    );
+    for g in &groups {
+        chart(&points, g, &clippers).write_svg(&out.join(plot_file(g)))?;
+        text.push_str(&format!("### {g}\n\n![{g}: time against size]({})\n\n", plot_file(g)));
+        for op in &ops {
+            if let Some(t) = group_table(&points, g, op, &clippers) {
+                text.push_str(&format!("{op}:\n\n{t}\n"));
+            }
+        }
+    }
+    if let Some(t) = memory_table(&memory, &clippers) {
+        text.push_str(&format!("### Peak memory of the large cases (intersection)\n\n{t}\n"));
+    }
+    Ok(Some(text))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn m(clipper: &str, case: &str, rep: usize, ns: f64) -> Measurement {
+        Measurement {
+            workload: "star".into(),
+            case: case.into(),
+            clipper: clipper.into(),
+            phase: "clip".into(),
+            size: 20,
+            op: "intersection".into(),
+            fill_rule: "even-odd".into(),
+            repetition: rep,
+            iterations: 1,
+            time_ns: ns,
+        }
+    }
+
+    #[test]
+    fn ratios_are_per_case_against_clipper2() {
+        let rows = vec![
+            m("clipper2", "0", 0, 100.0),
+            m("clipper2", "1", 0, 1000.0),
+            m("vatti", "0", 0, 50.0),
+            m("vatti", "1", 0, 2000.0),
+            m("geo", "0", 0, 400.0),
+            m("geo", "1", 0, 4000.0),
+        ];
+        let p = points(&rows);
+        let v = &p[&("star".into(), "intersection".into(), 20, "vatti".into())];
+        assert!((v.ratio - 1.0).abs() < 1e-12, "geometric mean of 0.5 and 2");
+        assert_eq!(v.time_ns, 1025.0);
+        let text = vatti_ratios(&p, &["star".to_owned()]);
+        assert!(text.contains("20: 1.00 x clipper2, 0.47 x geo"), "{text}");
+    }
+}

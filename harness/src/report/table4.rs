@@ -1,0 +1,362 @@
+//! Wang et al.'s Table 4 from its raw CSV: per window, each line clipper's time per batch, the
+//! gain of New2 over Liu beside the paper's, the rejection stages' shares, a plot and a reading.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use super::markdown::{header, num, table};
+use super::provenance_line;
+use crate::cli_error::CliError;
+use crate::measure::raw::{Measurement, read_csv};
+use crate::measure::timing::median;
+use crate::papers::{WANG_TABLE4, wang_row};
+use crate::plot::chart::{Chart, Series};
+use crate::plot::palette::SIZE_ROWS;
+use crate::reproduce::table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
+
+/// The markdown table file.
+pub const MD: &str = "wang-table4.md";
+/// The gain plot.
+pub const PLOT: &str = "wang-table4-gain.svg";
+
+/// The clippers of the table, in column order, with their column titles.
+const COLUMNS: [(&str, &str); 5] = [
+    ("liu", "Liu"),
+    ("virtual-box-no45", "New1"),
+    ("virtual-box", "New2"),
+    ("cyrus-beck", "cyrus-beck"),
+    ("geo", "geo"),
+];
+
+/// The size rows, in the table's order: name in the files, and a label.
+const SIZE_ROWS_NAMES: [(&str, &str); 2] = [("W1", "row 1 (paper's polygon)"), ("W2", "row 2 (W1 = 4, W2 = 80)")];
+
+/// One window of the table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// `concave` or `convex`.
+    pub shape: String,
+    /// Window edges.
+    pub edges: usize,
+    /// 0 or 1: the paper's size row.
+    pub size_row: usize,
+    /// Our window's measured W1 and W2.
+    pub w1_w2: (f64, f64),
+    /// Median ms per batch for each of [`COLUMNS`] (NaN where the clipper does not run).
+    pub ms: [f64; 5],
+    /// Repetitions behind each median.
+    pub repetitions: [usize; 5],
+}
+
+impl Row {
+    /// (Liu - New2) x 100% / New2.
+    pub fn gain(&self) -> f64 {
+        (self.ms[0] - self.ms[2]) * 100.0 / self.ms[2]
+    }
+}
+
+/// Computes the rows from raw timings and the window records.
+pub fn rows(measurements: &[Measurement], windows: &[WindowRecord]) -> Vec<Row> {
+    let mut times: BTreeMap<(String, usize, String), Vec<f64>> = BTreeMap::new();
+    for m in measurements {
+        times.entry((m.case.clone(), m.size, m.clipper.clone())).or_default().push(m.time_ns / 1e6);
+    }
+    windows
+        .iter()
+        .filter_map(|w| {
+            let size_row = SIZE_ROWS_NAMES.iter().position(|(n, _)| *n == w.size_row)?;
+            let case = format!("{}-{}", w.shape, w.size_row);
+            let series = COLUMNS.map(|(c, _)| times.get(&(case.clone(), w.edges, c.to_owned())));
+            Some(Row {
+                shape: w.shape.clone(),
+                edges: w.edges,
+                size_row,
+                w1_w2: (w.w1, w.w2),
+                ms: series.map(|s| s.map_or(f64::NAN, |v| median(v))),
+                repetitions: series.map(|s| s.map_or(0, Vec::len)),
+            })
+        })
+        .collect()
+}
+
+/// The concave-window table, beside the paper's.
+pub fn markdown_table(rows: &[Row]) -> String {
+    let head = header(&[
+        "Edges",
+        "Size row",
+        "W1, W2 (ours)",
+        "W1, W2 (paper)",
+        "Liu ms",
+        "New1 ms",
+        "New2 ms",
+        "Gain %",
+        "paper Liu",
+        "paper New1",
+        "paper New2",
+        "paper Gain %",
+        "cyrus-beck ms",
+        "geo ms",
+    ]);
+    let body = rows
+        .iter()
+        .filter(|r| r.shape == "concave")
+        .map(|r| {
+            let p = wang_row(r.edges, r.size_row);
+            let pv = |f: fn(&crate::papers::WangRow) -> f64| p.map_or("n/a".to_owned(), |p| num(f(p), 2));
+            vec![
+                r.edges.to_string(),
+                SIZE_ROWS_NAMES[r.size_row].1.to_owned(),
+                format!("{}, {}", num(r.w1_w2.0, 2), num(r.w1_w2.1, 1)),
+                p.map_or("n/a".to_owned(), |p| format!("{}, {}", p.w1_w2.0, p.w1_w2.1)),
+                num(r.ms[0], 3),
+                num(r.ms[1], 3),
+                num(r.ms[2], 3),
+                format!("**{}**", num(r.gain(), 1)),
+                pv(|p| p.liu),
+                pv(|p| p.new1),
+                pv(|p| p.new2),
+                pv(|p| p.gain),
+                "n/a (concave)".to_owned(),
+                num(r.ms[4], 2),
+            ]
+        })
+        .collect::<Vec<_>>();
+    table(&head, &body)
+}
+
+/// The same clippers on convex windows of the same sizes, where Cyrus-Beck applies.
+pub fn convex_table(rows: &[Row]) -> String {
+    let head = header(&["Edges", "Size row", "Liu ms", "New1 ms", "New2 ms", "Gain %", "cyrus-beck ms", "geo ms"]);
+    let body = rows
+        .iter()
+        .filter(|r| r.shape == "convex")
+        .map(|r| {
+            vec![
+                r.edges.to_string(),
+                SIZE_ROWS_NAMES[r.size_row].1.to_owned(),
+                num(r.ms[0], 3),
+                num(r.ms[1], 3),
+                num(r.ms[2], 3),
+                num(r.gain(), 1),
+                num(r.ms[3], 3),
+                num(r.ms[4], 2),
+            ]
+        })
+        .collect::<Vec<_>>();
+    table(&head, &body)
+}
+
+/// Share of the batch each stage settled, for New2 and Liu on the concave windows.
+pub fn stages_table(stages: &[StageRecord]) -> String {
+    let share = |shape: &str, row: &str, edges: usize, clipper: &str, stage: &str| {
+        stages
+            .iter()
+            .find(|s| s.shape == shape && s.size_row == row && s.edges == edges && s.clipper == clipper && s.stage == stage)
+            .map_or(f64::NAN, |s| s.segments as f64 * 100.0 / s.of as f64)
+    };
+    let head = header(&[
+        "Edges",
+        "Size row",
+        "MEB %",
+        "45° box %",
+        "virtual box %",
+        "code sum %",
+        "intersected %",
+        "visible %",
+        "Liu: MEB %",
+        "Liu: no crossing %",
+        "New1: adaptive box + code sum %",
+    ]);
+    let mut body = Vec::new();
+    for (name, label) in SIZE_ROWS_NAMES {
+        let mut edges: Vec<usize> = stages.iter().filter(|s| s.size_row == name).map(|s| s.edges).collect();
+        edges.sort_unstable();
+        edges.dedup();
+        for e in edges {
+            let s = |stage: &str| share("concave", name, e, "virtual-box", stage);
+            let n1 = share("concave", name, e, "virtual-box-no45", "virtual-box")
+                + share("concave", name, e, "virtual-box-no45", "code-sum");
+            body.push(vec![
+                e.to_string(),
+                label.to_owned(),
+                num(s("meb"), 1),
+                num(s("rotated-box"), 1),
+                num(s("virtual-box"), 1),
+                num(s("code-sum"), 1),
+                num(s("intersected"), 1),
+                num(s("visible"), 1),
+                num(share("concave", name, e, "liu", "meb"), 1),
+                num(share("concave", name, e, "liu", "no-crossing"), 1),
+                num(n1, 1),
+            ]);
+        }
+    }
+    table(&head, &body)
+}
+
+/// Gain against edges for both size rows, ours and the paper's.
+pub fn chart(rows: &[Row]) -> Chart {
+    let mut series = Vec::new();
+    for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
+        let mut ours: Vec<(f64, f64)> =
+            rows.iter().filter(|r| r.shape == "concave" && r.size_row == i).map(|r| (r.edges as f64, r.gain())).collect();
+        ours.sort_by(|a, b| a.0.total_cmp(&b.0));
+        series.push(Series { label: format!("{label}, measured here"), colour: SIZE_ROWS[i], points: ours, paper: false });
+    }
+    for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
+        let paper = WANG_TABLE4.iter().filter(|r| r.size_row == i).map(|r| (r.edges as f64, r.gain)).collect();
+        series.push(Series {
+            label: format!("{label}, Wang et al. 2005 (Pentium IV)"),
+            colour: SIZE_ROWS[i],
+            points: paper,
+            paper: true,
+        });
+    }
+    Chart {
+        title: "Wang et al. Table 4: gain of New2 (virtual boxes + 45° box) over Liu, concave windows".to_owned(),
+        x_label: "window polygon edges".to_owned(),
+        y_label: "gain = (Liu - New2) / New2 (%)".to_owned(),
+        log_x: false,
+        log_y: false,
+        series,
+    }
+}
+
+/// A short reading, every statement computed from the rows.
+pub fn reading(rows: &[Row]) -> String {
+    let mut text = String::new();
+    for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
+        let ours: Vec<&Row> = rows.iter().filter(|r| r.shape == "concave" && r.size_row == i).collect();
+        let (Some(a), Some(b)) = (ours.first(), ours.last()) else { continue };
+        let pa = wang_row(a.edges, i).map_or(f64::NAN, |p| p.gain);
+        let pb = wang_row(b.edges, i).map_or(f64::NAN, |p| p.gain);
+        text.push_str(&format!(
+            "- {label}: our gain goes from {}% at {} edges to {}% at {}; the paper's from {}% to {}%.\n",
+            num(a.gain(), 1),
+            a.edges,
+            num(b.gain(), 1),
+            b.edges,
+            num(pa, 1),
+            num(pb, 1)
+        ));
+    }
+    let concave: Vec<&Row> = rows.iter().filter(|r| r.shape == "concave").collect();
+    let faster = concave.iter().filter(|r| r.ms[2] < r.ms[0]).count();
+    text.push_str(&format!(
+        "- New2 is faster than Liu on {faster} of {} concave windows (the paper: 12 of 12).\n",
+        concave.len()
+    ));
+    let box45: Vec<f64> = concave.iter().map(|r| (r.ms[1] - r.ms[2]) * 100.0 / r.ms[2]).collect();
+    let paper45: Vec<f64> = WANG_TABLE4.iter().map(|r| (r.new1 - r.new2) * 100.0 / r.new2).collect();
+    let range = |v: &[f64]| {
+        let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        format!("{}% to {}%", num(lo, 1), num(hi, 1))
+    };
+    if !box45.is_empty() {
+        text.push_str(&format!(
+            "- The 45° box (New1 against New2) saves {} of New2's time here; {} in the paper.\n",
+            range(&box45),
+            range(&paper45)
+        ));
+    }
+    let geo: Vec<f64> = concave.iter().filter(|r| !r.ms[4].is_nan()).map(|r| r.ms[4] / r.ms[2]).collect();
+    if !geo.is_empty() {
+        text.push_str(&format!(
+            "- geo's line clip (one call per segment) takes {} times New2's time.\n",
+            range(&geo).replace('%', "")
+        ));
+    }
+    let convex: Vec<&Row> = rows.iter().filter(|r| r.shape == "convex" && !r.ms[3].is_nan()).collect();
+    if !convex.is_empty() {
+        let cb: Vec<f64> = convex.iter().map(|r| r.ms[3] / r.ms[2]).collect();
+        text.push_str(&format!(
+            "- On convex windows Cyrus-Beck takes {} times New2's time.\n",
+            range(&cb).replace('%', "")
+        ));
+    }
+    text
+}
+
+/// Recomputes the table from `out`'s CSVs and writes its markdown and plot.
+pub fn write(out: &Path) -> Result<(), CliError> {
+    if let Some(section) = section(out)? {
+        std::fs::write(out.join(MD), section)
+            .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", out.join(MD).display())))?;
+    }
+    Ok(())
+}
+
+/// The table's markdown section after writing its plot; `None` when `out` holds no Table 4 results.
+pub fn section(out: &Path) -> Result<Option<String>, CliError> {
+    let csv = out.join(CSV);
+    if !csv.exists() {
+        return Ok(None);
+    }
+    let measurements: Vec<Measurement> = read_csv(&csv)?;
+    let windows: Vec<WindowRecord> = read_csv(&out.join(WINDOWS_CSV))?;
+    let stages: Vec<StageRecord> = read_csv(&out.join(STAGES_CSV))?;
+    let rows = rows(&measurements, &windows);
+    chart(&rows).write_svg(&out.join(PLOT))?;
+    let (provenance, notes) = provenance_line(&out.join(META))?;
+    let param = |k: &str| provenance.parameters.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0);
+    Ok(Some(format!(
+        "## Wang et al. 2005, Table 4: line clipping against concave windows\n\n\
+         Workload `wang-t4`: {} random segments (endpoints uniform in 800 x 600) clipped against star-shaped concave \
+         windows of 6 to 50 edges at the paper's two size rows; W1 = 600 / L and W2 = 600 x 800 / MEB area are \
+         measured on our windows (L read as MEB width + height, see `clip_testkit::workload::wang`). Times are \
+         medians over {} interleaved repetitions (geo: {}) of one batch, in ms per batch of 10000 segments, which is \
+         numerically the paper's seconds for 1000 batches. Gain = (Liu - New2) x 100% / New2. Cyrus-Beck needs a \
+         convex window (n/a here; see the convex table).\n\n{}\n![gain against edges]({PLOT})\n\n{}\n\
+         ### The same sizes with convex windows\n\n{}\n\
+         ### Share of the batch settled by each stage (concave windows; New2's pipeline, and Liu's)\n\n{}\n{}\n",
+        param("segments_per_batch"),
+        param("repetitions"),
+        param("geo_repetitions"),
+        markdown_table(&rows),
+        reading(&rows),
+        convex_table(&rows),
+        stages_table(&stages),
+        notes
+    )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn m(clipper: &str, rep: usize, ms: f64) -> Measurement {
+        Measurement {
+            workload: "wang-t4".into(),
+            case: "concave-W1".into(),
+            clipper: clipper.into(),
+            phase: "clip".into(),
+            size: 6,
+            op: "lines".into(),
+            fill_rule: "even-odd".into(),
+            repetition: rep,
+            iterations: 1,
+            time_ns: ms * 1e6,
+        }
+    }
+
+    #[test]
+    fn gain_comes_from_the_medians() {
+        let raw = vec![m("liu", 0, 3.0), m("liu", 1, 3.0), m("liu", 2, 90.0), m("virtual-box", 0, 2.0), m("virtual-box", 1, 2.0)];
+        let windows = vec![WindowRecord {
+            shape: "concave".into(),
+            size_row: "W1".into(),
+            edges: 6,
+            w1: 2.7,
+            w2: 41.0,
+            paper_w1: 2.76,
+            paper_w2: 40.0,
+        }];
+        let rows = rows(&raw, &windows);
+        assert_eq!(rows.len(), 1);
+        assert_eq!(rows[0].gain(), 50.0);
+        assert_eq!(rows[0].repetitions, [3, 0, 2, 0, 0]);
+        assert!(rows[0].ms[3].is_nan());
+        assert!(reading(&rows).contains("our gain goes from 50.0% at 6 edges"));
+    }
+}

@@ -1,0 +1,130 @@
+//! The checks verify applies to one result: the oracle, the area identities, agreement between two
+//! clippers; shared by the runs, the shrinker's predicate and `--replay`.
+
+use clip_core::{BoolOp, FillRule, Polygons, Segment, VisiblePiece};
+use clip_testkit::line_oracle::{check_line_batch, pieces_to_intervals};
+use clip_testkit::polygon_oracle::{OutputRules, check_area_identities, check_polygon_op, same_region, tolerance};
+
+use crate::registry::{LineEntry, PolygonEntry};
+
+/// What a failure is: which check rejected which result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Check {
+    /// The oracle rejected the result of one operation (or the clipper refused valid input).
+    Oracle,
+    /// The four operations' results break an area identity.
+    AreaIdentities,
+    /// The result differs by region (or by visible intervals) from another clipper's.
+    Disagreement(&'static str),
+}
+
+impl Check {
+    /// The name used in file names and case files.
+    pub fn label(self) -> String {
+        match self {
+            Check::Oracle => "oracle".into(),
+            Check::AreaIdentities => "area-identities".into(),
+            Check::Disagreement(other) => format!("vs-{other}"),
+        }
+    }
+}
+
+/// How the oracle reads a polygon clipper's output under input fill rule `fill`.
+pub fn output_rules(entry: &PolygonEntry, fill: FillRule) -> OutputRules {
+    let bridged = entry.clipper.capabilities().bridges;
+    OutputRules {
+        conventional: !bridged,
+        output_fill: if bridged { fill } else { FillRule::NonZero },
+        relative_tolerance: entry.tolerance,
+    }
+}
+
+/// Runs a polygon clipper; a refusal of (valid, supported) input is a failure message.
+pub fn run_polygon(
+    entry: &PolygonEntry,
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+) -> Result<Polygons, String> {
+    entry.clipper.clip(subject, clip, op, fill).map_err(|e| format!("refused: {e}"))
+}
+
+/// The oracle's verdict on one polygon result.
+pub fn polygon_oracle(
+    entry: &PolygonEntry,
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+    output: &Polygons,
+) -> Result<(), String> {
+    check_polygon_op(subject, clip, op, fill, output, &output_rules(entry, fill)).map_err(|f| f.to_string())
+}
+
+/// The area identities on the four operations' results.
+pub fn area_identities(
+    entry: &PolygonEntry,
+    subject: &Polygons,
+    clip: &Polygons,
+    fill: FillRule,
+    outputs: &[(BoolOp, &Polygons)],
+) -> Result<(), String> {
+    check_area_identities(subject, clip, fill, outputs, &output_rules(entry, fill)).map_err(|f| f.to_string())
+}
+
+/// Whether two clippers' results cover the same region, within the looser of their tolerances.
+pub fn polygons_agree(
+    x: (&PolygonEntry, &Polygons),
+    y: (&PolygonEntry, &Polygons),
+    subject: &Polygons,
+    clip: &Polygons,
+    fill: FillRule,
+) -> Result<(), String> {
+    let relative = x.0.tolerance.max(y.0.tolerance);
+    let allowed = tolerance(subject, clip, relative);
+    let read = |e: &PolygonEntry| output_rules(e, fill).output_fill;
+    same_region((x.1, read(x.0)), (y.1, read(y.0)), allowed).map_err(|area| {
+        format!(
+            "{} and {} differ by region: symmetric difference area {area:e} > tolerance {allowed:e}",
+            x.0.clipper.name(),
+            y.0.clipper.name()
+        )
+    })
+}
+
+/// Runs a line clipper on a batch; a refusal of a valid window is a failure message.
+pub fn run_line(entry: &LineEntry, window: &Polygons, segments: &[Segment]) -> Result<Vec<VisiblePiece>, String> {
+    let prepared = entry.clipper.prepare(window).map_err(|e| format!("refused the window: {e}"))?;
+    let mut pieces = Vec::new();
+    prepared.clip_batch(segments, &mut pieces).map_err(|e| format!("refused the segments: {e}"))?;
+    Ok(pieces)
+}
+
+/// The line oracle's verdict on a batch.
+pub fn line_oracle(
+    entry: &LineEntry,
+    window: &Polygons,
+    segments: &[Segment],
+    pieces: &[VisiblePiece],
+) -> Result<(), String> {
+    check_line_batch(window, segments, pieces, entry.tolerance).map_err(|f| f.to_string())
+}
+
+/// Whether two line clippers see the same visible intervals, within the looser tolerance.
+pub fn lines_agree(
+    x: (&LineEntry, &[VisiblePiece]),
+    y: (&LineEntry, &[VisiblePiece]),
+    segments: &[Segment],
+) -> Result<(), String> {
+    let allowed = x.0.tolerance.max(y.0.tolerance);
+    let (a, b) = (pieces_to_intervals(segments, x.1), pieces_to_intervals(segments, y.1));
+    for (i, (ia, ib)) in a.iter().zip(&b).enumerate() {
+        let close = ia.len() == ib.len()
+            && ia.iter().zip(ib).all(|(p, q)| (p.0 - q.0).abs() <= allowed && (p.1 - q.1).abs() <= allowed);
+        if !close {
+            return Err(format!("segment {i}: {} sees {ia:?}, {} sees {ib:?}", x.0.clipper.name(), y.0.clipper.name()));
+        }
+    }
+    Ok(())
+}

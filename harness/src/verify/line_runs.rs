@@ -1,0 +1,89 @@
+//! Runs every selected line clipper on one generated case (a window and a batch of segments) for
+//! each window kind a clipper needs; checks each batch and compares the clippers.
+
+use clip_core::{VisiblePiece, WindowKind};
+use clip_testkit::workload::line_case;
+
+use super::checks::{Check, line_oracle, lines_agree, run_line};
+use super::finding::{CaseOutcome, Finding, Kind};
+use super::polygon_runs::{takes, variants};
+use crate::registry::{LineEntry, Origin};
+
+/// What to run on every line case.
+pub struct LinePlan<'a> {
+    /// The selected line clippers.
+    pub entries: Vec<&'a LineEntry>,
+    /// Segments per case.
+    pub segments: usize,
+    /// The run's seed.
+    pub seed: u64,
+}
+
+impl LinePlan<'_> {
+    /// Runs case `index` of `workload`; as for polygons, a clipper is counted only on cases
+    /// generated for its own window kind.
+    pub fn run(&self, workload: &'static str, index: usize) -> Result<CaseOutcome, String> {
+        let mut outcome =
+            CaseOutcome::new(self.entries.iter().map(|e| (e.clipper.name(), e.origin, "line")).collect(), workload);
+        let own: Vec<WindowKind> = self.entries.iter().map(|e| e.clipper.capabilities().window).collect();
+        for variant in variants(own.iter().copied()) {
+            let case = line_case(workload, self.seed, index, variant, self.segments).map_err(|e| e.to_string())?;
+            let here: Vec<usize> = (0..self.entries.len()).filter(|&i| takes(own[i], variant)).collect();
+            let counted = |i: usize| own[i] == variant;
+            let finding = |clipper: &'static str, check: Check, message: String| Finding {
+                kind: Kind::Line,
+                workload,
+                index,
+                window: variant,
+                op: None,
+                fill: None,
+                clipper,
+                check,
+                message,
+            };
+            let mut outputs: Vec<Option<Vec<VisiblePiece>>> = vec![None; self.entries.len()];
+            let mut passed = vec![false; self.entries.len()];
+            for &i in &here {
+                let e = self.entries[i];
+                let result = run_line(e, &case.window, &case.segments);
+                let verdict = result
+                    .as_ref()
+                    .map_err(Clone::clone)
+                    .and_then(|pieces| line_oracle(e, &case.window, &case.segments, pieces));
+                if counted(i) {
+                    let row = &mut outcome.rows[i];
+                    row.cases += 1;
+                    row.runs += 1;
+                    if let Err(message) = &verdict {
+                        row.oracle_failures += 1;
+                        outcome.findings.push(finding(e.clipper.name(), Check::Oracle, message.clone()));
+                    }
+                }
+                passed[i] = verdict.is_ok();
+                outputs[i] = result.ok();
+            }
+            for &x in &here {
+                for &y in here.iter().filter(|&&y| y > x) {
+                    let (Some(px), Some(py)) = (&outputs[x], &outputs[y]) else { continue };
+                    let verdict = lines_agree((self.entries[x], px), (self.entries[y], py), &case.segments);
+                    for (me, other) in [(x, y), (y, x)] {
+                        if counted(me) {
+                            let n =
+                                outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
+                            *n += usize::from(verdict.is_err());
+                        }
+                    }
+                    let under = [(x, y), (y, x)]
+                        .into_iter()
+                        .filter(|&(me, _)| counted(me))
+                        .min_by_key(|&(me, _)| self.entries[me].origin == Origin::Peer);
+                    if let (Err(message), Some((me, other)), true) = (verdict, under, passed[x] && passed[y]) {
+                        let check = Check::Disagreement(self.entries[other].clipper.name());
+                        outcome.findings.push(finding(self.entries[me].clipper.name(), check, message));
+                    }
+                }
+            }
+        }
+        Ok(outcome)
+    }
+}

@@ -1,0 +1,222 @@
+//! `clipbench verify`: every selected clipper on every workload, operation and fill rule it
+//! supports, against the exact oracles and against each other, in parallel and deterministic per
+//! seed whatever the thread count.
+
+mod checks;
+mod finding;
+mod line_runs;
+mod polygon_runs;
+mod recheck;
+mod record;
+mod replay;
+mod summary;
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clip_core::{BoolOp, FillRule};
+use clip_testkit::workload::{LINE_WORKLOADS, POLYGON_WORKLOADS};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+
+use self::finding::{CaseOutcome, Finding};
+use self::line_runs::LinePlan;
+use self::polygon_runs::PolygonPlan;
+use self::summary::{Row, Summary, table};
+use crate::cli_error::CliError;
+use crate::registry::{Origin, Registry};
+use crate::write::write_file;
+
+/// Arguments of `clipbench verify`.
+#[derive(Debug, clap::Args)]
+pub struct VerifyArgs {
+    /// Clipper to verify (repeat for several; default: every registered clipper).
+    #[arg(long = "clipper", value_name = "NAME")]
+    pub clippers: Vec<String>,
+    /// Workload to run (repeat for several; default: every workload). Polygon workloads run
+    /// the polygon clippers, line workloads the line clippers.
+    #[arg(long = "workload", value_name = "NAME")]
+    pub workloads: Vec<String>,
+    /// Generated cases per workload; each case runs every supported operation and fill rule.
+    #[arg(long, default_value_t = 100)]
+    pub cases: usize,
+    /// Seed of the case generators: the same seed gives the same cases and the same summary.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Operation to run (repeat; default: all four).
+    #[arg(long = "op", value_name = "OP")]
+    pub ops: Vec<BoolOp>,
+    /// Fill rule to run (repeat; default: all four).
+    #[arg(long = "fill", value_name = "RULE")]
+    pub fills: Vec<FillRule>,
+    /// Segments per line case.
+    #[arg(long, default_value_t = 100)]
+    pub segments: usize,
+    /// Folder the failure cases are written to, one sub-folder each.
+    #[arg(long, default_value = "verify-failures")]
+    pub out: PathBuf,
+    /// Failures shrunk and written per clipper and workload (0: all of them).
+    #[arg(long, default_value_t = 10)]
+    pub max_records: usize,
+    /// Worker threads (default: one per core). The summary does not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Also write the summary as JSON to this file.
+    #[arg(long, value_name = "FILE")]
+    pub json: Option<PathBuf>,
+    /// Re-run one saved failure (the case.json of a failure folder) instead of a verify run.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["workloads", "cases", "json", "threads"])]
+    pub replay: Option<PathBuf>,
+}
+
+/// Runs the command: exit 1 when a clipper of this project fails the oracle.
+pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> {
+    if let Some(path) = &args.replay {
+        return replay::replay(path, &registry);
+    }
+    let registry = registry.select(&args.clippers)?;
+    let workloads = select_workloads(&args.workloads)?;
+    let polygon = PolygonPlan {
+        entries: registry.polygon.iter().collect(),
+        ops: if args.ops.is_empty() { BoolOp::ALL.to_vec() } else { args.ops.clone() },
+        fills: if args.fills.is_empty() { FillRule::ALL.to_vec() } else { args.fills.clone() },
+        seed: args.seed,
+    };
+    let line = LinePlan { entries: registry.line.iter().collect(), segments: args.segments, seed: args.seed };
+    // Work items in a fixed order: (workload, case index).
+    let items: Vec<(&'static str, usize)> = workloads
+        .iter()
+        .filter(|w| if POLYGON_WORKLOADS.contains(w) { !polygon.entries.is_empty() } else { !line.entries.is_empty() })
+        .flat_map(|&w| (0..args.cases).map(move |i| (w, i)))
+        .collect();
+    if items.is_empty() {
+        return Err(CliError::usage("nothing to run: no selected clipper handles the selected workloads"));
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads.unwrap_or(0))
+        .build()
+        .map_err(|e| CliError::failed(format!("cannot start worker threads: {e}")))?;
+    let progress = progress_bar(items.len());
+    let outcomes: Vec<Result<CaseOutcome, String>> = pool.install(|| {
+        items
+            .par_iter()
+            .map(|&(w, i)| {
+                let outcome = if POLYGON_WORKLOADS.contains(&w) { polygon.run(w, i) } else { line.run(w, i) };
+                progress.inc(1);
+                outcome
+            })
+            .collect()
+    });
+    progress.finish_and_clear();
+
+    // Reduce in case order, so the result does not depend on scheduling.
+    let mut rows: Vec<Row> = Vec::new();
+    let mut findings: Vec<Finding> = Vec::new();
+    for outcome in outcomes {
+        let outcome = outcome.map_err(CliError::failed)?;
+        for row in &outcome.rows {
+            match rows.iter_mut().find(|r| r.clipper == row.clipper && r.kind == row.kind && r.workload == row.workload)
+            {
+                Some(r) => r.add(row),
+                None => rows.push(row.clone()),
+            }
+        }
+        findings.extend(outcome.findings);
+    }
+    rows.retain(|r| r.cases > 0);
+    let ours: Vec<&str> = registry
+        .polygon
+        .iter()
+        .filter(|e| e.origin == Origin::Ours)
+        .map(|e| e.clipper.name())
+        .chain(registry.line.iter().filter(|e| e.origin == Origin::Ours).map(|e| e.clipper.name()))
+        .collect();
+    let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures > 0);
+
+    // Shrink and write the first failures of each clipper and workload.
+    let (chosen, skipped) = choose(&findings, args.max_records);
+    let records: Vec<Result<record::Record, String>> = pool.install(|| {
+        chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &args.out)).collect()
+    });
+    let mut written = Vec::new();
+    for r in records {
+        let r = r.map_err(CliError::failed)?;
+        let dir = r.write(&args.out)?;
+        written.push(dir);
+    }
+
+    let summary = Summary {
+        seed: args.seed,
+        cases_per_workload: args.cases,
+        rows,
+        failures_recorded: written.len(),
+        failures_not_recorded: skipped,
+        ours_failed,
+    };
+    print!("{}", table(&summary.rows));
+    if !written.is_empty() {
+        println!(
+            "{} failure case(s) shrunk and written under {}{}; replay one with: clipbench verify --replay {}",
+            written.len(),
+            args.out.display(),
+            if skipped > 0 { format!(" ({skipped} more not written: --max-records)") } else { String::new() },
+            written[0].join("case.json").display()
+        );
+    }
+    if let Some(path) = &args.json {
+        let text = serde_json::to_string_pretty(&summary).map_err(|e| CliError::failed(e.to_string()))?;
+        write_file(path, &(text + "\n"))?;
+    }
+    if ours_failed {
+        println!("FAILED: a clipper of this project failed the oracle");
+        Ok(ExitCode::FAILURE)
+    } else {
+        Ok(ExitCode::SUCCESS)
+    }
+}
+
+/// The workloads named (all when none), or a usage error listing the valid names.
+fn select_workloads(names: &[String]) -> Result<Vec<&'static str>, CliError> {
+    let all: Vec<&'static str> = POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).copied().collect();
+    if names.is_empty() {
+        return Ok(all);
+    }
+    names
+        .iter()
+        .map(|n| {
+            all.iter()
+                .copied()
+                .find(|w| w == n)
+                .ok_or_else(|| CliError::usage(format!("unknown workload '{n}' (workloads: {})", all.join(", "))))
+        })
+        .collect()
+}
+
+/// The first `max` findings of each clipper, workload and check (all when `max` is 0), in
+/// order, and how many were left out.
+fn choose(findings: &[Finding], max: usize) -> (Vec<Finding>, usize) {
+    let mut chosen: Vec<Finding> = Vec::new();
+    let mut skipped = 0;
+    for f in findings {
+        let same = chosen.iter().filter(|c| c.clipper == f.clipper && c.workload == f.workload && c.check == f.check);
+        if max == 0 || same.count() < max {
+            chosen.push(f.clone());
+        } else {
+            skipped += 1;
+        }
+    }
+    (chosen, skipped)
+}
+
+/// A progress bar on standard error, hidden when that is not a terminal.
+fn progress_bar(len: usize) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(len as u64);
+    if let Ok(style) = ProgressStyle::with_template("verify {bar:40} {pos}/{len} cases, {elapsed} elapsed, eta {eta}") {
+        bar.set_style(style);
+    }
+    bar
+}

@@ -1,0 +1,188 @@
+//! Runs every selected polygon clipper on one generated case: each window kind a clipper needs,
+//! each operation and fill rule it supports; checks each result and compares the clippers.
+
+use clip_core::{BoolOp, FillRule, Polygons, WindowKind};
+use clip_testkit::polygon_oracle::bridge_count;
+use clip_testkit::workload::polygon_case;
+
+use super::checks::{Check, area_identities, polygon_oracle, polygons_agree, run_polygon};
+use super::finding::{CaseOutcome, Finding, Kind};
+use crate::registry::{Origin, PolygonEntry};
+
+/// What to run on every polygon case.
+pub struct PolygonPlan<'a> {
+    /// The selected polygon clippers.
+    pub entries: Vec<&'a PolygonEntry>,
+    /// Operations asked for.
+    pub ops: Vec<BoolOp>,
+    /// Fill rules asked for.
+    pub fills: Vec<FillRule>,
+    /// The run's seed.
+    pub seed: u64,
+}
+
+/// True when a clipper taking `own` windows can run on a case generated for `variant`.
+pub fn takes(own: WindowKind, variant: WindowKind) -> bool {
+    matches!(
+        (own, variant),
+        (WindowKind::Any, _)
+            | (WindowKind::Convex, WindowKind::Convex | WindowKind::Rectangle)
+            | (WindowKind::Rectangle, WindowKind::Rectangle)
+    )
+}
+
+/// The window kinds the selected clippers need, in a fixed order.
+pub fn variants(kinds: impl Iterator<Item = WindowKind> + Clone) -> Vec<WindowKind> {
+    [WindowKind::Any, WindowKind::Convex, WindowKind::Rectangle]
+        .into_iter()
+        .filter(|v| kinds.clone().any(|k| k == *v))
+        .collect()
+}
+
+impl PolygonPlan<'_> {
+    /// Runs case `index` of `workload`. Each clipper is counted only on cases generated for its
+    /// own window kind; on other kinds it runs so the clippers that need them can be compared.
+    pub fn run(&self, workload: &'static str, index: usize) -> Result<CaseOutcome, String> {
+        let mut outcome =
+            CaseOutcome::new(self.entries.iter().map(|e| (e.clipper.name(), e.origin, "polygon")).collect(), workload);
+        let own: Vec<WindowKind> = self.entries.iter().map(|e| e.clipper.capabilities().window).collect();
+        for variant in variants(own.iter().copied()) {
+            let case = polygon_case(workload, self.seed, index, variant).map_err(|e| e.to_string())?;
+            let (subject, clip) = (&case.subject, &case.clip);
+            let here: Vec<usize> = (0..self.entries.len()).filter(|&i| takes(own[i], variant)).collect();
+            let counted = |i: usize| own[i] == variant;
+            for &i in here.iter().filter(|&&i| counted(i)) {
+                outcome.rows[i].cases += 1;
+            }
+            let finding =
+                |clipper: &'static str, op: Option<BoolOp>, fill: FillRule, check: Check, message: String| Finding {
+                    kind: Kind::Polygon,
+                    workload,
+                    index,
+                    window: variant,
+                    op,
+                    fill: Some(fill),
+                    clipper,
+                    check,
+                    message,
+                };
+            for &fill in &self.fills {
+                // outputs[i][op] for each clipper here; None when unsupported or refused.
+                let mut outputs: Vec<Vec<Option<Polygons>>> = vec![vec![None; BoolOp::ALL.len()]; self.entries.len()];
+                for &op in &self.ops {
+                    let mut passed = vec![false; self.entries.len()];
+                    for &i in &here {
+                        let e = self.entries[i];
+                        if !e.clipper.capabilities().supports(op, fill) {
+                            continue;
+                        }
+                        let result = run_polygon(e, subject, clip, op, fill);
+                        let verdict = result
+                            .as_ref()
+                            .map_err(Clone::clone)
+                            .and_then(|out| polygon_oracle(e, subject, clip, op, fill, out));
+                        if counted(i) {
+                            let row = &mut outcome.rows[i];
+                            row.runs += 1;
+                            if let (Ok(out), true) = (&result, e.clipper.capabilities().bridges) {
+                                row.bridges = Some(row.bridges.unwrap_or(0) + bridge_count(out));
+                            }
+                            if let Err(message) = &verdict {
+                                row.oracle_failures += 1;
+                                outcome.findings.push(finding(
+                                    e.clipper.name(),
+                                    Some(op),
+                                    fill,
+                                    Check::Oracle,
+                                    message.clone(),
+                                ));
+                            }
+                        }
+                        passed[i] = verdict.is_ok();
+                        outputs[i][op_slot(op)] = result.ok();
+                    }
+                    self.compare(&mut outcome, &here, &counted, &outputs, &passed, op, subject, clip, fill, &finding);
+                }
+                for &i in here.iter().filter(|&&i| counted(i)) {
+                    let four: Vec<(BoolOp, &Polygons)> = BoolOp::ALL
+                        .iter()
+                        .filter_map(|&op| outputs[i][op_slot(op)].as_ref().map(|o| (op, o)))
+                        .collect();
+                    if four.len() < BoolOp::ALL.len() {
+                        continue;
+                    }
+                    if let Err(message) = area_identities(self.entries[i], subject, clip, fill, &four) {
+                        outcome.rows[i].oracle_failures += 1;
+                        let name = self.entries[i].clipper.name();
+                        outcome.findings.push(finding(name, None, fill, Check::AreaIdentities, message));
+                    }
+                }
+            }
+        }
+        Ok(outcome)
+    }
+
+    /// Counts disagreements between the clippers that produced a result for `op`. A pair is
+    /// recorded as a finding once (under ours when one side is ours), and only when both
+    /// results passed the oracle: otherwise the oracle failure already explains it.
+    #[allow(clippy::too_many_arguments)]
+    fn compare(
+        &self,
+        outcome: &mut CaseOutcome,
+        here: &[usize],
+        counted: &dyn Fn(usize) -> bool,
+        outputs: &[Vec<Option<Polygons>>],
+        passed: &[bool],
+        op: BoolOp,
+        subject: &Polygons,
+        clip: &Polygons,
+        fill: FillRule,
+        finding: &dyn Fn(&'static str, Option<BoolOp>, FillRule, Check, String) -> Finding,
+    ) {
+        let slot = op_slot(op);
+        for &x in here {
+            for &y in here.iter().filter(|&&y| y > x) {
+                let (Some(ox), Some(oy)) = (&outputs[x][slot], &outputs[y][slot]) else { continue };
+                let (ex, ey) = (self.entries[x], self.entries[y]);
+                let verdict = polygons_agree((ex, ox), (ey, oy), subject, clip, fill);
+                for (me, other) in [(x, y), (y, x)] {
+                    if counted(me) {
+                        let n = outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
+                        *n += usize::from(verdict.is_err());
+                    }
+                }
+                if let Err(message) = verdict {
+                    // Record under a side counted on this case, ours first, else the first.
+                    let under = [(x, y), (y, x)]
+                        .into_iter()
+                        .filter(|&(me, _)| counted(me))
+                        .min_by_key(|&(me, _)| self.entries[me].origin == Origin::Peer);
+                    if let (Some((me, other)), true) = (under, passed[x] && passed[y]) {
+                        let check = Check::Disagreement(self.entries[other].clipper.name());
+                        outcome.findings.push(finding(self.entries[me].clipper.name(), Some(op), fill, check, message));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The slot of `op` in [`BoolOp::ALL`].
+fn op_slot(op: BoolOp) -> usize {
+    BoolOp::ALL.iter().position(|&o| o == op).unwrap_or(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn window_kinds_nest() {
+        assert!(takes(WindowKind::Any, WindowKind::Rectangle));
+        assert!(takes(WindowKind::Convex, WindowKind::Rectangle));
+        assert!(!takes(WindowKind::Convex, WindowKind::Any));
+        assert!(!takes(WindowKind::Rectangle, WindowKind::Convex));
+        let v = variants([WindowKind::Rectangle, WindowKind::Any].into_iter());
+        assert_eq!(v, vec![WindowKind::Any, WindowKind::Rectangle]);
+    }
+}

@@ -1,0 +1,208 @@
+//! The clipbench binary end to end: `clip` on files, bad input, `verify` and its JSON summary,
+//! determinism across thread counts, and `--replay`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::str::FromStr;
+
+fn clipbench(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_clipbench")).args(args).output().expect("the clipbench binary runs")
+}
+
+/// A fresh folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.to_str().unwrap().to_owned()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// The area of a MULTIPOLYGON/POLYGON WKT text (outer rings positive, holes negative).
+fn wkt_area(text: &str) -> f64 {
+    let wkt = wkt::Wkt::<f64>::from_str(text.trim()).unwrap_or_else(|e| panic!("not WKT ({e}): {text}"));
+    let mp: geo::MultiPolygon<f64> = match geo::Geometry::try_from(wkt).unwrap() {
+        geo::Geometry::MultiPolygon(mp) => mp,
+        geo::Geometry::Polygon(p) => geo::MultiPolygon(vec![p]),
+        other => panic!("not polygons: {other:?}"),
+    };
+    use geo::Area;
+    mp.signed_area()
+}
+
+#[test]
+fn clip_round_trips_a_wkt_case_with_each_peer() {
+    let dir = scratch("clip");
+    // An L shape with a hole against a square that cuts through the hole.
+    let subject =
+        write(&dir, "subject.wkt", "POLYGON((0 0,6 0,6 2,2 2,2 6,0 6,0 0),(0.5 0.5,0.5 1.5,1.5 1.5,1.5 0.5,0.5 0.5))");
+    let clip = write(&dir, "clip.wkt", "POLYGON((1 1,5 1,5 5,1 5,1 1))");
+    // |L| = 20 - 1 (hole) ; L ∩ square = [1,5]x[1,2] ∪ [1,2]x[2,5] minus the hole's [1,1.5]^2 = 4 + 3 - 0.25.
+    let expected = 6.75;
+    for peer in ["geo", "clipper2"] {
+        let o = clipbench(&["clip", "--clipper", peer, "--op", "intersection", "--fill", "non-zero", &subject, &clip]);
+        assert!(o.status.success(), "{peer}: {}", stderr(&o));
+        let first = stdout(&o);
+        assert!((wkt_area(&first) - expected).abs() < 1e-6, "{peer}: {first}");
+        // Written to a file and read back: clipping the result again changes nothing.
+        let out = dir.join(format!("{peer}.wkt"));
+        let o = clipbench(&["clip", "--clipper", peer, "--op", "and", &subject, &clip, "-o", out.to_str().unwrap()]);
+        assert!(o.status.success(), "{peer}: {}", stderr(&o));
+        let o = clipbench(&["clip", "--clipper", peer, out.to_str().unwrap(), &clip]);
+        assert!(o.status.success(), "{peer}: {}", stderr(&o));
+        assert!((wkt_area(&stdout(&o)) - expected).abs() < 1e-6, "{peer}: {}", stdout(&o));
+        // GeoJSON and SVG outputs by extension.
+        for ext in ["geojson", "svg"] {
+            let out = dir.join(format!("{peer}.{ext}"));
+            let o = clipbench(&["clip", "--clipper", peer, &subject, &clip, "-o", out.to_str().unwrap()]);
+            assert!(o.status.success(), "{peer} {ext}: {}", stderr(&o));
+            let text = std::fs::read_to_string(&out).unwrap();
+            assert!(text.contains(if ext == "svg" { "<svg" } else { "MultiPolygon" }), "{text}");
+        }
+    }
+}
+
+#[test]
+fn clip_reads_geojson_and_clips_line_strings_with_geo() {
+    let dir = scratch("clip-lines");
+    let lines = write(&dir, "lines.wkt", "MULTILINESTRING((-1 1,3 1),(0.5 -1,0.5 3))");
+    let window = write(&dir, "window.geojson", r#"{"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,2],[0,0]]]}"#);
+    let o = clipbench(&["clip", "--clipper", "geo", &lines, &window]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.starts_with("MULTILINESTRING"), "{text}");
+    let Ok(geo::Geometry::MultiLineString(mls)) =
+        geo::Geometry::try_from(wkt::Wkt::<f64>::from_str(text.trim()).unwrap())
+    else {
+        panic!("{text}")
+    };
+    use geo::Length;
+    let total: f64 = mls.0.iter().map(|l| geo::Euclidean.length(l)).sum();
+    assert!((total - 4.0).abs() < 1e-6, "{text}");
+    // Clipper2 has no line clipper: the message says which do.
+    let o = clipbench(&["clip", "--clipper", "clipper2", &lines, &window]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("line clippers: geo"), "{}", stderr(&o));
+}
+
+#[test]
+fn broken_or_missing_files_exit_2_with_a_one_line_message_naming_the_file() {
+    let dir = scratch("broken");
+    let good = write(&dir, "good.wkt", "POLYGON((0 0,1 0,1 1,0 0))");
+    let cases = [
+        (write(&dir, "cut.wkt", "POLYGON((0 0,1 0,1 1"), "not valid WKT"),
+        (write(&dir, "two.wkt", "POLYGON((0 0,1 0,0 0))"), "distinct point"),
+        (write(&dir, "nan.wkt", "POLYGON((0 0,1e999 0,1 1,0 0))"), "not finite"),
+        (write(&dir, "bad.geojson", "{\"type\": \"Polygon\", \"coordinates\": 5}"), "GeoJSON"),
+        (write(&dir, "point.wkt", "POINT(1 2)"), "points"),
+        (dir.join("missing.wkt").to_str().unwrap().to_owned(), "cannot read"),
+    ];
+    for (file, problem) in &cases {
+        let o = clipbench(&["clip", "--clipper", "geo", file, &good]);
+        assert_eq!(o.status.code(), Some(2), "{file}: {}", stderr(&o));
+        let err = stderr(&o);
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains(file.as_str()) && err.contains(problem), "{file}: {err}");
+    }
+}
+
+#[test]
+fn unknown_names_list_the_valid_ones() {
+    let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("geo, clipper2"), "{}", stderr(&o));
+    let o = clipbench(&["verify", "--workload", "nope", "--cases", "1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("star") && stderr(&o).contains("wang-t4"), "{}", stderr(&o));
+}
+
+fn verify_json(dir: &Path, threads: &str) -> (Output, serde_json::Value) {
+    let json = dir.join(format!("summary-{threads}.json"));
+    let out = dir.join(format!("failures-{threads}"));
+    let o = clipbench(&[
+        "verify",
+        "--clipper",
+        "geo",
+        "--clipper",
+        "clipper2",
+        "--workload",
+        "star",
+        "--workload",
+        "grid",
+        "--workload",
+        "lines-degenerate",
+        "--cases",
+        "12",
+        "--fill",
+        "even-odd",
+        "--fill",
+        "non-zero",
+        "--segments",
+        "20",
+        "--max-records",
+        "1",
+        "--threads",
+        threads,
+        "--out",
+        out.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    let text = std::fs::read_to_string(&json).unwrap_or_else(|e| panic!("no JSON summary ({e}): {}", stderr(&o)));
+    (o, serde_json::from_str(&text).expect("the summary is JSON"))
+}
+
+#[test]
+fn verify_prints_a_table_writes_json_and_does_not_depend_on_the_thread_count() {
+    let dir = scratch("verify");
+    let (one, summary_one) = verify_json(&dir, "1");
+    // Peers only: their failures are reported and do not fail the run.
+    assert!(one.status.success(), "{}", stderr(&one));
+    let table = stdout(&one);
+    assert!(table.lines().next().unwrap().contains("oracle fail"), "{table}");
+    assert!(table.lines().any(|l| l.starts_with("geo") && l.contains("star")), "{table}");
+    assert!(table.lines().any(|l| l.starts_with("clipper2") && l.contains("grid")), "{table}");
+    assert!(table.lines().any(|l| l.starts_with("geo") && l.contains("lines-degenerate")), "{table}");
+    let rows = summary_one["rows"].as_array().unwrap();
+    let star_geo = rows.iter().find(|r| r["clipper"] == "geo" && r["workload"] == "star").unwrap();
+    assert_eq!(star_geo["cases"], 12);
+    assert_eq!(star_geo["runs"], 12 * 4 * 2, "every op under both fill rules");
+    assert_eq!(summary_one["ours_failed"], false);
+
+    let (_, summary_two) = verify_json(&dir, "2");
+    assert_eq!(summary_one, summary_two);
+}
+
+#[test]
+fn replay_reruns_a_saved_case() {
+    let dir = scratch("replay");
+    write(&dir, "subject.wkt", "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)))");
+    write(&dir, "clip.wkt", "MULTIPOLYGON(((1 1,3 1,3 3,1 3,1 1)))");
+    let case = serde_json::json!({
+        "kind": "polygon", "clipper": "clipper2", "check": "disagreement", "other": "geo",
+        "workload": "star", "seed": 1, "index": 0, "window": "any", "op": "union", "fill": "even-odd",
+        "found": "", "shrunk": "", "generated_vertices": [4, 4], "shrunk_vertices": [4, 4],
+        "inputs": ["subject.wkt", "clip.wkt"], "replay": ""
+    });
+    let file = write(&dir, "case.json", &case.to_string());
+    let o = clipbench(&["verify", "--replay", &file]);
+    assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
+    assert!(stdout(&o).starts_with("passes now"), "{}", stdout(&o));
+    let broken = write(&dir, "broken.json", "{\"kind\": 3}");
+    let o = clipbench(&["verify", "--replay", &broken]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("broken.json"), "{}", stderr(&o));
+}
