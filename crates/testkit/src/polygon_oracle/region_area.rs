@@ -206,6 +206,8 @@ struct Sweep<'p, P: Fn(&[bool]) -> bool> {
     gap_kept: Vec<bool>,
     /// Winding counts left of each gap, `layers` per gap.
     gap_windings: Vec<i32>,
+    /// Scratch: the running winding counts and inside flags of a left-to-right walk.
+    windings: Vec<i32>,
     inside: Vec<bool>,
     area: f64,
     best: (f64, Option<Point>),
@@ -221,6 +223,7 @@ impl<'p, P: Fn(&[bool]) -> bool> Sweep<'p, P> {
             gap_start: Vec::new(),
             gap_kept: Vec::new(),
             gap_windings: Vec::new(),
+            windings: vec![0; layers.len()],
             inside: vec![false; layers.len()],
             area: 0.0,
             best: (0.0, None),
@@ -240,8 +243,15 @@ impl<'p, P: Fn(&[bool]) -> bool> Sweep<'p, P> {
         for (k, &e) in order.iter().enumerate() {
             self.position[e] = k;
         }
+        // One running count left to right; only the crossed edge's layer changes per gap.
+        self.windings.iter_mut().for_each(|w| *w = 0);
+        self.inside.iter_mut().for_each(|f| *f = false);
         for k in 0..gaps {
-            self.update_gap(edges, order, k);
+            let e = &edges[order[k]];
+            self.windings[e.layer] += e.wind;
+            self.inside[e.layer] = self.fills[e.layer].is_inside(self.windings[e.layer]);
+            self.gap_windings[k * l..(k + 1) * l].copy_from_slice(&self.windings);
+            self.gap_kept[k] = (self.predicate)(&self.inside);
         }
     }
 

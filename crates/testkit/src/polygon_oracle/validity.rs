@@ -194,12 +194,8 @@ fn side(p: Point, (u, v): (Point, Point), q: Point) -> Option<bool> {
 
 /// Outer rings (even depth) counter-clockwise, holes (odd depth) clockwise.
 fn check_orientation(output: &Polygons) -> Result<(), PolygonFailure> {
-    let bounds: Vec<Rect> = output.rings.iter().map(Ring::bounds).collect();
-    for (r, ring) in output.rings.iter().enumerate() {
-        let depth = (0..output.rings.len())
-            .filter(|&s| s != r && contains_box(&bounds[s], &bounds[r]) && ring_inside(ring, &output.rings[s]))
-            .count();
-        let area = ring.signed_area();
+    for (r, depth) in nesting_depths(output).into_iter().enumerate() {
+        let area = output.rings[r].signed_area();
         let want_ccw = depth % 2 == 0;
         if (area > 0.0) != want_ccw {
             let role = if want_ccw { "an outer ring (depth" } else { "a hole (depth" };
@@ -210,8 +206,64 @@ fn check_orientation(output: &Polygons) -> Result<(), PolygonFailure> {
     Ok(())
 }
 
-fn contains_box(outer: &Rect, inner: &Rect) -> bool {
-    outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.max.x >= inner.max.x && outer.max.y >= inner.max.y
+/// For each ring, how many other rings hold it (rings that do not cross). One exact winding
+/// count per ring, at its first vertex, against every other ring at once: the edges are
+/// bucketed by height, so the vertex meets only the edges at its height. Where the vertex lies
+/// on another ring (they touch there), that pair is decided by [`ring_inside`].
+fn nesting_depths(output: &Polygons) -> Vec<usize> {
+    let rings = &output.rings;
+    let edges: Vec<(Point, Point, usize)> =
+        rings.iter().enumerate().flat_map(|(r, ring)| ring.edges().map(move |e| (e.a, e.b, r))).collect();
+    let b = output.bounds();
+    let count = ((edges.len() as f64).sqrt() as usize).clamp(1, 1024);
+    let height = if b.height() > 0.0 { b.height() / count as f64 } else { 1.0 };
+    let bucket_of = |y: f64| {
+        let k = ((y - b.min.y) / height).floor();
+        if k > 0.0 { (k as usize).min(count - 1) } else { 0 }
+    };
+    let mut buckets: Vec<Vec<u32>> = vec![Vec::new(); count];
+    for (i, &(p, q, _)) in edges.iter().enumerate() {
+        for bucket in &mut buckets[bucket_of(p.y.min(q.y))..=bucket_of(p.y.max(q.y))] {
+            bucket.push(i as u32);
+        }
+    }
+    let mut winding = vec![0i32; rings.len()];
+    let mut touching = vec![false; rings.len()];
+    let mut met: Vec<usize> = Vec::new();
+    let mut depths = Vec::with_capacity(rings.len());
+    for (r, ring) in rings.iter().enumerate() {
+        let Some(&p) = ring.points.first() else {
+            depths.push(0);
+            continue;
+        };
+        for &i in &buckets[bucket_of(p.y)] {
+            let (a, c, s) = edges[i as usize];
+            if s == r || p.y < a.y.min(c.y) || p.y > a.y.max(c.y) || p.x > a.x.max(c.x) {
+                continue;
+            }
+            met.push(s);
+            if on_segment(p, Segment::new(a, c)) {
+                touching[s] = true;
+            } else if a.y <= p.y {
+                if c.y > p.y && orient(a, c, p) == Orientation::CounterClockwise {
+                    winding[s] += 1;
+                }
+            } else if c.y <= p.y && orient(a, c, p) == Orientation::Clockwise {
+                winding[s] -= 1;
+            }
+        }
+        met.sort_unstable();
+        met.dedup();
+        let depth =
+            met.iter().filter(|&&s| if touching[s] { ring_inside(ring, &rings[s]) } else { winding[s] != 0 }).count();
+        depths.push(depth);
+        for &s in &met {
+            winding[s] = 0;
+            touching[s] = false;
+        }
+        met.clear();
+    }
+    depths
 }
 
 /// True when ring `r` lies inside ring `s` (rings that do not cross): decided at the first
