@@ -21,6 +21,20 @@
 //! | trace equations 1.4 and 2.4 | [`State::move_towards`] |
 //! | cyclic list of connected points | [`clip_points`] |
 //!
+//! # Where the walk starts (the one change to the paper)
+//!
+//! As written, the walk takes the list's first point first. When that point is outside, its
+//! previous point (the list's last) is not processed yet; near a corner, with both neighbours
+//! outside, the point's halves then slide back and forth between the two sides towards the
+//! corner, for ever ([`walk_as_written`] shows it, with a step limit). So the walk starts at a
+//! vertex inside the rectangle (rotating a cyclic list changes nothing); if there is none, at a
+//! point where an edge meets the rectangle (decided exactly), inserted into that edge; if no edge
+//! meets the rectangle, the winding number is the same all over it and the answer is the
+//! rectangle traced that many times, or nothing. From an inside start every point's previous
+//! point is finished when the point is taken, and the walk always ends. A consequence: the first
+//! half of a divided point is never removed then, so the "both removed, restart at state one"
+//! rule only fires in [`walk_as_written`].
+//!
 //! # Limits and where the output differs from a true intersection
 //!
 //! - Intersection only; the window must be an axis-aligned rectangle
@@ -31,7 +45,8 @@
 //!   covers the right region (read under the input's fill rule, any of the four, since winding
 //!   numbers inside the rectangle are unchanged) but is not DESIGN.md's conventional output, so
 //!   it is compared by region. An edge that cuts across a corner outside the rectangle becomes a
-//!   path through that corner, as it should.
+//!   path through that corner, as it should. The rectangle is read under the same rule: under
+//!   positive a clockwise rectangle covers nothing (under negative a counter-clockwise one).
 //! - Decisions compare coordinates with the boundary values (exact). Moved points come from the
 //!   paper's trace equations in f64, clamped between the two points; a move onto a next point
 //!   that already lies on the boundary yields that point exactly. Repeated vertices are removed
@@ -58,10 +73,11 @@
 
 mod clipper;
 mod point_list;
+mod start;
 mod state;
 
 pub use clipper::FourState;
-pub use point_list::{Event, clip_points, clip_points_observed};
+pub use point_list::{Event, clip_points, clip_points_observed, walk_as_written};
 pub use state::State;
 
 /// The registry name.

@@ -2,6 +2,7 @@
 
 use clip_core::{Point, Rect};
 
+use crate::start::{WalkStart, enclosed_rectangle, walk_start};
 use crate::state::State;
 
 /// One step of the walk, reported to an observer (the unit tests follow the paper's steps).
@@ -39,27 +40,60 @@ pub enum Event {
     },
 }
 
-/// Clips one closed point list to `rect` by the four-state walk, as the paper writes it.
+/// Clips one closed point list to `rect` by the four-state walk.
 pub fn clip_points(points: &[Point], rect: &Rect) -> Vec<Point> {
     clip_points_observed(points, rect, |_| {})
 }
 
-/// [`clip_points`], reporting every step to `observe`.
+/// [`clip_points`], reporting every step of the walk to `observe`.
 ///
-/// The list is cyclic: the previous point of the first is the last, the next of the last is the
-/// first. `current` is an index into the list; removing the current point makes the following
-/// point current. A point is finished when it is inside the fourth state; the walk ends when
-/// the index runs past the end of the list.
+/// The walk starts at a point inside the rectangle (see the crate docs, "Where the walk
+/// starts", for why and for polygons with none), so every point's previous point is finished (inside all
+/// four states) when the point is taken, and then the walk ends: a half moved towards a finished
+/// point, or towards a fixed next point inside the boundary it was moved onto, stays inside that
+/// boundary from then on, so each half moves at most once per boundary.
+pub fn clip_points_observed(points: &[Point], rect: &Rect, observe: impl FnMut(Event)) -> Vec<Point> {
+    match walk_start(points, rect) {
+        WalkStart::From(mut list) => {
+            // From a start inside, the walk ends long before usize::MAX steps (see above).
+            walk(&mut list, rect, usize::MAX, observe);
+            list
+        }
+        WalkStart::Enclosed { winding } => enclosed_rectangle(rect, winding),
+    }
+}
+
+/// The paper's walk exactly as written, from the list's first point, giving up after
+/// `max_steps` steps (one step per state check). `None` when it gave up.
 ///
-/// It terminates: a half is removed, or slides along the line to its neighbour onto a boundary,
-/// towards the neighbour and never past it (the neighbour is inside that boundary), so a half
-/// that keeps its neighbour moves at most once per boundary; a half made from an already moved
-/// point has its sibling, on the same boundary line, as neighbour, and slides along that line.
-pub fn clip_points_observed(points: &[Point], rect: &Rect, mut observe: impl FnMut(Event)) -> Vec<Point> {
+/// As written, the walk need not end: when the first point lies outside two boundaries near a
+/// corner and its previous point (the list's last, not yet processed) is outside too, the point
+/// slides back and forth between the two sides towards the corner for ever. [`clip_points`]
+/// avoids this by where it starts; this function is kept to show the paper's rules (including
+/// removing both halves and restarting, which only an unprocessed previous point can cause).
+pub fn walk_as_written(
+    points: &[Point],
+    rect: &Rect,
+    max_steps: usize,
+    observe: impl FnMut(Event),
+) -> Option<Vec<Point>> {
     let mut list = points.to_vec();
+    walk(&mut list, rect, max_steps, observe).then_some(list)
+}
+
+/// The walk over the cyclic list: `current` is an index into the list; removing the current
+/// point makes the following point current. A point is finished when it is inside the fourth
+/// state; the walk ends when the index runs past the end of the list. Returns false when it
+/// stopped after `max_steps` steps instead.
+fn walk(list: &mut Vec<Point>, rect: &Rect, max_steps: usize, mut observe: impl FnMut(Event)) -> bool {
     let mut current = 0;
     let mut state = State::MinY;
+    let mut steps = 0usize;
     while current < list.len() {
+        if steps == max_steps {
+            return false;
+        }
+        steps += 1;
         let p = list[current];
         if state.inside(p, rect) {
             observe(Event::Inside { index: current, state });
@@ -104,5 +138,5 @@ pub fn clip_points_observed(points: &[Point], rect: &Rect, mut observe: impl FnM
         // Moved: the current point is inside this boundary and its opposite.
         state = if moved { state.after_move() } else { State::MinY };
     }
-    list
+    true
 }

@@ -1,7 +1,7 @@
 //! The paper's divide / move / remove steps, its restart rules, and bad input.
 
 use clip_core::{BoolOp, ClipError, FillRule, Point, PolygonClipper, Polygons, Rect, Ring, WindowKind};
-use clip_rect_four_state::{Event, FourState, State, clip_points, clip_points_observed};
+use clip_rect_four_state::{Event, FourState, State, clip_points, clip_points_observed, walk_as_written};
 
 fn pts(points: &[(f64, f64)]) -> Vec<Point> {
     points.iter().map(|&p| p.into()).collect()
@@ -80,22 +80,69 @@ fn a_half_whose_next_point_is_outside_is_removed() {
 }
 
 /// Restart rule 2: both halves removed, the following point becomes current and starts over at
-/// state one. The list is cyclic: the first point's previous point is the last.
+/// state one. The list is cyclic: the first point's previous point is the last. Only the walk as
+/// written can get there (its first point is outside, with an unprocessed previous point).
 #[test]
 fn both_halves_removed_restarts_at_state_one_with_the_next_point() {
-    let (events, out) = steps(&[(3.0, 9.0), (1.0, 8.0), (1.0, 1.0), (5.0, 1.0), (5.0, 8.0)], &WINDOW);
+    let mut events = Vec::new();
+    let ring = pts(&[(3.0, 9.0), (1.0, 8.0), (1.0, 1.0), (5.0, 1.0), (5.0, 8.0)]);
+    let out = walk_as_written(&ring, &WINDOW, 1000, |e| events.push(e)).expect("this walk ends");
     assert_eq!(
-        events[..4],
+        events[..5],
         [
             Event::Inside { index: 0, state: State::MinY },
             Event::Divide { index: 0, state: State::MaxY },
             Event::Remove { index: 0, state: State::MaxY },
             Event::Remove { index: 0, state: State::MaxY },
+            Event::Inside { index: 0, state: State::MinY },
         ]
     );
-    assert_eq!(events[4], Event::Inside { index: 0, state: State::MinY });
-    let ring = Ring::new(out).without_repeats();
-    assert_eq!(Ring::new(ring.points).signed_area(), 20.0);
+    assert_eq!(Ring::new(out).without_repeats().signed_area(), 20.0);
+    // Started inside instead, the same ring gives the same region.
+    assert_eq!(Ring::new(clip_points(&ring, &WINDOW)).without_repeats().signed_area(), 20.0);
+}
+
+/// The walk as written does not end when its first point is outside near a corner with an
+/// unprocessed previous point: the point slides towards the corner for ever. Starting inside
+/// (or, with no vertex inside, on an edge that meets the rectangle) fixes it.
+#[test]
+fn the_walk_as_written_can_run_for_ever_and_the_inside_start_ends() {
+    // `star` workload, seed 11, case 7: the first vertex is below MinY and right of MaxX, and
+    // so are, on one side each, its two neighbours.
+    let star = pts(&[
+        (750.80418452633, 378.8410636457391),
+        (794.0672816221211, 589.6885445192668),
+        (605.5448409741575, 610.799312003817),
+        (588.9981655250713, 633.2938266549758),
+        (469.9033653136179, 858.5321602610477),
+        (423.5553188652996, 598.1307028777048),
+        (340.3993534655799, 544.9293029633998),
+        (304.4849270714639, 447.3052151773924),
+        (301.77675362654963, 307.5876281321233),
+        (409.9517618678025, 158.6654463576292),
+        (528.8713461816368, 189.91062396625216),
+        (573.362250672888, 403.0289032403639),
+    ]);
+    let window = Rect::new(330.36974738258743, 546.8760693873827, 731.0205678874562, 808.1777526209058);
+    assert_eq!(walk_as_written(&star, &window, 100_000, |_| {}), None);
+    let out = clip_points(&star, &window);
+    assert!(out.iter().all(|p| window.contains(*p)));
+    assert!(out.contains(&Point::new(window.max.x, window.min.y)), "the corner the walk slid towards");
+    // Every vertex outside, edges crossing the window: the walk starts where an edge meets it,
+    // and gives what the walk as written gives when that one ends.
+    let corner_first = pts(&[(7.0, -1.0), (8.0, 3.0), (3.0, 8.0), (-2.0, 3.0), (2.0, -3.0)]);
+    let as_written = walk_as_written(&corner_first, &WINDOW, 100_000, |_| {}).expect("this one ends");
+    let from_edge = clip_points(&corner_first, &WINDOW);
+    assert_eq!(Ring::new(from_edge).signed_area(), Ring::new(as_written).signed_area());
+    // A square around the window: no edge meets it, so the answer is the window, once, in the
+    // square's sense.
+    let around = pts(&[(-10.0, -10.0), (20.0, -10.0), (20.0, 20.0), (-10.0, 20.0)]);
+    assert_eq!(Ring::new(clip_points(&around, &WINDOW)).signed_area(), 36.0);
+    let reversed: Vec<Point> = around.iter().rev().copied().collect();
+    assert_eq!(Ring::new(clip_points(&reversed, &WINDOW)).signed_area(), -36.0);
+    // Far away: nothing.
+    let far = pts(&[(10.0, 10.0), (20.0, 10.0), (20.0, 20.0)]);
+    assert!(clip_points(&far, &WINDOW).is_empty());
 }
 
 #[test]

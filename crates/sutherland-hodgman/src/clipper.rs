@@ -4,7 +4,7 @@ use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, WindowKind, validate_polygons,
 };
 
-use crate::window::ConvexWindow;
+use crate::window::{ConvexWindow, window_covers};
 use crate::{Form, NAME};
 
 /// Sutherland-Hodgman reentrant clipping of any subject against a convex window
@@ -46,13 +46,18 @@ impl PolygonClipper for SutherlandHodgman {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        // Any fill rule: clipping to half-planes keeps every winding number inside the window, so
-        // the output read under `fill` is the intersection read under `fill`.
-        let _ = fill;
         if op != BoolOp::Intersection {
             return Err(ClipError::Unsupported { clipper: NAME, what: format!("the {op} operation") });
         }
         validate_polygons(subject, Operand::Subject)?;
-        Ok(ConvexWindow::new(clip)?.clip(subject, self.form))
+        let window = ConvexWindow::new(clip)?;
+        // Any fill rule: clipping to half-planes keeps every winding number inside the window, so
+        // the output read under `fill` is the subject read under `fill`, within the window. The
+        // window is read under `fill` too: under positive (negative) a clockwise
+        // (counter-clockwise) window covers nothing.
+        if !window_covers(clip, fill) {
+            return Ok(Polygons::empty());
+        }
+        Ok(window.clip(subject, self.form))
     }
 }

@@ -31,6 +31,8 @@
 //!   does not change the winding number of any point inside the window. So the output, read under
 //!   the *input's* fill rule, is the intersection under that rule, for all four rules (even-odd,
 //!   non-zero, positive, negative). It is not DESIGN.md's conventional output: rings may overlap.
+//!   The window is read under the same rule: under positive a clockwise window covers nothing
+//!   (and under negative a counter-clockwise one), so the result is then empty.
 //! - The known defect is kept, not hidden: when a concave subject's part inside the window falls
 //!   apart, the single output list joins the pieces by zero-width **bridges** along the window.
 //!   They enclose no area, so the harness compares the output by region;
