@@ -1,21 +1,36 @@
 //! The registry: every clipper the harness knows, one line each, with where it comes from.
 //!
 //! To add a clipper, add its crate to harness/Cargo.toml and one line to [`registry`]:
-//! `.polygon(Origin::Ours, REGION_TOLERANCE, clip_vatti::VattiClipper::new())` for a polygon
-//! clipper, `.line(Origin::Ours, 1e-9, ...)` for a line clipper (its tolerance is on the
+//! `.polygon(Origin::Ours, REGION_TOLERANCE, clip_vatti::Vatti)` for a polygon
+//! clipper, `.line(Origin::Ours, LINE_TOLERANCE, ...)` for a line clipper (its tolerance is on the
 //! parameter `t` of piece end points). Its name, operations,
 //! fill rules and windows come from its own `name()` and `capabilities()`, so every command runs
 //! it only where it applies.
 
 use clip_core::{LineClipper, PolygonClipper};
+use clip_cyrus_beck::{CyrusBeck, Liu};
+use clip_rect_four_state::FourState;
+use clip_sutherland_hodgman::SutherlandHodgman;
 use clip_testkit::peers::{Clipper2Clipper, GeoClipper, GeoLineClipper};
-use clip_testkit::polygon_oracle::GEO_TOLERANCE;
+use clip_testkit::polygon_oracle::{GEO_TOLERANCE, REGION_TOLERANCE};
+use clip_vatti::Vatti;
+use clip_virtual_box::VirtualBox;
 
 use crate::cli_error::CliError;
+
+/// Tolerance of our exact line clippers on the parameter `t` of piece end points.
+pub const LINE_TOLERANCE: f64 = 1e-9;
 
 /// Every registered clipper.
 pub fn registry() -> Registry {
     Registry::default()
+        .polygon(Origin::Ours, REGION_TOLERANCE, Vatti)
+        .polygon(Origin::Ours, REGION_TOLERANCE, SutherlandHodgman::default())
+        .polygon(Origin::Ours, REGION_TOLERANCE, FourState)
+        .line(Origin::Ours, LINE_TOLERANCE, CyrusBeck)
+        .line(Origin::Ours, LINE_TOLERANCE, Liu)
+        .line(Origin::Ours, LINE_TOLERANCE, VirtualBox::NEW2)
+        .line(Origin::Ours, LINE_TOLERANCE, VirtualBox::NEW1)
         .polygon(Origin::Peer, GEO_TOLERANCE, GeoClipper::new())
         .line(Origin::Peer, GEO_TOLERANCE, GeoLineClipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
