@@ -39,8 +39,11 @@
 //!   skipped, so a wrong answer thinner than the margin is caught by area only.
 //! - Output validity allows rings to touch at points and different rings to share an edge; it
 //!   rejects proper crossings, crossings at a shared point, and a ring overlapping itself.
-//! - `region_area` is O((n + k) log n)-ish with k the edge crossings: self-intersecting inputs
-//!   of a few hundred edges cost milliseconds; 10^6-vertex smooth inputs well under a second.
+//! - `region_area` costs O(s m + k log k): s distinct vertex heights, m edges crossing a typical
+//!   horizontal line, k edge crossings (found as order inversions per slab, not by a global
+//!   Bentley-Ottmann sweep). Checking a 20-edge pair takes tens of microseconds, a 200-edge
+//!   star pair about half a millisecond, a self-intersecting `scribble` case with a 2000-vertex
+//!   output a few milliseconds, two 10^5-vertex smooth blobs tens of milliseconds.
 //!
 //! # Example
 //!
