@@ -323,3 +323,18 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn dense_output_checks_every_close_pair() {
+    // A 60 x 60 checkerboard: 1800 squares touching at corners is valid output...
+    let case = clip_testkit::workload::polygon_case_sized("large", 1, 1, 7200, WindowKind::Any).unwrap();
+    check_valid_output(&case.subject).unwrap();
+    assert_eq!(bridge_count(&case.subject), 0);
+    // ...until one square is nudged across its neighbour's corner.
+    let mut nudged = case.subject.clone();
+    let p = &mut nudged.rings[900].points[2];
+    p.x += 1e-3;
+    p.y += 1e-3;
+    let e = check_valid_output(&nudged).unwrap_err();
+    assert!(e.to_string().contains("cross"), "{e}");
+}

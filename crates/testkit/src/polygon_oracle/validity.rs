@@ -16,8 +16,7 @@ struct RingEdge {
 }
 
 fn ring_edges(p: &Polygons) -> Vec<RingEdge> {
-    let mut edges: Vec<RingEdge> = p
-        .rings
+    p.rings
         .iter()
         .enumerate()
         .flat_map(|(ring, r)| {
@@ -28,23 +27,49 @@ fn ring_edges(p: &Polygons) -> Vec<RingEdge> {
                 bounds: segment.bounds(),
             })
         })
-        .collect();
-    edges.sort_unstable_by(|a, b| a.bounds.min.x.total_cmp(&b.bounds.min.x));
-    edges
+        .collect()
 }
 
-/// Calls `visit` on every pair of edges whose bounding boxes meet (a sweep over x).
+/// Calls `visit` once on every pair of edges whose bounding boxes meet. The edges are binned
+/// into a uniform grid of about one cell per edge; a pair is visited in the one cell that holds
+/// the lower-left corner of the overlap of their boxes, so dense output (checkerboards of
+/// thousands of squares) costs about linear time rather than quadratic.
 fn for_each_close_pair(
     edges: &[RingEdge],
     mut visit: impl FnMut(&RingEdge, &RingEdge) -> Result<(), PolygonFailure>,
 ) -> Result<(), PolygonFailure> {
+    let b = edges.iter().fold(Rect::EMPTY, |b, e| b.union(e.bounds));
+    if b.is_empty() {
+        return Ok(());
+    }
+    let side = ((edges.len() as f64).sqrt().ceil() as usize).clamp(1, 512);
+    let (cw, ch) = (b.width() / side as f64, b.height() / side as f64);
+    let cell = |v: f64, lo: f64, size: f64| {
+        let k = if size > 0.0 { ((v - lo) / size).floor() } else { 0.0 };
+        if k > 0.0 { (k as usize).min(side - 1) } else { 0 }
+    };
+    let mut cells: Vec<Vec<u32>> = vec![Vec::new(); side * side];
     for (i, e) in edges.iter().enumerate() {
-        for f in &edges[i + 1..] {
-            if f.bounds.min.x > e.bounds.max.x {
-                break;
+        let (x0, x1) = (cell(e.bounds.min.x, b.min.x, cw), cell(e.bounds.max.x, b.min.x, cw));
+        let (y0, y1) = (cell(e.bounds.min.y, b.min.y, ch), cell(e.bounds.max.y, b.min.y, ch));
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                cells[y * side + x].push(i as u32);
             }
-            if e.bounds.intersects(&f.bounds) {
-                visit(e, f)?;
+        }
+    }
+    for (c, members) in cells.iter().enumerate() {
+        for (k, &i) in members.iter().enumerate() {
+            let e = &edges[i as usize];
+            for &j in &members[k + 1..] {
+                let f = &edges[j as usize];
+                if !e.bounds.intersects(&f.bounds) {
+                    continue;
+                }
+                let (lx, ly) = (e.bounds.min.x.max(f.bounds.min.x), e.bounds.min.y.max(f.bounds.min.y));
+                if cell(ly, b.min.y, ch) * side + cell(lx, b.min.x, cw) == c {
+                    visit(e, f)?;
+                }
             }
         }
     }

@@ -90,8 +90,11 @@ pub(crate) fn checkerboard(k: usize, cell: f64, origin: Point) -> Vec<Ring> {
     for i in 0..k {
         for j in 0..k {
             if (i + j).is_multiple_of(2) {
-                let (x, y) = (origin.x + i as f64 * cell, origin.y + j as f64 * cell);
-                rings.push(Rect::new(x, y, x + cell, y + cell).to_ring());
+                // Each corner from its own grid index, so neighbours share corners exactly.
+                let at = |k: usize, o: f64| o + k as f64 * cell;
+                rings.push(
+                    Rect::new(at(i, origin.x), at(j, origin.y), at(i + 1, origin.x), at(j + 1, origin.y)).to_ring(),
+                );
             }
         }
     }
