@@ -2,9 +2,9 @@
 
 use clip_core::{Point, Rect};
 
-/// Code returned by [`AdaptiveBox::code`] for a vertex inside the near-zero band, which needs
-/// the exact line function.
-pub(crate) const NEAR_ZERO: i8 = 2;
+/// In the tests, the code of a vertex inside the near-zero band.
+#[cfg(test)]
+const NEAR_ZERO: i8 = 2;
 
 /// Bound on the rounding of a line ordinate computed as `a_k + (m - a_j) (d_k / d_j)`, relative
 /// to `|a_k| + |m - a_j|` (with `|d_k / d_j| <= 1`): about nine units of roundoff, against about
@@ -70,19 +70,11 @@ impl AdaptiveBox {
         self.steep
     }
 
-    /// Table 2: the code of vertex `v` (+1 left of the segment's line, -1 right) when it lies
-    /// outside the band, else [`NEAR_ZERO`]. `STEEP` must equal [`Self::steep`] (it lets the
-    /// caller's loop be specialised).
-    #[inline(always)]
-    pub fn code<const STEEP: bool>(&self, v: Point) -> i8 {
-        let k = if STEEP { v.x } else { v.y };
-        if k > self.hi {
-            self.beyond_hi
-        } else if k < self.lo {
-            -self.beyond_hi
-        } else {
-            NEAR_ZERO
-        }
+    /// Table 2 as numbers: a vertex whose minor coordinate exceeds `hi` has code `beyond_hi`, one
+    /// below `lo` has `-beyond_hi`, one in `[lo, hi]` (the near-zero band) needs the exact sign.
+    #[inline]
+    pub fn band(&self) -> (f64, f64, i8) {
+        (self.lo, self.hi, self.beyond_hi)
     }
 }
 
@@ -121,7 +113,15 @@ mod tests {
             for x in 0..=10 {
                 for y in 0..=6 {
                     let v = Point::new(f64::from(x), f64::from(y));
-                    let code = if vb.steep() { vb.code::<true>(v) } else { vb.code::<false>(v) };
+                    let (lo, hi, beyond_hi) = vb.band();
+                    let k = if vb.steep() { v.x } else { v.y };
+                    let code = if k > hi {
+                        beyond_hi
+                    } else if k < lo {
+                        -beyond_hi
+                    } else {
+                        NEAR_ZERO
+                    };
                     let o = orient2d(a, b, v);
                     let exact = (o > 0.0) as i8 - (o < 0.0) as i8;
                     assert!(code == NEAR_ZERO || code == exact, "{a:?}->{b:?} at {v:?}: box {code}, exact {exact}");

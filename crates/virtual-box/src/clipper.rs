@@ -79,6 +79,9 @@ pub struct StageCounts {
 #[derive(Clone, Debug)]
 pub struct PreparedVirtualBox {
     points: Vec<Point>,
+    /// The x and the y of `points`, apart, for the box's branch-free pass over one of them.
+    xs: Vec<f64>,
+    ys: Vec<f64>,
     rings: Vec<Range<usize>>,
     meb: Rect,
     rotated: RotatedBox,
@@ -96,10 +99,18 @@ enum Stage {
 }
 
 /// Per-batch working memory, so the per-segment pipeline does not allocate.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 struct Scratch {
     codes: Vec<i8>,
+    sides: Vec<f64>,
     display: DisplayArray,
+}
+
+impl Scratch {
+    fn for_window(w: &PreparedVirtualBox) -> Scratch {
+        let n = w.points.len();
+        Scratch { codes: vec![0; n], sides: vec![0.0; n], display: DisplayArray::default() }
+    }
 }
 
 impl PreparedVirtualBox {
@@ -118,7 +129,8 @@ impl PreparedVirtualBox {
         }
         let meb = window.bounds();
         let rotated = RotatedBox::new(window.points());
-        Ok(PreparedVirtualBox { points, rings, meb, rotated, rotated_box })
+        let (xs, ys) = points.iter().map(|p| (p.x, p.y)).unzip();
+        Ok(PreparedVirtualBox { points, xs, ys, rings, meb, rotated, rotated_box })
     }
 
     /// Clips like [`PreparedWindow::clip_batch`] and reports how many segments each stage
@@ -129,7 +141,7 @@ impl PreparedVirtualBox {
         out: &mut Vec<VisiblePiece>,
     ) -> Result<StageCounts, ClipError> {
         validate_segments(segments)?;
-        let mut scratch = Scratch::default();
+        let mut scratch = Scratch::for_window(self);
         let mut c = StageCounts { segments: segments.len(), ..StageCounts::default() };
         for (index, &s) in segments.iter().enumerate() {
             let stage = if self.rotated_box {
@@ -153,7 +165,7 @@ impl PreparedVirtualBox {
     }
 
     fn clip_all<const ROTATED: bool>(&self, segments: &[Segment], out: &mut Vec<VisiblePiece>) {
-        let mut scratch = Scratch::default();
+        let mut scratch = Scratch::for_window(self);
         for (index, &s) in segments.iter().enumerate() {
             self.clip_one::<ROTATED>(index, s, out, &mut scratch);
         }
@@ -172,23 +184,24 @@ impl PreparedVirtualBox {
         if a == b {
             return Stage::ZeroLength;
         }
-        if meb_rejects(a, b, &self.meb) {
-            return Stage::Meb;
-        }
-        if ROTATED && self.rotated.rejects(a, b) {
-            return Stage::RotatedBox;
+        // Both box tests are a few comparisons: evaluated together, they cost one branch, which
+        // matters more than the comparisons (which box rejected is told apart only then).
+        let meb = meb_rejects(a, b, &self.meb);
+        if meb | (ROTATED && self.rotated.rejects(a, b)) {
+            return if meb { Stage::Meb } else { Stage::RotatedBox };
         }
         let Some(vbox) = AdaptiveBox::new(a, b, &self.meb) else {
             return Stage::VirtualBox;
         };
-        let sum = encode(&self.points, &vbox, a, b, &mut scratch.codes);
+        let minor = if vbox.steep() { &self.xs } else { &self.ys };
+        let sum = encode(minor, &self.points, &vbox, a, b, &mut scratch.codes, &mut scratch.sides);
         // The sum runs over the stored vertices, which repeat each ring's first one: it is ±(their
         // number) exactly when the paper's F = ±N, every vertex strictly on one side.
         if sum.unsigned_abs() as usize == self.points.len() {
             return Stage::CodeSum;
         }
         let frame = LineFrame::new(s);
-        intersect(&self.points, &self.rings, &scratch.codes, &frame, &mut scratch.display);
+        intersect(&self.points, &self.rings, &scratch.codes, &scratch.sides, &frame, &mut scratch.display);
         Stage::Intersected(scratch.display.display(index, &frame, out))
     }
 }

@@ -3,10 +3,10 @@
 use core::ops::Range;
 
 use clip_core::Point;
-use clip_core::predicates::orient2d;
 
 use crate::display::DisplayArray;
 use crate::line_frame::LineFrame;
+use crate::vertex_codes::EXACT;
 
 /// Records in `display` every valid intersection of the segment's line with the window's edges,
 /// from the vertex codes (each ring stored closed: `points[ring.end]` repeats its first vertex).
@@ -18,6 +18,7 @@ pub(crate) fn intersect(
     points: &[Point],
     rings: &[Range<usize>],
     codes: &[i8],
+    sides: &[f64],
     frame: &LineFrame,
     display: &mut DisplayArray,
 ) {
@@ -29,8 +30,11 @@ pub(crate) fn intersect(
             on_line |= cp == 0;
             if cp * cq < 0 {
                 let (p, q) = (points[i], points[i + 1]);
-                let (fp, fq) = (orient2d(frame.a, frame.b, p), orient2d(frame.a, frame.b, q));
-                let (place, t) = frame.edge_crossing(p, q, fp, fq);
+                let (place, t) = if cp.abs() == EXACT && cq.abs() == EXACT {
+                    frame.edge_crossing(p, q, sides[i], sides[i + 1])
+                } else {
+                    frame.edge_crossing_by_edge(p, q, cp > 0)
+                };
                 display.record(place, t);
             }
         }
@@ -53,7 +57,7 @@ pub(crate) fn intersect(
 /// - A ring lying wholly on the line: every edge is boundary along it.
 fn singular(points: &[Point], ring: Range<usize>, codes: &[i8], frame: &LineFrame, display: &mut DisplayArray) {
     let (start, n) = (ring.start, ring.len());
-    let code = |i: usize| codes[start + i % n];
+    let code = |i: usize| codes[start + i % n].signum();
     let point = |i: usize| points[start + i % n];
     let on_line = |p: Point| (frame.place(p), frame.param(p));
     let Some(first_off) = (0..n).find(|&i| code(i) != 0) else {

@@ -89,6 +89,27 @@ impl LineFrame {
         }
     }
 
+    /// As [`Self::edge_crossing`] when the line function at the ends is not at hand (only the side
+    /// of `p`): the parameter is then `ga / (ga - gb)` from the edge function at `a` and `b`.
+    #[inline]
+    pub fn edge_crossing_by_edge(&self, p: Point, q: Point, p_left: bool) -> (Along, f64) {
+        let ga = orient2d(p, q, self.a);
+        if ga == 0.0 {
+            return (Along::AtStart, 0.0);
+        }
+        if (ga > 0.0) == p_left {
+            return (Along::Before, 0.0);
+        }
+        let gb = orient2d(p, q, self.b);
+        if gb == 0.0 {
+            (Along::AtEnd, 1.0)
+        } else if (gb > 0.0) == p_left {
+            (Along::Inside, (ga / (ga - gb)).clamp(0.0, 1.0))
+        } else {
+            (Along::After, 1.0)
+        }
+    }
+
     /// The point at parameter `t`, exactly an endpoint at 0 and 1.
     #[inline]
     pub fn at(&self, t: f64) -> Point {
