@@ -1,8 +1,9 @@
 //! How long the polygon oracle takes per output, at the sizes `verify` runs it on.
 
 use clip_core::{BoolOp, FillRule, WindowKind};
+use clip_testkit::line_oracle::visible_intervals;
 use clip_testkit::polygon_oracle::{OutputRules, REGION_TOLERANCE, check_polygon_op, region_area};
-use clip_testkit::workload::polygon_case_sized;
+use clip_testkit::workload::{WangSize, polygon_case_sized, wang_segments, wang_window};
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 
@@ -29,5 +30,14 @@ fn oracle(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, oracle);
+fn line_oracle(c: &mut Criterion) {
+    // One Table 4 batch: 10000 random segments against a 50-edge concave window.
+    let window = wang_window(50, WangSize::W2, 1, false);
+    let segments = wang_segments(10_000, 1);
+    c.bench_function("visible_intervals wang-t4 50 edges x 10000 segments", |b| {
+        b.iter(|| segments.iter().map(|&s| visible_intervals(black_box(&window), s).len()).sum::<usize>())
+    });
+}
+
+criterion_group!(benches, oracle, line_oracle);
 criterion_main!(benches);
