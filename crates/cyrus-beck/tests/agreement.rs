@@ -1,21 +1,18 @@
 //! Randomized agreement with the exact line oracle on the `wang-t4` and `lines-degenerate`
 //! workloads, and on small integer grids where every incidence is common.
 
-mod common;
-
 use clip_core::{LineClipper, Point, Polygons, Ring, Segment, WindowKind};
 use clip_cyrus_beck::{CyrusBeck, Liu};
+use clip_testkit::line_oracle::{LINE_T_TOLERANCE, check_line_batch};
 use clip_testkit::workload::line_case;
-use common::{assert_intervals, intervals, oracle};
 use proptest::prelude::*;
 
-const TOL: f64 = 1e-9;
-
+/// The clipper's pieces for the batch pass the exact line oracle.
 fn check_batch(clipper: &dyn LineClipper, w: &Polygons, segments: &[Segment], what: &str) {
     let mut out = Vec::new();
     clipper.prepare(w).unwrap().clip_batch(segments, &mut out).unwrap();
-    for (s, got) in segments.iter().zip(intervals(segments, &out)) {
-        assert_intervals(&got, &oracle(w, *s), TOL, &format!("{what}, {}: {s:?} in {w:?}", clipper.name()));
+    if let Err(failure) = check_line_batch(w, segments, &out, LINE_T_TOLERANCE) {
+        panic!("{what}, {}: {failure} in {w:?} with {segments:?}", clipper.name());
     }
 }
 

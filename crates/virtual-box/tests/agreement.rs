@@ -1,34 +1,25 @@
 //! Randomized agreement of New1 and New2 with the exact line oracle and with Liu and Cyrus-Beck,
 //! on the `wang-t4` and `lines-degenerate` workloads and on small integer grids.
 
-mod common;
-
 use clip_core::{LineClipper, Point, Polygons, Ring, Segment, WindowKind};
 use clip_cyrus_beck::{CyrusBeck, Liu};
+use clip_testkit::line_oracle::{LINE_T_TOLERANCE, check_line_batch};
 use clip_testkit::workload::line_case;
 use clip_virtual_box::VirtualBox;
-use common::{assert_intervals, intervals, oracle};
 use proptest::prelude::*;
 
-const TOL: f64 = 1e-9;
-
-fn pieces(clipper: &dyn LineClipper, w: &Polygons, segments: &[Segment]) -> Vec<Vec<(f64, f64)>> {
-    let mut out = Vec::new();
-    clipper.prepare(w).unwrap().clip_batch(segments, &mut out).unwrap();
-    intervals(segments, &out)
-}
-
-/// Every clipper that takes `w` agrees with the oracle on every segment (so they agree with
-/// each other).
+/// Every clipper that takes `w` passes the exact line oracle on the batch (so they agree with
+/// each other within its tolerance).
 fn check_all(w: &Polygons, segments: &[Segment], what: &str) {
     let mut clippers: Vec<&dyn LineClipper> = vec![&VirtualBox::NEW2, &VirtualBox::NEW1, &Liu];
     if CyrusBeck.prepare(w).is_ok() {
         clippers.push(&CyrusBeck);
     }
-    let expected: Vec<_> = segments.iter().map(|&s| oracle(w, s)).collect();
     for c in clippers {
-        for ((s, got), want) in segments.iter().zip(pieces(c, w, segments)).zip(&expected) {
-            assert_intervals(&got, want, TOL, &format!("{what}, {}: {s:?} in {w:?}", c.name()));
+        let mut out = Vec::new();
+        c.prepare(w).unwrap().clip_batch(segments, &mut out).unwrap();
+        if let Err(failure) = check_line_batch(w, segments, &out, LINE_T_TOLERANCE) {
+            panic!("{what}, {}: {failure} in {w:?} with {segments:?}", c.name());
         }
     }
 }
