@@ -1,8 +1,11 @@
-//! clipbench: verify clipping algorithms against exact oracles and peer libraries, and run one
-//! clipping operation on files by hand. One module per command; the clippers are in `registry`.
+//! clipbench: verify clipping algorithms against exact oracles, peer libraries and external
+//! suites, and run one clipping operation on files by hand. One module per command; the
+//! clippers are in `registry`.
 
+mod checks;
 mod cli_error;
 mod clip;
+mod conformance;
 mod read;
 mod registry;
 mod verify;
@@ -26,15 +29,20 @@ enum Command {
     /// Run every registered clipper on the seeded workloads against the exact oracles and each
     /// other; print a summary table and write shrunk failure cases.
     Verify(verify::VerifyArgs),
+    /// Run the registered clippers on an external suite with expected answers (Clipper2's
+    /// Polygons.txt and Lines.txt, geo's boolean-op fixtures).
+    Conformance(conformance::ConformanceArgs),
     /// One boolean operation (or line clipping) on files with a registered clipper.
     Clip(clip::ClipArgs),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    checks::quiet_clipper_panics();
     let registry = registry::registry();
     let result = match &cli.command {
         Command::Verify(args) => verify::run(args, registry),
+        Command::Conformance(args) => conformance::run(args, registry),
         Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
     };
     match result {

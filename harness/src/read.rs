@@ -29,10 +29,7 @@ pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
     let geometries = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
         .map_err(|problem| InputError::new(path, problem))?;
-    let mut shapes = Shapes::default();
-    for g in &geometries {
-        collect(g, &mut shapes).map_err(|problem| InputError::new(path, problem))?;
-    }
+    let shapes = shapes_of(&geometries).map_err(|problem| InputError::new(path, problem))?;
     if shapes.rings.is_empty() && shapes.segments.is_empty() {
         return Err(InputError::new(path, "it holds no polygon and no line string".into()));
     }
@@ -64,7 +61,8 @@ fn is_geojson(path: &Path) -> bool {
     )
 }
 
-fn parse_wkt(text: &str) -> Result<Vec<Geometry<f64>>, String> {
+/// Parses WKT text into a geometry.
+pub fn parse_wkt(text: &str) -> Result<Vec<Geometry<f64>>, String> {
     let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
     let geometry = Geometry::try_from(wkt).map_err(|e| format!("unusable WKT: {e}"))?;
     Ok(vec![geometry])
@@ -74,6 +72,13 @@ fn parse_geojson(text: &str) -> Result<Vec<Geometry<f64>>, String> {
     let json = geojson::GeoJson::from_str(text).map_err(|e| format!("not valid GeoJSON: {e}"))?;
     let collection = geo::GeometryCollection::<f64>::try_from(&json).map_err(|e| format!("unusable GeoJSON: {e}"))?;
     Ok(collection.0)
+}
+
+/// The rings and segments of some geometries, in order.
+pub fn shapes_of(geometries: &[Geometry<f64>]) -> Result<Shapes, String> {
+    let mut shapes = Shapes::default();
+    geometries.iter().try_for_each(|g| collect(g, &mut shapes))?;
+    Ok(shapes)
 }
 
 /// Adds a geometry's rings and segments; points are refused (they have no area and no length).

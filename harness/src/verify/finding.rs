@@ -3,8 +3,8 @@
 
 use clip_core::{BoolOp, FillRule, WindowKind};
 
-use super::checks::Check;
 use super::summary::Row;
+use crate::checks::Check;
 use crate::registry::Origin;
 
 /// Polygon operation or line clipping.

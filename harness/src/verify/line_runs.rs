@@ -4,9 +4,9 @@
 use clip_core::{VisiblePiece, WindowKind};
 use clip_testkit::workload::line_case;
 
-use super::checks::{Check, line_oracle, lines_agree, run_line};
 use super::finding::{CaseOutcome, Finding, Kind};
 use super::polygon_runs::{takes, variants};
+use crate::checks::{Check, line_oracle, lines_agree, run_line};
 use crate::registry::{LineEntry, Origin};
 
 /// What to run on every line case.

@@ -2,7 +2,6 @@
 //! supports, against the exact oracles and against each other, in parallel and deterministic per
 //! seed whatever the thread count.
 
-mod checks;
 mod finding;
 mod line_runs;
 mod polygon_runs;

@@ -5,8 +5,8 @@ use clip_core::{BoolOp, FillRule, Polygons, WindowKind};
 use clip_testkit::polygon_oracle::bridge_count;
 use clip_testkit::workload::polygon_case;
 
-use super::checks::{Check, area_identities, polygon_oracle, polygons_agree, run_polygon};
 use super::finding::{CaseOutcome, Finding, Kind};
+use crate::checks::{Check, area_identities, polygon_oracle, polygons_agree, run_polygon};
 use crate::registry::{Origin, PolygonEntry};
 
 /// What to run on every polygon case.

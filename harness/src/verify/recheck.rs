@@ -3,7 +3,7 @@
 
 use clip_core::{BoolOp, FillRule, Operand, Polygons, Segment, validate_polygons, validate_segments, validate_window};
 
-use super::checks::{
+use crate::checks::{
     Check, area_identities, line_oracle, lines_agree, polygon_oracle, polygons_agree, run_line, run_polygon,
 };
 use crate::registry::Registry;

@@ -9,10 +9,10 @@ use clip_testkit::shrink::{shrink_polygons, shrink_segments};
 use clip_testkit::workload::{line_case, polygon_case};
 use serde::{Deserialize, Serialize};
 
-use super::checks::{Check, run_line, run_polygon};
 use super::finding::{Finding, Kind, window_name};
 use super::polygon_runs::takes;
 use super::recheck::{Target, line_failure, polygon_failure};
+use crate::checks::{Check, run_line, run_polygon};
 use crate::cli_error::CliError;
 use crate::registry::Registry;
 use crate::write::write_file;

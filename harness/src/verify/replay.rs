@@ -5,9 +5,9 @@ use std::process::ExitCode;
 
 use clip_core::{BoolOp, FillRule, Operand};
 
-use super::checks::Check;
 use super::recheck::{Target, line_failure, polygon_failure};
 use super::record::CaseFile;
+use crate::checks::Check;
 use crate::cli_error::{CliError, InputError};
 use crate::read::{read_polygons, read_segments};
 use crate::registry::{Registry, unknown_clipper};

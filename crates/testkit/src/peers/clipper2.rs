@@ -9,22 +9,34 @@ use clipper2::{Clipper, FillRule as C2Fill, One, Path, Paths, Point as C2Point};
 /// Clipper2's boolean operations: all four ops under all four fill rules.
 ///
 /// Clipper2 works on 64-bit integers. The crate's default scaler rounds to 0.01, far too coarse
-/// for unit-sized or grid inputs, so each call picks its own power-of-two scale that maps the
-/// largest input coordinate magnitude to just under [`Clipper2Clipper::GRID_BITS`] bits: the
-/// rounding step is then about extent x 2^-30 (like geo's snapping), and descaling the output is
-/// exact. Every ring is passed in order with its orientation; Clipper2 reads counter-clockwise
+/// for unit-sized or grid inputs, so each call moves the inputs' bounding-box centre to the
+/// origin and picks its own power-of-two scale that maps the largest distance from it to just
+/// under [`Clipper2Clipper::GRID_BITS`] bits: the rounding step is then about extent x 2^-30
+/// (like geo's snapping) wherever the inputs sit, and the output is moved back. Every ring is passed in order with its orientation; Clipper2 reads counter-clockwise
 /// loops as +1, as we do, and returns outers counter-clockwise and holes clockwise (positive area
 /// for outers, y up), which is our convention, so the output is converted ring by ring.
+///
+/// [`Clipper2Clipper::native`] skips the scaling: coordinates are rounded to integers and used
+/// as they are, which is how Clipper2's own tests run their integer data (`Polygons.txt`). The
+/// scale matters beyond precision: Clipper2 drops output rings of tiny area in its integer
+/// space, so path counts depend on it.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Clipper2Clipper;
+pub struct Clipper2Clipper {
+    native: bool,
+}
 
 impl Clipper2Clipper {
     /// Bits of the integer grid the inputs' extent is scaled to.
     pub const GRID_BITS: i32 = 30;
 
-    /// The adapter (it holds no state).
+    /// The adapter on a grid scaled to the inputs' extent.
     pub fn new() -> Clipper2Clipper {
-        Clipper2Clipper
+        Clipper2Clipper { native: false }
+    }
+
+    /// The adapter on the unscaled integer grid (Clipper64 on coordinates rounded to integers).
+    pub fn native() -> Clipper2Clipper {
+        Clipper2Clipper { native: true }
     }
 }
 
@@ -38,7 +50,14 @@ fn grid_scale(extent: f64) -> f64 {
     2f64.powi(Clipper2Clipper::GRID_BITS - exponent)
 }
 
-fn to_paths(p: &Polygons, scale: f64) -> Paths<One> {
+/// Where the integer grid sits: `integer = round((coordinate - origin) * scale)`.
+#[derive(Clone, Copy, Debug)]
+struct Grid {
+    origin: clip_core::Point,
+    scale: f64,
+}
+
+fn to_paths(p: &Polygons, grid: Grid) -> Paths<One> {
     Paths::new(
         p.rings
             .iter()
@@ -46,7 +65,10 @@ fn to_paths(p: &Polygons, scale: f64) -> Paths<One> {
                 Path::new(
                     r.points
                         .iter()
-                        .map(|q| C2Point::from_scaled((q.x * scale).round() as i64, (q.y * scale).round() as i64))
+                        .map(|q| {
+                            let (x, y) = ((q.x - grid.origin.x) * grid.scale, (q.y - grid.origin.y) * grid.scale);
+                            C2Point::from_scaled(x.round() as i64, y.round() as i64)
+                        })
                         .collect(),
                 )
             })
@@ -54,14 +76,17 @@ fn to_paths(p: &Polygons, scale: f64) -> Paths<One> {
     )
 }
 
-fn from_paths(paths: &Paths<One>, scale: f64) -> Polygons {
+fn from_paths(paths: &Paths<One>, grid: Grid) -> Polygons {
     Polygons::new(
         paths
             .iter()
             .map(|path| {
                 Ring::new(
                     path.iter()
-                        .map(|q| clip_core::Point::new(q.x_scaled() as f64 / scale, q.y_scaled() as f64 / scale))
+                        .map(|q| {
+                            let (x, y) = (q.x_scaled() as f64 / grid.scale, q.y_scaled() as f64 / grid.scale);
+                            clip_core::Point::new(x + grid.origin.x, y + grid.origin.y)
+                        })
                         .collect(),
                 )
             })
@@ -96,9 +121,18 @@ impl PolygonClipper for Clipper2Clipper {
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        let extent = subject.points().chain(clip.points()).fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
-        let scale = grid_scale(extent);
-        let clipper = Clipper::<_, One>::new().add_subject(to_paths(subject, scale)).add_clip(to_paths(clip, scale));
+        let grid = if self.native {
+            Grid { origin: clip_core::Point::ZERO, scale: 1.0 }
+        } else {
+            let b = subject.bounds().union(clip.bounds());
+            let origin = if b.is_empty() { clip_core::Point::ZERO } else { b.min.lerp(b.max, 0.5) };
+            let extent = subject
+                .points()
+                .chain(clip.points())
+                .fold(0.0f64, |m, q| m.max((q.x - origin.x).abs()).max((q.y - origin.y).abs()));
+            Grid { origin, scale: grid_scale(extent) }
+        };
+        let clipper = Clipper::<_, One>::new().add_subject(to_paths(subject, grid)).add_clip(to_paths(clip, grid));
         let fill = c2_fill(fill);
         let result = match op {
             BoolOp::Intersection => clipper.intersect(fill),
@@ -107,7 +141,7 @@ impl PolygonClipper for Clipper2Clipper {
             BoolOp::Xor => clipper.xor(fill),
         };
         match result {
-            Ok(paths) => Ok(from_paths(&paths, scale)),
+            Ok(paths) => Ok(from_paths(&paths, grid)),
             Err(e) => Err(ClipError::Unsupported { clipper: "clipper2", what: format!("this input (Clipper2: {e})") }),
         }
     }
@@ -135,7 +169,7 @@ mod tests {
     fn small_coordinates_are_not_rounded_to_hundredths() {
         let a = Polygons::from(square(0.0, 0.0, 0.003));
         let b = Polygons::from(square(0.001, 0.001, 0.003));
-        let out = Clipper2Clipper.clip(&a, &b, BoolOp::Intersection, FillRule::NonZero).unwrap();
+        let out = Clipper2Clipper::new().clip(&a, &b, BoolOp::Intersection, FillRule::NonZero).unwrap();
         assert!((out.signed_area() - 4e-6).abs() < 1e-12, "{out:?}");
     }
 
@@ -144,7 +178,7 @@ mod tests {
         // Clockwise input: the difference is a square with a square hole.
         let a = Polygons::from(square(0.0, 0.0, 4.0).reversed());
         let b = Polygons::from(square(1.0, 1.0, 2.0).reversed());
-        let out = Clipper2Clipper.clip(&a, &b, BoolOp::Difference, FillRule::NonZero).unwrap();
+        let out = Clipper2Clipper::new().clip(&a, &b, BoolOp::Difference, FillRule::NonZero).unwrap();
         let mut areas: Vec<f64> = out.rings.iter().map(Ring::signed_area).collect();
         areas.sort_by(f64::total_cmp);
         assert_eq!(areas, vec![-4.0, 16.0]);
@@ -155,8 +189,9 @@ mod tests {
         let ccw = Polygons::from(square(0.0, 0.0, 1.0));
         let cw = Polygons::from(square(0.0, 0.0, 1.0).reversed());
         let other = Polygons::from(square(5.0, 5.0, 1.0));
-        let area =
-            |p: &Polygons, fill| Clipper2Clipper.clip(p, &other, BoolOp::Difference, fill).unwrap().signed_area();
+        let area = |p: &Polygons, fill| {
+            Clipper2Clipper::new().clip(p, &other, BoolOp::Difference, fill).unwrap().signed_area()
+        };
         assert_eq!(area(&ccw, FillRule::Positive), 1.0);
         assert_eq!(area(&ccw, FillRule::Negative), 0.0);
         assert_eq!(area(&cw, FillRule::Positive), 0.0);
@@ -170,23 +205,42 @@ mod tests {
         let expected =
             [(BoolOp::Intersection, 1.0), (BoolOp::Union, 7.0), (BoolOp::Difference, 3.0), (BoolOp::Xor, 6.0)];
         for (op, area) in expected {
-            let out = Clipper2Clipper.clip(&a, &b, op, FillRule::EvenOdd).unwrap();
+            let out = Clipper2Clipper::new().clip(&a, &b, op, FillRule::EvenOdd).unwrap();
             assert_eq!(out.signed_area(), area, "{op}");
         }
     }
 
     #[test]
+    fn far_from_the_origin_the_grid_follows_the_extent() {
+        // UTM-like coordinates: a grid scaled to the magnitude (1e6) would round to 1e-3.
+        let a = Polygons::from(square(500_000.0, 4_000_000.0, 0.003));
+        let b = Polygons::from(square(500_000.001, 4_000_000.001, 0.003));
+        let out = Clipper2Clipper::new().clip(&a, &b, BoolOp::Intersection, FillRule::NonZero).unwrap();
+        assert!((out.signed_area() - 4e-6).abs() < 1e-12, "{out:?}");
+    }
+
+    #[test]
+    fn native_grid_rounds_to_integers() {
+        let a = Polygons::from(square(0.0, 0.0, 2.0));
+        let b = Polygons::from(Ring::from(&[(1.0, 1.0), (3.4, 1.0), (3.4, 3.4), (1.0, 3.4)][..]));
+        let out = Clipper2Clipper::native().clip(&a, &b, BoolOp::Union, FillRule::NonZero).unwrap();
+        assert!(out.points().all(|p| p.x.fract() == 0.0 && p.y.fract() == 0.0), "{out:?}");
+        assert_eq!(out.signed_area(), 7.0);
+    }
+
+    #[test]
     fn empty_operands_and_bad_input() {
         let a = Polygons::from(square(0.0, 0.0, 2.0));
-        let out = Clipper2Clipper.clip(&Polygons::empty(), &a, BoolOp::Union, FillRule::NonZero).unwrap();
+        let out = Clipper2Clipper::new().clip(&Polygons::empty(), &a, BoolOp::Union, FillRule::NonZero).unwrap();
         assert_eq!(out.signed_area(), 4.0);
-        let out =
-            Clipper2Clipper.clip(&Polygons::empty(), &Polygons::empty(), BoolOp::Union, FillRule::NonZero).unwrap();
+        let out = Clipper2Clipper::new()
+            .clip(&Polygons::empty(), &Polygons::empty(), BoolOp::Union, FillRule::NonZero)
+            .unwrap();
         assert!(out.is_empty());
         let bad =
             Polygons::from(Ring::new(vec![Point::new(0.0, 0.0), Point::new(f64::INFINITY, 1.0), Point::new(1.0, 0.0)]));
         assert!(matches!(
-            Clipper2Clipper.clip(&a, &bad, BoolOp::Union, FillRule::EvenOdd),
+            Clipper2Clipper::new().clip(&a, &bad, BoolOp::Union, FillRule::EvenOdd),
             Err(ClipError::NonFinite { operand: Operand::Clip, .. })
         ));
     }

@@ -1,5 +1,9 @@
-//! The checks verify applies to one result: the oracle, the area identities, agreement between two
-//! clippers; shared by the runs, the shrinker's predicate and `--replay`.
+//! The checks applied to one result: the oracle, the area identities, agreement between two
+//! clippers; shared by verify (runs, shrinking, `--replay`) and conformance.
+
+use std::cell::Cell;
+use std::panic::AssertUnwindSafe;
+use std::sync::Once;
 
 use clip_core::{BoolOp, FillRule, Polygons, Segment, VisiblePiece};
 use clip_testkit::line_oracle::{check_line_batch, pieces_to_intervals};
@@ -39,6 +43,41 @@ pub fn output_rules(entry: &PolygonEntry, fill: FillRule) -> OutputRules {
     }
 }
 
+thread_local! {
+    /// True while this thread runs a clipper under [`guarded`].
+    static INSIDE_CLIPPER: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Installs, once, a panic hook that stays quiet for panics [`guarded`] catches around a clipper
+/// call (they become failure messages) and reports every other panic as before.
+pub fn quiet_clipper_panics() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if !INSIDE_CLIPPER.with(Cell::get) {
+                previous(info);
+            }
+        }));
+    });
+}
+
+/// Runs a clipper call; a panic (a peer library's bug, or ours) becomes a failure message, so one
+/// bad case does not end a whole run.
+fn guarded<T>(call: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+    INSIDE_CLIPPER.with(|c| c.set(true));
+    let result = std::panic::catch_unwind(AssertUnwindSafe(call));
+    INSIDE_CLIPPER.with(|c| c.set(false));
+    result.unwrap_or_else(|payload| {
+        let message = payload
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "a non-text payload".into());
+        Err(format!("panicked: {message}"))
+    })
+}
+
 /// Runs a polygon clipper; a refusal of (valid, supported) input is a failure message.
 pub fn run_polygon(
     entry: &PolygonEntry,
@@ -47,7 +86,7 @@ pub fn run_polygon(
     op: BoolOp,
     fill: FillRule,
 ) -> Result<Polygons, String> {
-    entry.clipper.clip(subject, clip, op, fill).map_err(|e| format!("refused: {e}"))
+    guarded(|| entry.clipper.clip(subject, clip, op, fill).map_err(|e| format!("refused: {e}")))
 }
 
 /// The oracle's verdict on one polygon result.
@@ -95,10 +134,12 @@ pub fn polygons_agree(
 
 /// Runs a line clipper on a batch; a refusal of a valid window is a failure message.
 pub fn run_line(entry: &LineEntry, window: &Polygons, segments: &[Segment]) -> Result<Vec<VisiblePiece>, String> {
-    let prepared = entry.clipper.prepare(window).map_err(|e| format!("refused the window: {e}"))?;
-    let mut pieces = Vec::new();
-    prepared.clip_batch(segments, &mut pieces).map_err(|e| format!("refused the segments: {e}"))?;
-    Ok(pieces)
+    guarded(|| {
+        let prepared = entry.clipper.prepare(window).map_err(|e| format!("refused the window: {e}"))?;
+        let mut pieces = Vec::new();
+        prepared.clip_batch(segments, &mut pieces).map_err(|e| format!("refused the segments: {e}"))?;
+        Ok(pieces)
+    })
 }
 
 /// The line oracle's verdict on a batch.
