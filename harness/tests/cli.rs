@@ -206,3 +206,44 @@ fn replay_reruns_a_saved_case() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("broken.json"), "{}", stderr(&o));
 }
+
+#[test]
+fn conformance_suites_run_and_print_a_closing_line_per_clipper() {
+    let dir = scratch("conformance");
+    let o = clipbench(&["conformance", "clipper2-polygons", "--clipper", "clipper2"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).lines().any(|l| l == "clipper2: 195 passed, 0 failed"), "{}", stdout(&o));
+    let o = clipbench(&["conformance", "clipper2-lines", "--clipper", "geo"]);
+    assert!(stdout(&o).lines().any(|l| l.starts_with("geo: 15 passed, 0 failed")), "{}", stdout(&o));
+    let o = clipbench(&["conformance", "geo-booleanop", "--clipper", "geo", "--clipper", "clipper2"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).lines().any(|l| l.starts_with("geo: ") && l.contains(" passed, ")), "{}", stdout(&o));
+    // One case by name, with a picture.
+    let svg = dir.join("168.svg");
+    let o = clipbench(&[
+        "conformance",
+        "clipper2-polygons",
+        "--clipper",
+        "clipper2",
+        "--case",
+        "168",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(stdout(&o).contains("clipper2: 1 passed, 0 failed"), "{}", stdout(&o));
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+    // A malformed record is that case's failure; a missing file is an error naming it.
+    std::fs::create_dir_all(dir.join("clipper2")).unwrap();
+    write(
+        &dir.join("clipper2"),
+        "Polygons.txt",
+        "CAPTION: 1.\nCLIPTYPE: UNION\nFILLRULE: EVENODD\nSUBJECTS\n0,0, 4,0, 4\n",
+    );
+    let data = dir.to_str().unwrap();
+    let o = clipbench(&["conformance", "clipper2-polygons", "--clipper", "clipper2", "--testdata", data]);
+    assert!(stdout(&o).contains("Polygons.txt:5: odd number of coordinates"), "{}", stdout(&o));
+    assert!(stdout(&o).contains("clipper2: 0 passed, 1 failed"), "{}", stdout(&o));
+    let o = clipbench(&["conformance", "clipper2-lines", "--testdata", data]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("Lines.txt") && stderr(&o).contains("cannot read"), "{}", stderr(&o));
+}
