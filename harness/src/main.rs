@@ -2,12 +2,18 @@
 //! suites, and run one clipping operation on files by hand. One module per command; the
 //! clippers are in `registry`.
 
+mod bench;
 mod checks;
 mod cli_error;
 mod clip;
 mod conformance;
+mod measure;
+mod papers;
+mod plot;
 mod read;
 mod registry;
+mod report;
+mod reproduce;
 mod verify;
 mod write;
 
@@ -34,6 +40,14 @@ enum Command {
     Conformance(conformance::ConformanceArgs),
     /// One boolean operation (or line clipping) on files with a registered clipper.
     Clip(clip::ClipArgs),
+    /// The papers' performance tables (Vatti 1992 Table 3, Wang et al. 2005 Table 4) measured
+    /// here beside the papers' own numbers: raw CSV, markdown, SVG plots and REPORT.md.
+    Reproduce(reproduce::ReproduceArgs),
+    /// Every polygon clipper against geo and Clipper2 on the workloads, as ratios measured in one
+    /// run, with log-log scaling plots and peak memory of the large cases.
+    Bench(bench::BenchArgs),
+    /// Recompute the tables and plots from the raw CSVs of a results folder into REPORT.md.
+    Report(report::ReportArgs),
 }
 
 fn main() -> ExitCode {
@@ -44,6 +58,9 @@ fn main() -> ExitCode {
         Command::Verify(args) => verify::run(args, registry),
         Command::Conformance(args) => conformance::run(args, registry),
         Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
+        Command::Reproduce(args) => reproduce::run(args),
+        Command::Bench(args) => bench::run(args, &registry),
+        Command::Report(args) => report::run(args),
     };
     match result {
         Ok(code) => code,

@@ -41,8 +41,7 @@ impl Group {
 /// quick); rectangle windows over `star` and `large` smooth subjects, intersection only.
 pub fn groups(quick: bool) -> Vec<Group> {
     let small: Vec<usize> = if quick { vec![4, 20, 100, 200] } else { vec![4, 10, 20, 40, 100, 200] };
-    let large: Vec<usize> =
-        if quick { vec![1_000, 10_000, 100_000] } else { vec![1_000, 10_000, 100_000, 1_000_000] };
+    let large: Vec<usize> = if quick { vec![1_000, 10_000, 100_000] } else { vec![1_000, 10_000, 100_000, 1_000_000] };
     let cases: Vec<usize> = if quick { vec![0, 1] } else { vec![0, 1, 2] };
     let all = BoolOp::ALL.to_vec();
     let any = |label, workload| Group {

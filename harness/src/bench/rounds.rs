@@ -71,7 +71,7 @@ struct Stopped {
 /// Runs every group.
 pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result<Measured, CliError> {
     let points: usize = groups.iter().map(|g| g.sizes.len() * g.ops.len()).sum();
-    let progress = bar(points, "bench");
+    let mut progress = bar(points, "bench");
     let mut measured = Measured { rows: Vec::new(), memory: Vec::new(), notes: Vec::new() };
     let mut memory_available = true;
     for group in groups {
@@ -118,8 +118,10 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                             let over = single.as_secs_f64() > settings.cap_seconds;
                             timed_here.push((c, single, over));
                             if over {
-                                let reason =
-                                    format!("one call took {single:.2?} at {size} edges, over the {} s cap", settings.cap_seconds);
+                                let reason = format!(
+                                    "one call took {single:.2?} at {size} edges, over the {} s cap",
+                                    settings.cap_seconds
+                                );
                                 stopped.insert(c.name(), Stopped { size: size + 1, reason });
                             }
                         }
@@ -147,7 +149,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                         }
                     }
                 }
-                progress.inc(1);
+                progress.inc();
             }
         }
         for (name, s) in stopped {
@@ -159,7 +161,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
             measured.notes.push(format!("{}: {name}: {}; {from}.", group.label, s.reason));
         }
     }
-    progress.finish_and_clear();
+    progress.finish();
     if !memory_available {
         measured.notes.push(
             "Peak memory unavailable: /proc/self/clear_refs could not be written (not Linux, or /proc is read-only)."

@@ -1,20 +1,53 @@
-//! Progress bars for long steps: drawn on a terminal, replaced by one line per step elsewhere.
+//! Progress of long steps: a bar on a terminal; elsewhere one line per tenth done, so logs show
+//! that a long run is alive without filling up.
 
 use std::io::IsTerminal;
 
 use indicatif::{ProgressBar, ProgressStyle};
 
-/// A bar of `len` steps labelled `what`; hidden (with the label printed once) when standard
-/// error is not a terminal, so logs stay readable.
-pub fn bar(len: usize, what: &str) -> ProgressBar {
-    if !std::io::stderr().is_terminal() {
+/// Progress through `len` steps of one long step.
+pub struct Progress {
+    bar: ProgressBar,
+    what: String,
+    len: usize,
+    done: usize,
+    terminal: bool,
+}
+
+impl Progress {
+    /// One step done.
+    pub fn inc(&mut self) {
+        self.done += 1;
+        self.bar.inc(1);
+        if !self.terminal && self.len >= 10 && (self.done * 10 / self.len) > ((self.done - 1) * 10 / self.len) {
+            eprintln!("clipbench: {}: {}/{} done", self.what, self.done, self.len);
+        }
+    }
+
+    /// What is being done now (shown on the bar only).
+    pub fn set_message(&self, message: String) {
+        self.bar.set_message(message);
+    }
+
+    /// Removes the bar.
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+/// Progress of `len` steps labelled `what`.
+pub fn bar(len: usize, what: &str) -> Progress {
+    let terminal = std::io::stderr().is_terminal();
+    let bar = if terminal {
+        let bar = ProgressBar::new(len as u64);
+        let template = format!("{what} {{bar:40}} {{pos}}/{{len}} {{msg}} {{elapsed}} elapsed, eta {{eta}}");
+        if let Ok(style) = ProgressStyle::with_template(&template) {
+            bar.set_style(style);
+        }
+        bar
+    } else {
         eprintln!("clipbench: {what} ({len} steps)");
-        return ProgressBar::hidden();
-    }
-    let bar = ProgressBar::new(len as u64);
-    let template = format!("{what} {{bar:40}} {{pos}}/{{len}} {{msg}} {{elapsed}} elapsed, eta {{eta}}");
-    if let Ok(style) = ProgressStyle::with_template(&template) {
-        bar.set_style(style);
-    }
-    bar
+        ProgressBar::hidden()
+    };
+    Progress { bar, what: what.to_owned(), len, done: 0, terminal }
 }

@@ -67,14 +67,16 @@ impl Provenance {
     pub fn write(&self, path: &Path) -> Result<(), CliError> {
         let text = serde_json::to_string_pretty(self)
             .map_err(|e| CliError::failed(format!("{}: cannot encode ({e})", path.display())))?;
-        std::fs::write(path, text + "\n").map_err(|e| CliError::failed(format!("{}: cannot write ({e})", path.display())))
+        std::fs::write(path, text + "\n")
+            .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", path.display())))
     }
 
     /// Reads a sidecar written by [`Provenance::write`].
     pub fn read(path: &Path) -> Result<Provenance, CliError> {
         let text = std::fs::read_to_string(path)
             .map_err(|e| CliError::failed(format!("{}: cannot read ({e})", path.display())))?;
-        serde_json::from_str(&text).map_err(|e| CliError::failed(format!("{}: not a result sidecar ({e})", path.display())))
+        serde_json::from_str(&text)
+            .map_err(|e| CliError::failed(format!("{}: not a result sidecar ({e})", path.display())))
     }
 }
 

@@ -74,7 +74,7 @@ impl Chart {
             .y_label_area_size(80)
             .build_cartesian_2d(x, y)?;
         ctx.configure_mesh()
-            .x_labels(10)
+            .x_labels(6)
             .y_labels(10)
             .x_label_formatter(&tick)
             .y_label_formatter(&tick)
@@ -164,8 +164,18 @@ mod tests {
             log_x: true,
             log_y: true,
             series: vec![
-                Series { label: "ours".into(), colour: RGBColor(1, 2, 3), points: vec![(4.0, 1.0), (200.0, 50.0)], paper: false },
-                Series { label: "paper".into(), colour: RGBColor(3, 2, 1), points: vec![(4.0, 2.0), (200.0, 40.0)], paper: true },
+                Series {
+                    label: "ours".into(),
+                    colour: RGBColor(1, 2, 3),
+                    points: vec![(4.0, 1.0), (200.0, 50.0)],
+                    paper: false,
+                },
+                Series {
+                    label: "paper".into(),
+                    colour: RGBColor(3, 2, 1),
+                    points: vec![(4.0, 2.0), (200.0, 40.0)],
+                    paper: true,
+                },
             ],
         };
         chart.write_svg(&path).unwrap();

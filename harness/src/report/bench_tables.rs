@@ -28,6 +28,9 @@ pub struct Point {
     pub rounds: usize,
 }
 
+/// Each case's median time per call and rounds behind it: (case, ns, rounds).
+type CaseTimes = Vec<(String, f64, usize)>;
+
 /// Points keyed by (group, op, size, clipper).
 pub type Points = BTreeMap<(String, String, usize, String), Point>;
 
@@ -46,7 +49,7 @@ pub fn points(rows: &[Measurement]) -> Points {
             .push(r.time_ns);
     }
     let medians: BTreeMap<_, (f64, usize)> = per_case.into_iter().map(|(k, v)| (k, (median(&v), v.len()))).collect();
-    let mut grouped: BTreeMap<(String, String, usize, String), Vec<(String, f64, usize)>> = BTreeMap::new();
+    let mut grouped: BTreeMap<(String, String, usize, String), CaseTimes> = BTreeMap::new();
     for ((g, op, size, clipper, case), (t, n)) in &medians {
         grouped.entry((g.clone(), op.clone(), *size, clipper.clone())).or_default().push((case.clone(), *t, *n));
     }
@@ -82,10 +85,8 @@ fn order(rows: &[Measurement], pick: impl Fn(&Measurement) -> &str) -> Vec<Strin
 fn group_table(points: &Points, group: &str, op: &str, clippers: &[String]) -> Option<String> {
     let sizes: BTreeSet<usize> =
         points.keys().filter(|(g, o, _, _)| g == group && o == op).map(|(_, _, s, _)| *s).collect();
-    let present: Vec<&String> = clippers
-        .iter()
-        .filter(|c| points.keys().any(|(g, o, _, k)| g == group && o == op && k == *c))
-        .collect();
+    let present: Vec<&String> =
+        clippers.iter().filter(|c| points.keys().any(|(g, o, _, k)| g == group && o == op && k == *c)).collect();
     if sizes.is_empty() {
         return None;
     }
@@ -138,11 +139,8 @@ pub fn vatti_ratios(points: &Points, groups: &[String]) -> String {
     let op = "intersection";
     let mut text = String::new();
     for g in groups {
-        let sizes: BTreeSet<usize> = points
-            .keys()
-            .filter(|(gg, o, _, c)| gg == g && o == op && c == "vatti")
-            .map(|(_, _, s, _)| *s)
-            .collect();
+        let sizes: BTreeSet<usize> =
+            points.keys().filter(|(gg, o, _, c)| gg == g && o == op && c == "vatti").map(|(_, _, s, _)| *s).collect();
         let Some(&largest) = sizes.last() else { continue };
         let mut parts = Vec::new();
         for s in [4, 20, 100, 200, largest].into_iter().filter(|s| sizes.contains(s)).collect::<BTreeSet<_>>() {
@@ -174,7 +172,9 @@ fn memory_table(records: &[MemoryRecord], clippers: &[String]) -> Option<String>
         .iter()
         .map(|((g, s), by)| {
             let mut cells = vec![g.clone(), s.to_string()];
-            cells.extend(present.iter().map(|c| by.get(*c).map_or("skipped".to_owned(), |k| num(*k as f64 / 1024.0, 1))));
+            cells.extend(
+                present.iter().map(|c| by.get(*c).map_or("skipped".to_owned(), |k| num(*k as f64 / 1024.0, 1))),
+            );
             cells
         })
         .collect();
@@ -197,7 +197,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         return Ok(None);
     }
     let rows: Vec<Measurement> = read_csv(&csv)?;
-    let memory: Vec<MemoryRecord> = if out.join(MEMORY_CSV).exists() { read_csv(&out.join(MEMORY_CSV))? } else { Vec::new() };
+    let memory: Vec<MemoryRecord> =
+        if out.join(MEMORY_CSV).exists() { read_csv(&out.join(MEMORY_CSV))? } else { Vec::new() };
     let points = points(&rows);
     let groups = order(&rows, |r| r.workload.as_str());
     let clippers = order(&rows, |r| r.clipper.as_str());

@@ -34,6 +34,12 @@ pub struct Row {
     pub improvement: [f64; 3],
 }
 
+/// Method 1's and Method 2's clip, fill and total medians on one case.
+type MethodPair = ([f64; 3], [f64; 3]);
+
+/// Method 1's and Method 2's raw rows of one case.
+type CaseRows<'a> = (Vec<&'a Measurement>, Vec<&'a Measurement>);
+
 /// The medians of one method on one case: clip, fill, total (µs). Total is the median of the
 /// per-repetition sums, the two phases of one repetition having run back to back.
 fn case_medians(rows: &[&Measurement]) -> [f64; 3] {
@@ -51,7 +57,7 @@ fn case_medians(rows: &[&Measurement]) -> [f64; 3] {
 
 /// Computes the table from raw rows.
 pub fn rows(measurements: &[Measurement]) -> Vec<Row> {
-    let mut by_case: BTreeMap<(usize, String), (Vec<&Measurement>, Vec<&Measurement>)> = BTreeMap::new();
+    let mut by_case: BTreeMap<(usize, String), CaseRows> = BTreeMap::new();
     for m in measurements {
         let entry = by_case.entry((m.size, m.case.clone())).or_default();
         if m.clipper == METHOD1 {
@@ -60,7 +66,7 @@ pub fn rows(measurements: &[Measurement]) -> Vec<Row> {
             entry.1.push(m);
         }
     }
-    let mut by_size: BTreeMap<usize, Vec<([f64; 3], [f64; 3])>> = BTreeMap::new();
+    let mut by_size: BTreeMap<usize, Vec<MethodPair>> = BTreeMap::new();
     for ((size, _), (m1, m2)) in &by_case {
         if !m1.is_empty() && !m2.is_empty() {
             by_size.entry(*size).or_default().push((case_medians(m1), case_medians(m2)));
@@ -69,7 +75,7 @@ pub fn rows(measurements: &[Measurement]) -> Vec<Row> {
     by_size
         .into_iter()
         .map(|(edges, cases)| {
-            let avg = |f: &dyn Fn(&([f64; 3], [f64; 3])) -> f64| mean(&cases.iter().map(f).collect::<Vec<_>>());
+            let avg = |f: &dyn Fn(&MethodPair) -> f64| mean(&cases.iter().map(f).collect::<Vec<_>>());
             Row {
                 edges,
                 cases: cases.len(),
@@ -104,9 +110,9 @@ pub fn markdown_table(rows: &[Row]) -> String {
             let paper = vatti_row(r.edges).map_or([f64::NAN; 3], |p| p.improvement);
             let mut cells = vec![r.edges.to_string()];
             cells.extend(r.method1.iter().chain(&r.method2).map(|v| num(*v, 1)));
-            for i in 0..3 {
-                cells.push(format!("**{}**", num(r.improvement[i], 2)));
-                cells.push(num(paper[i], 2));
+            for (ours, theirs) in r.improvement.iter().zip(paper) {
+                cells.push(format!("**{}**", num(*ours, 2)));
+                cells.push(num(theirs, 2));
             }
             cells
         })
@@ -151,7 +157,15 @@ pub fn reading(rows: &[Row]) -> String {
         return "No measurements.".to_owned();
     };
     let paper = |edges: usize, i: usize| vatti_row(edges).map_or(f64::NAN, |p| p.improvement[i]);
-    let trend = |a: f64, b: f64| if b > a * 1.05 { "grows" } else if b < a / 1.05 { "falls" } else { "stays about level" };
+    let trend = |a: f64, b: f64| {
+        if b > a * 1.05 {
+            "grows"
+        } else if b < a / 1.05 {
+            "falls"
+        } else {
+            "stays about level"
+        }
+    };
     let mut text = String::new();
     for (i, name) in ["clip", "fill", "total"].iter().enumerate() {
         let (a, b) = (first.improvement[i], last.improvement[i]);

@@ -151,7 +151,9 @@ pub fn stages_table(stages: &[StageRecord]) -> String {
     let share = |shape: &str, row: &str, edges: usize, clipper: &str, stage: &str| {
         stages
             .iter()
-            .find(|s| s.shape == shape && s.size_row == row && s.edges == edges && s.clipper == clipper && s.stage == stage)
+            .find(|s| {
+                s.shape == shape && s.size_row == row && s.edges == edges && s.clipper == clipper && s.stage == stage
+            })
             .map_or(f64::NAN, |s| s.segments as f64 * 100.0 / s.of as f64)
     };
     let head = header(&[
@@ -198,10 +200,18 @@ pub fn stages_table(stages: &[StageRecord]) -> String {
 pub fn chart(rows: &[Row]) -> Chart {
     let mut series = Vec::new();
     for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
-        let mut ours: Vec<(f64, f64)> =
-            rows.iter().filter(|r| r.shape == "concave" && r.size_row == i).map(|r| (r.edges as f64, r.gain())).collect();
+        let mut ours: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.shape == "concave" && r.size_row == i)
+            .map(|r| (r.edges as f64, r.gain()))
+            .collect();
         ours.sort_by(|a, b| a.0.total_cmp(&b.0));
-        series.push(Series { label: format!("{label}, measured here"), colour: SIZE_ROWS[i], points: ours, paper: false });
+        series.push(Series {
+            label: format!("{label}, measured here"),
+            colour: SIZE_ROWS[i],
+            points: ours,
+            paper: false,
+        });
     }
     for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
         let paper = WANG_TABLE4.iter().filter(|r| r.size_row == i).map(|r| (r.edges as f64, r.gain)).collect();
@@ -342,7 +352,13 @@ mod tests {
 
     #[test]
     fn gain_comes_from_the_medians() {
-        let raw = vec![m("liu", 0, 3.0), m("liu", 1, 3.0), m("liu", 2, 90.0), m("virtual-box", 0, 2.0), m("virtual-box", 1, 2.0)];
+        let raw = vec![
+            m("liu", 0, 3.0),
+            m("liu", 1, 3.0),
+            m("liu", 2, 90.0),
+            m("virtual-box", 0, 2.0),
+            m("virtual-box", 1, 2.0),
+        ];
         let windows = vec![WindowRecord {
             shape: "concave".into(),
             size_row: "W1".into(),

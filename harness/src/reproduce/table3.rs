@@ -72,7 +72,7 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
     let mut frames = [FrameBuffer::default(), FrameBuffer::default()];
     let (cases, pixels) = prepare_cases(settings, &window, &mut frames)?;
 
-    let progress = bar(settings.repetitions, "Table 3: timing");
+    let mut progress = bar(settings.repetitions, "Table 3: timing");
     let mut rows = Vec::with_capacity(settings.repetitions * cases.len() * 4);
     let [frame, _] = &mut frames;
     for repetition in 0..settings.repetitions {
@@ -97,9 +97,9 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
                 rows.push(row("fill", fill_ns, 1));
             }
         }
-        progress.inc(1);
+        progress.inc();
     }
-    progress.finish_and_clear();
+    progress.finish();
 
     write_csv(&out.join(CSV), &rows)?;
     write_csv(&out.join(PIXELS_CSV), &pixels)?;
@@ -129,7 +129,7 @@ fn prepare_cases(
     window: &Polygons,
     frames: &mut [FrameBuffer; 2],
 ) -> Result<(Vec<Case>, Vec<PixelRecord>), CliError> {
-    let progress = bar(VATTI_EDGES.len() * settings.cases, "Table 3: checking pixels");
+    let mut progress = bar(VATTI_EDGES.len() * settings.cases, "Table 3: checking pixels");
     let mut cases = Vec::new();
     let mut pixels = Vec::new();
     for size in VATTI_EDGES {
@@ -151,10 +151,10 @@ fn prepare_cases(
                 checksum: agreed.checksum,
                 clip_iterations: single.map(|d| iterations_for(d, CLIP_TARGET)),
             });
-            progress.inc(1);
+            progress.inc();
         }
     }
-    progress.finish_and_clear();
+    progress.finish();
     Ok((cases, pixels))
 }
 

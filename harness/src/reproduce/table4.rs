@@ -58,7 +58,13 @@ impl Settings {
 
 /// The line clippers of the table, in column order: adding one is a line here.
 fn clippers() -> Vec<Box<dyn LineClipper>> {
-    vec![Box::new(Liu), Box::new(VirtualBox::NEW1), Box::new(VirtualBox::NEW2), Box::new(CyrusBeck), Box::new(GeoLineClipper)]
+    vec![
+        Box::new(Liu),
+        Box::new(VirtualBox::NEW1),
+        Box::new(VirtualBox::NEW2),
+        Box::new(CyrusBeck),
+        Box::new(GeoLineClipper),
+    ]
 }
 
 /// One row of [`WINDOWS_CSV`].
@@ -123,7 +129,7 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
     let (stages, disagreements) = count_stages(&windows, &segments)?;
     notes.extend(disagreements);
 
-    let progress = bar(settings.repetitions, "Table 4: timing");
+    let mut progress = bar(settings.repetitions, "Table 4: timing");
     let mut rows = Vec::new();
     let mut pieces: Vec<VisiblePiece> = Vec::with_capacity(settings.segments * 2);
     for repetition in 0..settings.repetitions {
@@ -153,9 +159,9 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
                 });
             }
         }
-        progress.inc(1);
+        progress.inc();
     }
-    progress.finish_and_clear();
+    progress.finish();
 
     let records: Vec<WindowRecord> = windows.iter().map(window_record).collect();
     write_csv(&out.join(CSV), &rows)?;
@@ -223,7 +229,8 @@ fn count_stages(windows: &[Window], segments: &[Segment]) -> Result<(Vec<StageRe
     let mut notes = Vec::new();
     let mut pieces = Vec::new();
     for w in windows {
-        let fail = |name: &str, e: clip_core::ClipError| CliError::failed(format!("Table 4: {name} on {}: {e}", w.case()));
+        let fail =
+            |name: &str, e: clip_core::ClipError| CliError::failed(format!("Table 4: {name} on {}: {e}", w.case()));
         let mut stages: Vec<(&str, Vec<(&str, usize)>)> = Vec::new();
         let c = PreparedLiu::new(&w.polygons).and_then(|p| p.clip_batch_counted(segments, &mut pieces));
         let c = c.map_err(|e| fail("liu", e))?;
@@ -238,7 +245,8 @@ fn count_stages(windows: &[Window], segments: &[Segment]) -> Result<(Vec<StageRe
             ],
         ));
         for (name, rotated) in [("virtual-box-no45", false), ("virtual-box", true)] {
-            let c = PreparedVirtualBox::new(&w.polygons, rotated).and_then(|p| p.clip_batch_counted(segments, &mut pieces));
+            let c =
+                PreparedVirtualBox::new(&w.polygons, rotated).and_then(|p| p.clip_batch_counted(segments, &mut pieces));
             let c = c.map_err(|e| fail(name, e))?;
             stages.push((
                 name,
@@ -270,7 +278,11 @@ fn count_stages(windows: &[Window], segments: &[Segment]) -> Result<(Vec<StageRe
         let visible: Vec<(&str, usize)> =
             stages.iter().map(|(n, s)| (*n, s.iter().find(|(k, _)| *k == "visible").map_or(0, |(_, v)| *v))).collect();
         if visible.iter().any(|(_, v)| *v != visible[0].1) {
-            notes.push(format!("{} {} edges: the clippers disagree on how many segments are visible: {visible:?}", w.case(), w.edges));
+            notes.push(format!(
+                "{} {} edges: the clippers disagree on how many segments are visible: {visible:?}",
+                w.case(),
+                w.edges
+            ));
         }
         for (clipper, counts) in stages {
             for (stage, n) in counts {
