@@ -81,62 +81,70 @@ pub fn walk_as_written(
     walk(&mut list, rect, max_steps, observe).then_some(list)
 }
 
-/// The walk over the cyclic list: `current` is an index into the list; removing the current
-/// point makes the following point current. A point is finished when it is inside the fourth
-/// state; the walk ends when the index runs past the end of the list. Returns false when it
-/// stopped after `max_steps` steps instead.
+/// The walk over the cyclic list. The list is kept as the finished points (`done`, inside all
+/// four states) followed by the points still to walk (`ahead`, a stack whose top is the current
+/// point), so dividing and removing at the current point cost O(1). Removing the current point
+/// makes the following point current. A point is finished when it is inside the fourth state;
+/// the walk ends when no point is left ahead. Returns false when it stopped after `max_steps`
+/// steps (one per state check) instead.
 fn walk(list: &mut Vec<Point>, rect: &Rect, max_steps: usize, mut observe: impl FnMut(Event)) -> bool {
-    let mut current = 0;
+    let mut done: Vec<Point> = Vec::with_capacity(list.len() + 8);
+    let mut ahead: Vec<Point> = list.drain(..).rev().collect();
     let mut state = State::MinY;
     let mut steps = 0usize;
-    while current < list.len() {
+    while let Some(&p) = ahead.last() {
         if steps == max_steps {
+            list.extend(done);
+            list.extend(ahead.iter().rev());
             return false;
         }
         steps += 1;
-        let p = list[current];
+        let current = done.len();
         if state.inside(p, rect) {
             observe(Event::Inside { index: current, state });
             match state.next() {
                 Some(next) => state = next,
                 None => {
-                    current += 1;
+                    ahead.pop();
+                    done.push(p);
                     state = State::MinY;
                 }
             }
             continue;
         }
-        // Divide: (prev - p - next) becomes (prev - pa - pb - next), both at p.
+        // Divide: (prev - p - next) becomes (prev - pa - pb - next), both at p; pa is current.
         observe(Event::Divide { index: current, state });
-        list.insert(current + 1, p);
+        ahead.push(p);
         let mut moved = false;
-        // First sub-point: its next point is the previous one in the list.
-        let prev = list[(current + list.len() - 1) % list.len()];
-        let mut second = current + 1;
+        // First sub-point: its next point is the previous one in the cyclic list.
+        let prev = done.last().copied().unwrap_or(ahead[0]);
+        let top = ahead.len() - 1;
         if state.inside(prev, rect) {
             let to = state.move_towards(p, prev, rect);
-            list[current] = to;
+            ahead[top] = to;
             observe(Event::Move { index: current, state, to });
             moved = true;
         } else {
             observe(Event::Remove { index: current, state });
-            list.remove(current);
-            second = current;
+            ahead.pop();
         }
-        // Second sub-point: its next point is the following one in the list.
-        let next = list[(second + 1) % list.len()];
+        // Second sub-point, just below the top: its next point is the following one.
+        let second = top - 1;
+        let next = if second > 0 { ahead[second - 1] } else { done.first().copied().unwrap_or(ahead[second]) };
+        let index = if moved { current + 1 } else { current };
         if state.inside(next, rect) {
             let to = state.move_towards(p, next, rect);
-            list[second] = to;
-            observe(Event::Move { index: second, state, to });
+            ahead[second] = to;
+            observe(Event::Move { index, state, to });
             moved = true;
         } else {
-            observe(Event::Remove { index: second, state });
-            list.remove(second);
+            observe(Event::Remove { index, state });
+            ahead.remove(second);
         }
-        // Both removed: the point now at `current` is unknown, start over at state one.
+        // Both removed: the point now current is unknown, start over at state one.
         // Moved: the current point is inside this boundary and its opposite.
         state = if moved { state.after_move() } else { State::MinY };
     }
+    *list = done;
     true
 }
