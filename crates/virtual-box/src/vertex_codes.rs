@@ -11,8 +11,8 @@ pub(crate) const EXACT: i8 = 2;
 
 /// Windows with at most this many stored vertices are encoded in one fused loop; larger ones in
 /// two passes, the first branch-free and vectorised. Measured on `wang-t4`: the fused loop is
-/// faster at 6 edges, the two passes from 20 edges on, the two even at 10.
-pub(crate) const FUSED_UP_TO: usize = 12;
+/// faster at 6 edges (7 stored vertices), the two passes from 10 edges on.
+pub(crate) const FUSED_UP_TO: usize = 8;
 
 /// Encodes every vertex against the directed line `a b` (the paper's `f_i`): positive on its left,
 /// negative on its right, 0 on it. Returns the paper's `F = Σ f_i` (over the signs).
