@@ -57,6 +57,15 @@ impl Edge {
         }
     }
 
+    /// True when `p` is within rounding error of the edge: a crossing point computed with
+    /// another edge that (in exact arithmetic) lies on this one too.
+    #[inline]
+    pub(crate) fn near(&self, p: Point) -> bool {
+        let x = self.x_at(p.y);
+        let scale = self.bot.x.abs().max(self.top.x.abs()).max(self.bot.y.abs()).max(self.top.y.abs()).max(p.x.abs());
+        (x - p.x).abs() <= 64.0 * f64::EPSILON * scale
+    }
+
     /// True when the edge ends at or below `y`.
     #[inline]
     pub(crate) fn ends_by(&self, y: f64) -> bool {

@@ -141,6 +141,8 @@ impl<'a> Sweep<'a> {
         let (left, right) = if forward_left { (forward, backward) } else { (backward, forward) };
         let pos = self.ael.insert_position(p, if m.horizontal { backward_top } else { self.ael.get(left).top });
         self.ael.get_mut(forward).curr_x = p.x;
+        // With a horizontal bottom the forward edge starts away from p: it slides there.
+        self.ael.get_mut(forward).moving = m.horizontal;
         let wl = self.ael.wind_before(pos);
         self.ael.get_mut(left).wind_left = wl;
         self.ael.insert(pos, left);
@@ -154,6 +156,7 @@ impl<'a> Sweep<'a> {
         if m.horizontal {
             let to = self.bounds.pt(fwd_from);
             self.slide(Slide { edge: forward, from_x: p.x, to_x: to.x, max_vertex: NONE }, p.y);
+            self.ael.get_mut(forward).moving = false;
             self.add_point(forward, to);
         } else {
             self.settle(right);
@@ -213,9 +216,9 @@ impl<'a> Sweep<'a> {
             }
         }
         for &s in &slides {
-            self.ael.get_mut(s.edge).moving = false;
             if s.max_vertex == NONE {
                 self.slide(s, y);
+                self.ael.get_mut(s.edge).moving = false;
                 let to = Point::new(s.to_x, y);
                 self.add_point(s.edge, to);
                 self.settle(s.edge);
@@ -228,6 +231,7 @@ impl<'a> Sweep<'a> {
                 let mp = self.bounds.pt(s.max_vertex);
                 self.meet(s.edge, partner, mp, s.from_x, s.to_x, y);
             }
+            self.ael.get_mut(s.edge).moving = false;
         }
         maxima.clear();
         settle.clear();
@@ -387,6 +391,12 @@ impl<'a> Sweep<'a> {
         self.node_neighbours(right, p);
     }
 
+    /// True when edges `a` and `b` lie on one line (exact).
+    fn coincident(&self, a: u32, b: u32) -> bool {
+        let (ea, eb) = (self.ael.get(a), self.ael.get(b));
+        !ea.moving && ea.side_of(eb.bot) == Orientation::Collinear && ea.side_of(eb.top) == Orientation::Collinear
+    }
+
     /// Output vertex `p` also goes into the chains of contributing edges that pass exactly
     /// through it (coincident edges lie next to `id`), so overlapping output edges share their
     /// end points and cancel in the clean-up.
@@ -401,7 +411,16 @@ impl<'a> Sweep<'a> {
                 pos = next;
                 let k = self.ael.at(pos);
                 let e = self.ael.get(k);
-                if p.y < e.bot.y || p.y > e.top.y || e.side_of(p) != Orientation::Collinear {
+                if e.moving {
+                    // A sliding edge sits at the slide's x, not on its own line: look past it.
+                    continue;
+                }
+                // Through p exactly; or on the same line as `id`, or within rounding of p, when p
+                // is a rounded crossing that several edges share.
+                if p.y < e.bot.y
+                    || p.y > e.top.y
+                    || (e.side_of(p) != Orientation::Collinear && !self.coincident(id, k) && !e.near(p))
+                {
                     break;
                 }
                 if e.outrec != NONE && p != e.bot && p != e.top {
