@@ -5,6 +5,10 @@ use clip_core::predicates::{Orientation, orient};
 
 use crate::bounds::NONE;
 
+/// Relative distance within which a computed crossing point counts as on an edge: a few dozen
+/// ulps, the rounding of one crossing computation.
+pub(crate) const ROUNDING: f64 = 64.0 * f64::EPSILON;
+
 /// An edge of a bound while it is active (the paper's edge record, Table 1). Never horizontal.
 #[derive(Clone, Debug)]
 pub(crate) struct Edge {
@@ -57,13 +61,14 @@ impl Edge {
         }
     }
 
-    /// True when `p` is within rounding error of the edge: a crossing point computed with
-    /// another edge that (in exact arithmetic) lies on this one too.
+    /// True when `p` is within `relative` (times the coordinates' magnitude) of the edge in x.
+    /// With [`ROUNDING`]: a crossing point computed with another edge that, in exact
+    /// arithmetic, lies on this one too.
     #[inline]
-    pub(crate) fn near(&self, p: Point) -> bool {
+    pub(crate) fn near(&self, p: Point, relative: f64) -> bool {
         let x = self.x_at(p.y);
         let scale = self.bot.x.abs().max(self.top.x.abs()).max(self.bot.y.abs()).max(self.top.y.abs()).max(p.x.abs());
-        (x - p.x).abs() <= 64.0 * f64::EPSILON * scale
+        (x - p.x).abs() <= relative * scale
     }
 
     /// True when the edge ends at or below `y`.
@@ -87,6 +92,11 @@ pub(crate) struct ActiveEdges {
 }
 
 impl ActiveEdges {
+    /// Room for about `n` edges (one per input vertex).
+    pub(crate) fn with_capacity(n: usize) -> ActiveEdges {
+        ActiveEdges { edges: Vec::with_capacity(n), order: Vec::with_capacity(n / 2 + 4) }
+    }
+
     /// A new edge in the arena (not yet in the order).
     pub(crate) fn create(&mut self, bot: Point, top: Point, kind: u8, forward: bool, top_vertex: u32) -> u32 {
         let id = self.edges.len() as u32;

@@ -11,6 +11,8 @@
 //! counter-clockwise and holes clockwise. Collinear vertices are dropped last.
 
 use std::collections::HashMap;
+use std::collections::hash_map::Entry;
+use std::hash::{BuildHasherDefault, Hasher};
 
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{Point, Ring};
@@ -23,36 +25,146 @@ fn key(p: Point) -> (u64, u64) {
     ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
 }
 
-/// The sweep's rings as conventional output rings.
-pub(crate) fn conventional_rings(raw: Vec<Vec<Point>>) -> Vec<Ring> {
-    let raw: Vec<Vec<Point>> = raw.into_iter().filter(|r| r.len() >= 3).collect();
-    if !needs_rebuild(&raw) {
-        return raw.iter().map(|r| simplify_ring(r)).filter(|r| r.len() >= 3).map(Ring::new).collect();
+/// A fast multiplicative hash for exact point keys (the keys are not attacker-controlled).
+#[derive(Default)]
+struct KeyHasher(u64);
+
+impl Hasher for KeyHasher {
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
     }
-    rebuild(&raw)
+
+    #[inline]
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x517c_c1b7_2722_0a95);
+    }
+
+    #[inline]
+    fn write_u32(&mut self, v: u32) {
+        self.write_u64(u64::from(v));
+    }
+
+    #[inline]
+    fn write_usize(&mut self, v: usize) {
+        self.write_u64(v as u64);
+    }
+
+    #[inline]
+    fn finish(&self) -> u64 {
+        self.0
+    }
 }
 
-/// True when some point repeats (within or across rings) or some vertex lies inside a
-/// horizontal edge; otherwise the rings are already simple and disjoint.
-fn needs_rebuild(rings: &[Vec<Point>]) -> bool {
-    let total: usize = rings.iter().map(Vec::len).sum();
-    let mut seen = std::collections::HashSet::with_capacity(total);
-    for r in rings {
-        for &p in r {
-            if !seen.insert(key(p)) {
-                return true;
+type FastMap<K, V> = HashMap<K, V, BuildHasherDefault<KeyHasher>>;
+
+/// The sweep's rings as conventional output rings. Only rings that share a point with another
+/// ring (or with themselves) or have a vertex inside a horizontal edge are rebuilt; the others
+/// are already simple and lose only collinear vertices.
+pub(crate) fn conventional_rings(raw: Vec<Vec<Point>>) -> Vec<Ring> {
+    let raw: Vec<Vec<Point>> = raw.into_iter().map(without_repeats).filter(|r| r.len() >= 3).collect();
+    let touched = touched_rings(&raw);
+    let mut out = Vec::with_capacity(raw.len());
+    let mut rebuild_set = Vec::new();
+    for (r, t) in raw.into_iter().zip(touched) {
+        if t {
+            rebuild_set.push(r);
+        } else {
+            let s = simplify_ring(&r);
+            if s.len() >= 3 {
+                out.push(Ring::new(s));
             }
         }
     }
-    !horizontal_splits(rings).is_empty()
+    if !rebuild_set.is_empty() {
+        out.extend(rebuild(&rebuild_set));
+    }
+    out
+}
+
+/// The ring without consecutive repeated points (the closing pair included).
+fn without_repeats(mut r: Vec<Point>) -> Vec<Point> {
+    r.dedup();
+    while r.len() > 1 && r.first() == r.last() {
+        r.pop();
+    }
+    r
+}
+
+/// For each ring: does it share a point with another ring or itself, or have a vertex inside a
+/// horizontal edge (or own a horizontal edge with another ring's vertex inside)?
+fn touched_rings(rings: &[Vec<Point>]) -> Vec<bool> {
+    let mut touched = vec![false; rings.len()];
+    let total: usize = rings.iter().map(Vec::len).sum();
+    let mut first: FastMap<(u64, u64), usize> = FastMap::with_capacity_and_hasher(total, Default::default());
+    for (i, r) in rings.iter().enumerate() {
+        for &p in r {
+            match first.entry(key(p)) {
+                Entry::Occupied(e) => {
+                    touched[i] = true;
+                    touched[*e.get()] = true;
+                }
+                Entry::Vacant(e) => {
+                    e.insert(i);
+                }
+            }
+        }
+    }
+    for (edge_ring, vertex_rings) in horizontal_contacts(rings) {
+        touched[edge_ring] = true;
+        for v in vertex_rings {
+            touched[v] = true;
+        }
+    }
+    touched
+}
+
+/// Rings with a horizontal edge that has vertices strictly inside it, with those vertices' rings.
+fn horizontal_contacts(rings: &[Vec<Point>]) -> Vec<(usize, Vec<usize>)> {
+    let has_horizontal = rings.iter().any(|r| (0..r.len()).any(|i| r[i].y == r[(i + 1) % r.len()].y));
+    if !has_horizontal {
+        return Vec::new();
+    }
+    let by_y = vertices_by_y(rings);
+    let mut contacts = Vec::new();
+    for (ri, r) in rings.iter().enumerate() {
+        let n = r.len();
+        for i in 0..n {
+            let (a, b) = (r[i], r[(i + 1) % n]);
+            if a.y != b.y {
+                continue;
+            }
+            let inside: Vec<usize> = inside_horizontal(&by_y, a, b).map(|&(_, _, rj)| rj).collect();
+            if !inside.is_empty() {
+                contacts.push((ri, inside));
+            }
+        }
+    }
+    contacts
+}
+
+/// Every vertex as `(y, x, ring)`, sorted by y then x.
+fn vertices_by_y(rings: &[Vec<Point>]) -> Vec<(f64, f64, usize)> {
+    let mut v: Vec<(f64, f64, usize)> =
+        rings.iter().enumerate().flat_map(|(i, r)| r.iter().map(move |p| (p.y, p.x, i))).collect();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    v
+}
+
+/// The vertices strictly inside the horizontal edge `a`-`b`.
+fn inside_horizontal(by_y: &[(f64, f64, usize)], a: Point, b: Point) -> impl Iterator<Item = &(f64, f64, usize)> {
+    let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+    let start = by_y.partition_point(|&(y, x, _)| y < a.y || (y == a.y && x <= lo));
+    by_y[start..].iter().take_while(move |&&(y, x, _)| y == a.y && x < hi)
 }
 
 /// For every horizontal edge `(ring, index)` with vertices strictly inside it, those vertices'
-/// x values.
-fn horizontal_splits(rings: &[Vec<Point>]) -> HashMap<(usize, usize), Vec<f64>> {
-    let mut by_y: Vec<(f64, f64)> = rings.iter().flatten().map(|p| (p.y, p.x)).collect();
-    by_y.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-    let mut splits = HashMap::new();
+/// x values in the edge's direction.
+fn horizontal_splits(rings: &[Vec<Point>]) -> FastMap<(usize, usize), Vec<f64>> {
+    let by_y = vertices_by_y(rings);
+    let mut splits = FastMap::default();
     for (ri, r) in rings.iter().enumerate() {
         let n = r.len();
         for i in 0..n {
@@ -60,10 +172,7 @@ fn horizontal_splits(rings: &[Vec<Point>]) -> HashMap<(usize, usize), Vec<f64>> 
             if a.y != b.y || a.x == b.x {
                 continue;
             }
-            let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
-            let start = by_y.partition_point(|&(y, x)| y < a.y || (y == a.y && x <= lo));
-            let mut xs: Vec<f64> =
-                by_y[start..].iter().take_while(|&&(y, x)| y == a.y && x < hi).map(|&(_, x)| x).collect();
+            let mut xs: Vec<f64> = inside_horizontal(&by_y, a, b).map(|&(_, x, _)| x).collect();
             if xs.is_empty() {
                 continue;
             }
@@ -80,7 +189,7 @@ fn horizontal_splits(rings: &[Vec<Point>]) -> HashMap<(usize, usize), Vec<f64>> 
 fn rebuild(rings: &[Vec<Point>]) -> Vec<Ring> {
     let splits = horizontal_splits(rings);
     // Points by id, and the directed edges between them.
-    let mut ids: HashMap<(u64, u64), u32> = HashMap::new();
+    let mut ids: FastMap<(u64, u64), u32> = FastMap::default();
     let mut pts: Vec<Point> = Vec::new();
     let mut id_of = |p: Point, pts: &mut Vec<Point>| {
         *ids.entry(key(p)).or_insert_with(|| {
@@ -109,7 +218,7 @@ fn rebuild(rings: &[Vec<Point>]) -> Vec<Ring> {
     }
     // Opposite edges cancel: they bound nothing.
     let mut live = vec![true; edges.len()];
-    let mut open: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+    let mut open: FastMap<(u32, u32), Vec<usize>> = FastMap::default();
     for (i, &(a, b)) in edges.iter().enumerate() {
         if let Some(j) = open.get_mut(&(b, a)).and_then(Vec::pop) {
             live[i] = false;

@@ -55,9 +55,12 @@ impl Sweep<'_> {
         if n < 2 {
             return table;
         }
-        let xtop: Vec<f64> = self.ael.order.iter().map(|&id| self.ael.get(id).x_at(yt)).collect();
+        let mut xtop = std::mem::take(&mut self.xtop);
+        xtop.clear();
+        xtop.extend(self.ael.order.iter().map(|&id| self.ael.get(id).x_at(yt)));
         // Sorted edge table: positions in the active edge table, by x at the top.
-        let mut st: Vec<u32> = Vec::with_capacity(n);
+        let mut st = std::mem::take(&mut self.sorted);
+        st.clear();
         for i in 0..n {
             let x = xtop[i];
             let mut j = st.len();
@@ -68,6 +71,8 @@ impl Sweep<'_> {
             }
             st.insert(j, i as u32);
         }
+        self.xtop = xtop;
+        self.sorted = st;
         table.sort_by(|a, b| a.pt.y.total_cmp(&b.pt.y));
         table
     }

@@ -4,7 +4,7 @@
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{Point, Trapezoid};
 
-use crate::active::ActiveEdges;
+use crate::active::{ActiveEdges, ROUNDING};
 use crate::bounds::{Bounds, LocalMinimum, NONE};
 use crate::contribution::{Crossing, Rules, classify};
 use crate::output::OutputBuilder;
@@ -40,6 +40,9 @@ pub(crate) struct Sweep<'a> {
     maxima: Vec<u32>,
     settle: Vec<u32>,
     slides: Vec<Slide>,
+    /// The sorted edge table's x values at the scanbeam top, and its order (reused buffers).
+    pub(crate) xtop: Vec<f64>,
+    pub(crate) sorted: Vec<u32>,
 }
 
 impl<'a> Sweep<'a> {
@@ -48,7 +51,7 @@ impl<'a> Sweep<'a> {
         Sweep {
             rules,
             bounds,
-            ael: ActiveEdges::default(),
+            ael: ActiveEdges::with_capacity(n),
             beams: Scanbeams::default(),
             out: OutputBuilder::default(),
             traps: trapezoids.then(Vec::new),
@@ -58,6 +61,8 @@ impl<'a> Sweep<'a> {
             maxima: Vec::new(),
             settle: Vec::new(),
             slides: Vec::new(),
+            xtop: Vec::new(),
+            sorted: Vec::new(),
         }
     }
 
@@ -419,7 +424,8 @@ impl<'a> Sweep<'a> {
                 // is a rounded crossing that several edges share.
                 if p.y < e.bot.y
                     || p.y > e.top.y
-                    || (e.side_of(p) != Orientation::Collinear && !self.coincident(id, k) && !e.near(p))
+                    || !e.near(p, 1e-9)
+                    || (e.side_of(p) != Orientation::Collinear && !self.coincident(id, k) && !e.near(p, ROUNDING))
                 {
                     break;
                 }
