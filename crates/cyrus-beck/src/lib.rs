@@ -45,10 +45,12 @@
 //!
 //! # Limits
 //!
-//! Two different edges crossing the line at one point that is not a vertex (two rings crossing
-//! each other exactly on the segment) give two separately rounded parameters, so a piece may be
-//! split or shortened by a rounding-sized gap there. Coordinates up to
-//! [`clip_core::MAX_COORDINATE`].
+//! Parameters of the pieces' ends are rounded. Crossing parameters closer than 1e-12 (of the
+//! segment) are taken as one point, so that two edges crossing the line at one point that is not
+//! a vertex (two rings crossing each other on the segment, an edge through another ring's vertex)
+//! neither split a piece nor leave a sliver; a true piece or gap shorter than that is dropped
+//! (below the resolution of the rounded parameters; the oracle's tolerance is 1e-9). Coordinates
+//! up to [`clip_core::MAX_COORDINATE`].
 //!
 //! # Example
 //!
