@@ -39,7 +39,7 @@ pub fn run(args: &ClipArgs, registry: &Registry) -> Result<(), CliError> {
     };
     let subject = read_shapes(&args.subject)?;
     let clip = read_polygons(&args.clip, Operand::Clip)?;
-    let text = if subject.rings.is_empty() {
+    let text = if subject.rings.is_empty() && !subject.segments.is_empty() {
         // Line strings: a line clipper's visible pieces.
         let entry = registry.find_line(&args.clipper).ok_or_else(|| unknown_line_clipper(&args.clipper, registry))?;
         if args.op != BoolOp::Intersection {

@@ -29,11 +29,8 @@ pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
     let geometries = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
         .map_err(|problem| InputError::new(path, problem))?;
-    let shapes = shapes_of(&geometries).map_err(|problem| InputError::new(path, problem))?;
-    if shapes.rings.is_empty() && shapes.segments.is_empty() {
-        return Err(InputError::new(path, "it holds no polygon and no line string".into()));
-    }
-    Ok(shapes)
+    // An empty geometry (`MULTIPOLYGON EMPTY`) is the empty region, a valid operand.
+    shapes_of(&geometries).map_err(|problem| InputError::new(path, problem))
 }
 
 /// Reads a polygon operand and validates it (finite, in range, rings of at least 3 points).

@@ -247,3 +247,15 @@ fn conformance_suites_run_and_print_a_closing_line_per_clipper() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("Lines.txt") && stderr(&o).contains("cannot read"), "{}", stderr(&o));
 }
+
+#[test]
+fn an_empty_operand_is_the_empty_region() {
+    let dir = scratch("empty");
+    let subject = write(&dir, "subject.wkt", "POLYGON((0 0,2 0,2 2,0 2,0 0))");
+    let empty = write(&dir, "empty.wkt", "MULTIPOLYGON EMPTY");
+    for peer in ["geo", "clipper2"] {
+        let o = clipbench(&["clip", "--clipper", peer, "--op", "union", &subject, &empty]);
+        assert!(o.status.success(), "{peer}: {}", stderr(&o));
+        assert!((wkt_area(&stdout(&o)) - 4.0).abs() < 1e-9, "{peer}: {}", stdout(&o));
+    }
+}
