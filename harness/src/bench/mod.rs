@@ -2,6 +2,7 @@
 //! workloads, all four operations, timed in interleaved rounds; ratios to Clipper2 come from the
 //! same run. Rectangle windows add the rectangle-only clippers; large cases also get peak memory.
 
+mod memory_probe;
 mod plan;
 mod rounds;
 
@@ -47,10 +48,17 @@ pub struct BenchArgs {
     /// Timed rounds per point (default 7, quick 3).
     #[arg(long, value_name = "N")]
     pub rounds: Option<usize>,
+    /// Internal: measure one call's peak memory in this fresh process and print it (the bench
+    /// runs itself with this, so no earlier allocation hides the peak).
+    #[arg(long, hide = true, value_name = "SPEC")]
+    pub memory_probe: Option<String>,
 }
 
 /// Runs the command: measures, writes the raw files, then the tables, plots and REPORT.md.
 pub fn run(args: &BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> {
+    if let Some(spec) = &args.memory_probe {
+        return memory_probe::child(spec, args.seed, registry);
+    }
     let cap = args.cap.unwrap_or(if args.quick { 0.5 } else { 2.0 });
     if !(cap.is_finite() && cap > 0.0) {
         return Err(CliError::usage("--cap must be a positive number of seconds"));

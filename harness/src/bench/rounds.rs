@@ -9,9 +9,9 @@ use clip_core::{BoolOp, FillRule, PolygonClipper};
 use clip_testkit::workload::{PolygonCase, polygon_case_sized};
 use serde::{Deserialize, Serialize};
 
+use super::memory_probe::Probe;
 use super::plan::Group;
 use crate::cli_error::CliError;
-use crate::measure::peak_memory::PeakMemory;
 use crate::measure::progress::bar;
 use crate::measure::raw::Measurement;
 use crate::measure::timing::{iterations_for, per_call_ns, timed};
@@ -133,8 +133,16 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
                 if group.memory && op == BoolOp::Intersection {
                     for (c, _, _) in &timed_here {
-                        for (index, case) in group.indices.iter().zip(&cases) {
-                            match peak_memory(*c, case, op) {
+                        for index in &group.indices {
+                            let probe = Probe {
+                                workload: group.workload.to_owned(),
+                                window: group.window,
+                                index: *index,
+                                size,
+                                clipper: c.name().to_owned(),
+                                op,
+                            };
+                            match probe.run_in_child(settings.seed) {
                                 Some((rss_before_kib, peak_extra_kib)) => measured.memory.push(MemoryRecord {
                                     workload: group.label.to_owned(),
                                     case: index.to_string(),
@@ -164,7 +172,8 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
     progress.finish();
     if !memory_available {
         measured.notes.push(
-            "Peak memory unavailable: /proc/self/clear_refs could not be written (not Linux, or /proc is read-only)."
+            "Peak memory unavailable for some points: /proc/self/clear_refs could not be written (not Linux, or /proc is \
+             read-only), or the probe process failed."
                 .to_owned(),
         );
     }
@@ -218,14 +227,4 @@ fn measure_point(
             }
         }
     }
-}
-
-/// Resident memory before one call and its peak above that, in KiB; `None` where /proc does not
-/// allow it.
-fn peak_memory(c: &dyn PolygonClipper, case: &PolygonCase, op: BoolOp) -> Option<(u64, u64)> {
-    let probe = PeakMemory::start()?;
-    let result = c.clip(&case.subject, &case.clip, op, FILL);
-    let extra = probe.extra_kib()?;
-    drop(black_box(result));
-    Some((probe.rss_before_kib(), extra))
 }

@@ -100,7 +100,7 @@ fn group_table(points: &Points, group: &str, op: &str, clippers: &[String]) -> O
                 cells.push(match points.get(&(group.to_owned(), op.to_owned(), s, (*c).clone())) {
                     Some(p) if p.rounds <= 1 => format!("{} ({}) ¹", duration_ns(p.time_ns), num(p.ratio, 2)),
                     Some(p) => format!("{} ({})", duration_ns(p.time_ns), num(p.ratio, 2)),
-                    None => "skipped".to_owned(),
+                    None => "n/a".to_owned(),
                 });
             }
             cells
@@ -172,9 +172,7 @@ fn memory_table(records: &[MemoryRecord], clippers: &[String]) -> Option<String>
         .iter()
         .map(|((g, s), by)| {
             let mut cells = vec![g.clone(), s.to_string()];
-            cells.extend(
-                present.iter().map(|c| by.get(*c).map_or("skipped".to_owned(), |k| num(*k as f64 / 1024.0, 1))),
-            );
+            cells.extend(present.iter().map(|c| by.get(*c).map_or("n/a".to_owned(), |k| num(*k as f64 / 1024.0, 1))));
             cells
         })
         .collect();
@@ -208,7 +206,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         "## Bench: the polygon clippers against geo and Clipper2\n\n\
          Time per call (mean over the group's cases of the median over interleaved rounds) and, in brackets, the \
          ratio to `{BASELINE}` measured in the same run (geometric mean over cases; below 1 is faster than \
-         Clipper2). Operands read under even-odd. ¹ marks a point over the time cap, timed once.\n\n\
+         Clipper2). Operands read under even-odd. ¹ marks a point over the time cap, timed once; n/a: not run (the \
+         clipper does not take that window, or it was skipped after the cap: see the notes).\n\n\
          Ratios of `vatti` at 4, 20, 100, 200 edges and the largest size (intersection):\n\n{}\n{notes}\n",
         vatti_ratios(&points, &groups)
     );
@@ -222,7 +221,9 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         }
     }
     if let Some(t) = memory_table(&memory, &clippers) {
-        text.push_str(&format!("### Peak memory of the large cases (intersection)\n\n{t}\n"));
+        text.push_str(&format!("### Peak memory of the large cases (intersection)\n\nPeak resident memory of one call above the resident size \
+                 before it, measured in a fresh child process (so no memory freed by earlier cases hides it), MiB, \
+                 largest over the cases.\n\n{t}\n"));
     }
     Ok(Some(text))
 }

@@ -47,9 +47,10 @@ pub struct Settings {
 }
 
 impl Settings {
-    /// Quick: 5 cases x 40 rounds; `full`: 1000 rounds; `repetitions` overrides both.
+    /// Quick: 5 cases x 100 rounds (about 10 s); `full`: the paper-scale 1000 rounds;
+    /// `repetitions` overrides both.
     pub fn new(seed: u64, full: bool, repetitions: Option<usize>) -> Settings {
-        let repetitions = repetitions.unwrap_or(if full { 1000 } else { 40 });
+        let repetitions = repetitions.unwrap_or(if full { 1000 } else { 100 });
         Settings { seed, cases: 5, repetitions }
     }
 }

@@ -47,10 +47,10 @@ pub struct Settings {
 }
 
 impl Settings {
-    /// Quick: 60 rounds; `full`: the paper's 1000; `repetitions` overrides both. geo runs in the
+    /// Quick: 200 rounds (about 20 s); `full`: the paper's 1000; `repetitions` overrides both. geo runs in the
     /// first 3 rounds (10 with `full`).
     pub fn new(seed: u64, full: bool, repetitions: Option<usize>) -> Settings {
-        let repetitions = repetitions.unwrap_or(if full { 1000 } else { 60 });
+        let repetitions = repetitions.unwrap_or(if full { 1000 } else { 200 });
         let geo_repetitions = repetitions.min(if full { 10 } else { 3 });
         Settings { seed, segments: 10_000, repetitions, geo_repetitions }
     }
