@@ -29,6 +29,8 @@ mod clipper;
 mod error;
 #[cfg(feature = "geo")]
 mod geo;
+mod line_crossings;
+mod line_frame;
 mod nesting;
 mod ops;
 mod point;
@@ -48,6 +50,8 @@ pub use error::{
     ClipError, MAX_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
     validate_segments, validate_window,
 };
+pub use line_crossings::{LineCrossings, PARAMETER_SNAP};
+pub use line_frame::{Along, LineFrame};
 pub use nesting::{NestedPolygon, nest};
 pub use ops::{BoolOp, FillRule, UnknownName};
 pub use point::Point;

@@ -2,13 +2,11 @@
 
 use clip_core::predicates::{Orientation, orient, orient2d};
 use clip_core::{
-    ClipError, LineCapabilities, LineClipper, Polygons, PreparedWindow, Ring, Segment, VisiblePiece, WindowKind,
-    convex_window, validate_segments,
+    ClipError, LineCapabilities, LineClipper, LineFrame, Polygons, PreparedWindow, Ring, Segment, VisiblePiece,
+    WindowKind, convex_window, validate_segments,
 };
 
-use crate::line_frame::LineFrame;
 use crate::liu::{Scratch, cross_by_vertex_sides};
-use crate::pieces::push_piece;
 use crate::ring_table::RingTable;
 
 /// Cyrus and Beck's parametric line clipper for one convex window (either orientation), registered
@@ -197,7 +195,7 @@ impl PreparedCyrusBeck {
             return Outcome::EmptySpan;
         }
         let before = out.len();
-        push_piece(out, index, &LineFrame::new(s), (t_in, t_out));
+        LineFrame::new(s).push_piece(out, index, (t_in, t_out));
         Outcome::Span(out.len() - before)
     }
 

@@ -74,9 +74,7 @@
 //! ```
 
 mod cyrus_beck;
-mod line_frame;
 mod liu;
-mod pieces;
 mod ring_table;
 
 pub use cyrus_beck::{CyrusBeck, CyrusBeckCounts, PreparedCyrusBeck};

@@ -2,12 +2,10 @@
 
 use clip_core::predicates::orient2d;
 use clip_core::{
-    ClipError, LineCapabilities, LineClipper, Polygons, PreparedWindow, Segment, VisiblePiece, WindowKind,
-    validate_segments, validate_window,
+    ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, Polygons, PreparedWindow, Segment,
+    VisiblePiece, WindowKind, validate_segments, validate_window,
 };
 
-use crate::line_frame::LineFrame;
-use crate::pieces::Crossings;
 use crate::ring_table::RingTable;
 
 /// Liu Yong-Kui's line clipper (the baseline of Wang et al.'s Table 4), registered as `liu`.
@@ -57,7 +55,7 @@ pub struct PreparedLiu {
 pub(crate) struct Scratch {
     /// The line function at every stored vertex (exact sign, rounded magnitude).
     pub sides: Vec<f64>,
-    pub crossings: Crossings,
+    pub crossings: LineCrossings,
 }
 
 impl PreparedLiu {
@@ -150,10 +148,10 @@ pub(crate) fn cross_by_vertex_sides(table: &RingTable, frame: &LineFrame, scratc
             }
             if fp == 0.0 || fq == 0.0 {
                 let v = if fp == 0.0 { points[i] } else { points[i + 1] };
-                crossings.cross(frame.place(v), frame.param(v));
+                crossings.record(frame.place(v), frame.param(v));
             } else {
                 let (place, t) = frame.edge_crossing(points[i], points[i + 1], fp, fq);
-                crossings.cross(place, t);
+                crossings.record(place, t);
             }
         }
     }

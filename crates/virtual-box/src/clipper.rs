@@ -3,14 +3,12 @@
 use core::ops::Range;
 
 use clip_core::{
-    ClipError, LineCapabilities, LineClipper, Point, Polygons, PreparedWindow, Rect, Segment, VisiblePiece, WindowKind,
-    validate_segments, validate_window,
+    ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, Point, Polygons, PreparedWindow, Rect, Segment,
+    VisiblePiece, WindowKind, validate_segments, validate_window,
 };
 
 use crate::adaptive_box::AdaptiveBox;
-use crate::display::DisplayArray;
 use crate::intersections::intersect;
-use crate::line_frame::LineFrame;
 use crate::meb::meb_rejects;
 use crate::rotated_box::RotatedBox;
 use crate::vertex_codes::encode;
@@ -103,13 +101,13 @@ enum Stage {
 struct Scratch {
     codes: Vec<i8>,
     sides: Vec<f64>,
-    display: DisplayArray,
+    display: LineCrossings,
 }
 
 impl Scratch {
     fn for_window(w: &PreparedVirtualBox) -> Scratch {
         let n = w.points.len();
-        Scratch { codes: vec![0; n], sides: vec![0.0; n], display: DisplayArray::default() }
+        Scratch { codes: vec![0; n], sides: vec![0.0; n], display: LineCrossings::default() }
     }
 }
 
@@ -202,7 +200,7 @@ impl PreparedVirtualBox {
         }
         let frame = LineFrame::new(s);
         intersect(&self.points, &self.rings, &scratch.codes, &scratch.sides, &frame, &mut scratch.display);
-        Stage::Intersected(scratch.display.display(index, &frame, out))
+        Stage::Intersected(scratch.display.emit(index, &frame, out))
     }
 }
 

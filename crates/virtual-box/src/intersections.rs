@@ -2,10 +2,8 @@
 
 use core::ops::Range;
 
-use clip_core::Point;
+use clip_core::{LineCrossings, LineFrame, Point};
 
-use crate::display::DisplayArray;
-use crate::line_frame::LineFrame;
 use crate::vertex_codes::EXACT;
 
 /// Records in `display` every valid intersection of the segment's line with the window's edges,
@@ -20,7 +18,7 @@ pub(crate) fn intersect(
     codes: &[i8],
     sides: &[f64],
     frame: &LineFrame,
-    display: &mut DisplayArray,
+    display: &mut LineCrossings,
 ) {
     display.clear();
     for ring in rings {
@@ -55,7 +53,7 @@ pub(crate) fn intersect(
 ///   when on the same side. This replaces the paper's convex/concave vertex test (see the crate
 ///   documentation).
 /// - A ring lying wholly on the line: every edge is boundary along it.
-fn singular(points: &[Point], ring: Range<usize>, codes: &[i8], frame: &LineFrame, display: &mut DisplayArray) {
+fn singular(points: &[Point], ring: Range<usize>, codes: &[i8], frame: &LineFrame, display: &mut LineCrossings) {
     let (start, n) = (ring.start, ring.len());
     let code = |i: usize| codes[start + i % n].signum();
     let point = |i: usize| points[start + i % n];

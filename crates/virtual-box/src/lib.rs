@@ -23,7 +23,7 @@
 //! | `F = Σ f_i = ±N` | the code-sum reject in `clipper` |
 //! | products of adjacent codes (Eqs. 1-3) | `intersections::intersect` |
 //! | singular cases (Eqs. 4-6, Figs. 6-7) | `intersections::singular` |
-//! | DISPLAY-ARRAY; sort; discard extension points; `M0`, `M1` by odd/even counts; Table 3 | `display` |
+//! | DISPLAY-ARRAY; sort; discard extension points; `M0`, `M1` by odd/even counts; Table 3 | [`clip_core::LineCrossings`] (shared with Liu) |
 //! | the flow chart (Fig. 9) | `PreparedVirtualBox::clip_one` |
 //!
 //! "Positive region" is the left of the directed segment `a -> b` (`f(v) = (b - a) × (v - a) > 0`).
@@ -101,9 +101,7 @@
 
 mod adaptive_box;
 mod clipper;
-mod display;
 mod intersections;
-mod line_frame;
 mod meb;
 mod rotated_box;
 mod vertex_codes;

@@ -1,11 +1,11 @@
-//! A segment's line as a parameter axis: `t` of points on it and their exact place relative to the ends (the paper's M0, M1).
+//! A segment's line as a parameter axis: `t` of points on it and their exact place relative to the ends.
 
-use clip_core::predicates::orient2d;
-use clip_core::{Point, Segment};
+use crate::predicates::orient2d;
+use crate::{Point, Segment};
 
 /// Where a point of the segment's line lies relative to the segment, decided exactly.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub(crate) enum Along {
+pub enum Along {
     /// `t < 0`.
     Before,
     /// `t = 0`: the start point.
@@ -20,8 +20,10 @@ pub(crate) enum Along {
 
 /// The directed line `P(t) = a + t (b - a)` of a segment of positive length.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct LineFrame {
+pub struct LineFrame {
+    /// The start point, `t = 0`.
     pub a: Point,
+    /// The end point, `t = 1`.
     pub b: Point,
     d: Point,
     inv_len2: f64,

@@ -1,18 +1,18 @@
-//! The DISPLAY-ARRAY of valid intersections and the visible pieces read from it (the paper's Table 3).
-
-use clip_core::{Segment, VisiblePiece};
+//! The crossings of a segment's line with a window boundary, and the visible pieces read from them by parity.
 
 use crate::line_frame::{Along, LineFrame};
+use crate::{Segment, VisiblePiece};
 
-/// The paper's DISPLAY-ARRAY for one segment: the valid intersections of its line with the
-/// window boundary, and the window edges lying along the line.
+/// The crossings of one segment's line with a window boundary read under even-odd, and the window
+/// edges lying along the line, gathered before the visible pieces are read off (Liu's sorted
+/// intersections; Wang et al.'s DISPLAY-ARRAY).
 ///
-/// Intersections on the segment's extension are discarded from the array but counted first: the
-/// start `M0` lies in the window when the intersections after it are odd in number (the paper's
-/// Count1), the end `M1` when those before it are. Edges along the line are boundary, visible
-/// under the closed-set rule, and are united with the pieces of Table 3.
+/// Crossings on the segment's extension are not kept but counted: the start lies in the window
+/// when the crossings after it are odd in number, the end when those before it are. Edges along
+/// the line are boundary, visible under the closed-set rule, and are united with the inside
+/// intervals at the end.
 #[derive(Debug, Default)]
-pub(crate) struct DisplayArray {
+pub struct LineCrossings {
     /// Intersections strictly after `M0` (`t > 0`).
     after_start: u32,
     /// Intersections strictly before `M1` (`t < 1`).
@@ -37,7 +37,7 @@ fn clamped(place: Along, t: f64) -> f64 {
     }
 }
 
-impl DisplayArray {
+impl LineCrossings {
     /// Forgets the previous segment.
     #[inline]
     pub fn clear(&mut self) {
@@ -47,7 +47,14 @@ impl DisplayArray {
         self.along.clear();
     }
 
-    /// Records a valid intersection at `place`, parameter `t`.
+    /// True when nothing of the segment can be visible: no crossing after its start (so the start
+    /// is outside), none on it and no edge along it.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.after_start == 0 && self.inside.is_empty() && self.along.is_empty()
+    }
+
+    /// Records a crossing of the boundary at `place`, parameter `t`.
     #[inline]
     pub fn record(&mut self, place: Along, t: f64) {
         self.after_start += u32::from(place > Along::AtStart);
@@ -67,11 +74,11 @@ impl DisplayArray {
         }
     }
 
-    /// Sorts the intersections and appends the visible pieces of segment `index` to `out` by
-    /// Table 3: from `M0` (when inside) or `T1`, alternating, to `M1` (when inside) or the last
-    /// `T`; then united with the edges along the line, touching pieces merged, points dropped.
-    /// Returns the number of pieces written.
-    pub fn display(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
+    /// Sorts the crossings and appends the visible pieces of segment `index` to `out`: from the
+    /// start (when inside) or the first crossing, alternating, to the end (when inside) or the last
+    /// crossing; then united with the edges along the line, touching pieces merged, points
+    /// dropped. Returns the number of pieces written.
+    pub fn emit(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
         sort_small(&mut self.inside);
         snap(&mut self.inside);
         let (m0_inside, m1_inside) = (self.after_start % 2 == 1, self.before_end % 2 == 1);
@@ -85,7 +92,7 @@ impl DisplayArray {
             inside = !inside;
             from = t;
         }
-        debug_assert_eq!(inside, m1_inside, "parity of the intersections between M0 and M1");
+        debug_assert_eq!(inside, m1_inside, "parity of the crossings between the ends");
         if m1_inside {
             self.spans.push((from, 1.0));
         }
@@ -97,40 +104,43 @@ impl DisplayArray {
         let mut current: Option<(f64, f64)> = None;
         for &(lo, hi) in &self.spans {
             current = match current {
-                Some((clo, chi)) if lo <= chi + SNAP => Some((clo, chi.max(hi))),
+                Some((clo, chi)) if lo <= chi + PARAMETER_SNAP => Some((clo, chi.max(hi))),
                 Some(done) => {
-                    push_piece(out, index, frame, done);
+                    frame.push_piece(out, index, done);
                     Some((lo, hi))
                 }
                 None => Some((lo, hi)),
             };
         }
         if let Some(done) = current {
-            push_piece(out, index, frame, done);
+            frame.push_piece(out, index, done);
         }
         out.len() - before
     }
 }
 
-/// Appends the piece `[t0, t1]` of segment `index` when it has positive length.
-#[inline]
-fn push_piece(out: &mut Vec<VisiblePiece>, index: usize, frame: &LineFrame, (t0, t1): (f64, f64)) {
-    let (a, b) = (frame.at(t0), frame.at(t1));
-    if t1 - t0 > SNAP && a != b {
-        out.push(VisiblePiece { segment: index, piece: Segment::new(a, b) });
+impl LineFrame {
+    /// Appends the piece `[t0, t1]` of segment `index` to `out` when it has positive length
+    /// (longer than [`PARAMETER_SNAP`] and with distinct end points).
+    #[inline]
+    pub fn push_piece(&self, out: &mut Vec<VisiblePiece>, index: usize, (t0, t1): (f64, f64)) {
+        let (a, b) = (self.at(t0), self.at(t1));
+        if t1 - t0 > PARAMETER_SNAP && a != b {
+            out.push(VisiblePiece { segment: index, piece: Segment::new(a, b) });
+        }
     }
 }
 
 /// Parameters closer than this are one point: the rounding of parameters computed from different
 /// edges (two edges crossing the line at one point, an edge through another ring's vertex) stays
 /// well below it, and a true piece or gap this short is below the resolution of the parameters.
-pub(crate) const SNAP: f64 = 1e-12;
+pub const PARAMETER_SNAP: f64 = 1e-12;
 
-/// Makes sorted parameters within [`SNAP`] of their predecessor equal to it.
+/// Makes sorted parameters within [`PARAMETER_SNAP`] of their predecessor equal to it.
 #[inline]
 fn snap(v: &mut [f64]) {
     for i in 1..v.len() {
-        if v[i] - v[i - 1] <= SNAP {
+        if v[i] - v[i - 1] <= PARAMETER_SNAP {
             v[i] = v[i - 1];
         }
     }
@@ -152,20 +162,19 @@ fn sort_small(v: &mut [f64]) {
 
 #[cfg(test)]
 mod tests {
-    use clip_core::Point;
-
     use super::*;
+    use crate::Point;
 
-    fn show(d: &mut DisplayArray) -> Vec<(f64, f64)> {
+    fn show(d: &mut LineCrossings) -> Vec<(f64, f64)> {
         let frame = LineFrame::new(Segment::new(Point::new(0.0, 0.0), Point::new(10.0, 0.0)));
         let mut out = Vec::new();
-        d.display(0, &frame, &mut out);
+        d.emit(0, &frame, &mut out);
         out.iter().map(|p| (p.piece.a.x / 10.0, p.piece.b.x / 10.0)).collect()
     }
 
     #[test]
     fn table_3_rows() {
-        let mut d = DisplayArray::default();
+        let mut d = LineCrossings::default();
         // M0 out, M1 out: {L(T1,T2), L(T3,T4)}.
         for t in [0.6, 0.1, 0.8, 0.3] {
             d.record(Along::Inside, t);
@@ -193,9 +202,49 @@ mod tests {
 
     #[test]
     fn edges_along_the_line_are_shown() {
-        let mut d = DisplayArray::default();
+        let mut d = LineCrossings::default();
         d.along((Along::Inside, 0.3), (Along::Inside, 0.5));
         d.along((Along::Before, 0.0), (Along::AtStart, 0.0));
         assert_eq!(show(&mut d), vec![(0.3, 0.5)]);
+    }
+
+    #[test]
+    fn pairs_sorted_crossings_by_parity() {
+        let mut c = LineCrossings::default();
+        c.record(Along::Before, 0.0);
+        c.record(Along::Inside, 0.6);
+        c.record(Along::Inside, 0.2);
+        c.record(Along::Inside, 0.4);
+        assert_eq!(show(&mut c), vec![(0.0, 0.2), (0.4, 0.6)]);
+        c.clear();
+        c.record(Along::Inside, 0.3);
+        c.record(Along::After, 1.0);
+        assert_eq!(show(&mut c), vec![(0.3, 1.0)]);
+    }
+
+    #[test]
+    fn merges_touching_intervals_and_drops_points() {
+        let mut c = LineCrossings::default();
+        // In at 0.2, out and in again at 0.5 (a vertex touched from inside), out at 0.8.
+        for t in [0.2, 0.5, 0.5, 0.8] {
+            c.record(Along::Inside, t);
+        }
+        assert_eq!(show(&mut c), vec![(0.2, 0.8)]);
+        c.clear();
+        // A vertex touched from outside: a zero-length inside interval, dropped.
+        c.record(Along::Inside, 0.5);
+        c.record(Along::Inside, 0.5);
+        assert_eq!(show(&mut c), vec![]);
+    }
+
+    #[test]
+    fn unites_edges_along_the_line() {
+        let mut c = LineCrossings::default();
+        c.along((Along::Inside, 0.3), (Along::Inside, 0.1));
+        c.record(Along::Inside, 0.3);
+        c.record(Along::Inside, 0.6);
+        c.along((Along::Inside, 0.8), (Along::After, 9.0));
+        c.along((Along::Before, -3.0), (Along::Before, -1.0));
+        assert_eq!(show(&mut c), vec![(0.1, 0.6), (0.8, 1.0)]);
     }
 }
