@@ -55,7 +55,7 @@ pub struct VerifyArgs {
     /// Folder the failure cases are written to, one sub-folder each.
     #[arg(long, default_value = "verify-failures")]
     pub out: PathBuf,
-    /// Failures shrunk and written per clipper and workload (0: all of them).
+    /// Failures shrunk and written per clipper, workload and check (0: all of them).
     #[arg(long, default_value_t = 10)]
     pub max_records: usize,
     /// Worker threads (default: one per core). The summary does not depend on it.
