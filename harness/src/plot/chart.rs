@@ -36,6 +36,9 @@ pub struct Chart {
     pub log_x: bool,
     /// Logarithmic y axis.
     pub log_y: bool,
+    /// X values to label on a logarithmic x axis (empty: plotters' own choice), e.g. the papers'
+    /// edge counts; a linear axis labels itself.
+    pub x_ticks: Vec<f64>,
     /// The series, drawn in order.
     pub series: Vec<Series>,
 }
@@ -47,15 +50,25 @@ impl Chart {
     pub fn write_svg(&self, path: &Path) -> Result<(), CliError> {
         let points: Vec<(f64, f64)> = self.series.iter().flat_map(|s| s.points.iter().copied()).collect();
         let points: Vec<(f64, f64)> = points.into_iter().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
-        let xr = axis_range(points.iter().map(|p| p.0), self.log_x, false);
-        let yr = axis_range(points.iter().map(|p| p.1), self.log_y, true);
-        let drawn = match (self.log_x, self.log_y) {
-            (false, false) => self.draw(path, xr, yr),
-            (true, false) => self.draw(path, xr.log_scale(), yr),
-            (false, true) => self.draw(path, xr, yr.log_scale()),
-            (true, true) => self.draw(path, xr.log_scale(), yr.log_scale()),
+        // Room on top for the legend: about one text line per series.
+        let legend = (0.06 + 0.045 * self.series.len() as f64).min(0.5);
+        let xr = axis_range(points.iter().map(|p| p.0), self.log_x, None);
+        let yr = axis_range(points.iter().map(|p| p.1), self.log_y, Some(legend));
+        let ticks = self.x_ticks.clone();
+        let drawn = match (self.log_x, ticks.is_empty()) {
+            (false, _) => self.draw_with_y(path, xr, yr),
+            (true, true) => self.draw_with_y(path, xr.log_scale(), yr),
+            (true, false) => self.draw_with_y(path, xr.log_scale().with_key_points(ticks), yr),
         };
         drawn.map_err(|e| CliError::failed(format!("{}: cannot draw the plot ({e})", path.display())))
+    }
+
+    fn draw_with_y<X>(&self, path: &Path, x: X, y: Range<f64>) -> Result<(), Box<dyn Error>>
+    where
+        X: AsRangedCoord<Value = f64>,
+        X::CoordDescType: ValueFormatter<f64>,
+    {
+        if self.log_y { self.draw(path, x, y.log_scale()) } else { self.draw(path, x, y) }
     }
 
     fn draw<X, Y>(&self, path: &Path, x: X, y: Y) -> Result<(), Box<dyn Error>>
@@ -77,7 +90,7 @@ impl Chart {
             .x_labels(6)
             .y_labels(10)
             .x_label_formatter(&tick)
-            .y_label_formatter(&tick)
+            .y_label_formatter(&value_tick)
             .x_desc(self.x_label.as_str())
             .y_desc(self.y_label.as_str())
             .axis_desc_style(("sans-serif", 17))
@@ -128,10 +141,25 @@ fn tick(v: &f64) -> String {
     }
 }
 
+/// A y tick label: plain numbers, powers of ten beyond 10^5 or below 0.01 (`1e6`, `1e-3`).
+fn value_tick(v: &f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && !(0.01..1e5).contains(&a) {
+        let e = a.log10().round();
+        if (a / 10f64.powf(e) - 1.0).abs() < 1e-9 {
+            return format!("{}1e{e}", if *v < 0.0 { "-" } else { "" });
+        }
+        return format!("{v:.1e}");
+    }
+    tick(v).replace('k', "000")
+}
+
 /// The axis range covering `values` with a margin: multiplicative on a log axis, additive on a
-/// linear one (and reaching down to 0 for a linear y axis of positive values). A y axis gets
-/// extra room on top for the legend.
-fn axis_range(values: impl Iterator<Item = f64>, log: bool, y: bool) -> Range<f64> {
+/// linear one (and reaching down to 0 for a linear y axis of positive values). A y axis is given
+/// `legend_room`, the fraction of its height left free on top for the legend.
+fn axis_range(values: impl Iterator<Item = f64>, log: bool, legend_room: Option<f64>) -> Range<f64> {
+    let y = legend_room.is_some();
+    let grow = legend_room.map_or(0.0, |f| f / (1.0 - f));
     let (lo, hi) = values
         .filter(|v| !log || *v > 0.0)
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
@@ -139,12 +167,12 @@ fn axis_range(values: impl Iterator<Item = f64>, log: bool, y: bool) -> Range<f6
         return if log { 1.0..10.0 } else { 0.0..1.0 };
     }
     if log {
-        let top = if y { hi * (hi / lo).max(4.0).powf(0.6) } else { hi * 1.4 };
+        let top = hi * 1.4 * (hi * 1.4 / (lo / 1.4)).powf(grow);
         return lo / 1.4..top;
     }
     let (lo, hi) = if y { (lo.min(0.0), hi.max(0.0)) } else { (lo, hi) };
     let pad = ((hi - lo) * 0.06).max(1e-9);
-    let top = if y { hi + (hi - lo) * 0.6 } else { hi + pad };
+    let top = hi + pad + (hi + pad - lo) * grow;
     (if y && lo == 0.0 { 0.0 } else { lo - pad })..top
 }
 
@@ -163,6 +191,7 @@ mod tests {
             y_label: "time (µs)".into(),
             log_x: true,
             log_y: true,
+            x_ticks: vec![4.0, 20.0, 200.0],
             series: vec![
                 Series {
                     label: "ours".into(),
@@ -193,13 +222,16 @@ mod tests {
         assert_eq!(tick(&2_000_000.0), "2M");
         assert_eq!(tick(&0.25), "0.25");
         assert_eq!(tick(&2.5), "2.5");
+        assert_eq!(value_tick(&1e6), "1e6");
+        assert_eq!(value_tick(&20_000.0), "20000");
+        assert_eq!(value_tick(&0.001), "1e-3");
     }
 
     #[test]
     fn ranges_cover_the_values() {
-        let r = axis_range([2.0, 8.0].into_iter(), false, true);
+        let r = axis_range([2.0, 8.0].into_iter(), false, Some(0.3));
         assert!(r.start == 0.0 && r.end > 8.0);
-        let r = axis_range([10.0, 1000.0].into_iter(), true, false);
+        let r = axis_range([10.0, 1000.0].into_iter(), true, None);
         assert!(r.start < 10.0 && r.end > 1000.0);
     }
 }

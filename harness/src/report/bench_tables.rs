@@ -129,6 +129,14 @@ pub fn chart(points: &Points, group: &str, clippers: &[String]) -> Chart {
         y_label: "time per call (µs, log scale)".to_owned(),
         log_x: true,
         log_y: true,
+        x_ticks: points
+            .keys()
+            .filter(|(g, o, _, _)| g == group && o == op)
+            .map(|(_, _, s, _)| *s)
+            .collect::<BTreeSet<usize>>()
+            .into_iter()
+            .map(|s| s as f64)
+            .collect(),
         series,
     }
 }

@@ -147,6 +147,7 @@ pub fn chart(rows: &[Row]) -> Chart {
         y_label: "improvement factor = Method 2 time / Method 1 time (log scale)".to_owned(),
         log_x: true,
         log_y: true,
+        x_ticks: vec![4.0, 10.0, 20.0, 40.0, 100.0, 200.0],
         series,
     }
 }

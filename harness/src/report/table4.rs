@@ -228,6 +228,7 @@ pub fn chart(rows: &[Row]) -> Chart {
         y_label: "gain = (Liu - New2) / New2 (%)".to_owned(),
         log_x: false,
         log_y: false,
+        x_ticks: Vec::new(),
         series,
     }
 }
