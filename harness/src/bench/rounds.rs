@@ -20,6 +20,10 @@ use crate::registry::Registry;
 /// Every case is read under this rule (the papers' parity rule, and every clipper supports it).
 const FILL: FillRule = FillRule::EvenOdd;
 
+/// A clipper whose time, extrapolated linearly from its last size, exceeds this many caps is not
+/// started at the next size: one such call could take minutes. Below that it runs, once if over the cap.
+const PREDICTED_CAP_FACTOR: f64 = 15.0;
+
 /// How much to measure.
 #[derive(Clone, Copy, Debug)]
 pub struct Settings {
@@ -103,9 +107,9 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                     }
                     if let Some(&(prev_size, prev)) = last.get(c.name()) {
                         let predicted = prev.as_secs_f64() * size as f64 / prev_size as f64;
-                        if prev_size < size && predicted > 4.0 * settings.cap_seconds {
+                        if prev_size < size && predicted > PREDICTED_CAP_FACTOR * settings.cap_seconds {
                             let reason = format!(
-                                "predicted {predicted:.1} s per call from {prev:.2?} at {prev_size} edges, over 4x the {} s cap",
+                                "predicted {predicted:.1} s per call from {prev:.2?} at {prev_size} edges, over {PREDICTED_CAP_FACTOR}x the {} s cap",
                                 settings.cap_seconds
                             );
                             stopped.insert(c.name(), Stopped { size, reason });
