@@ -32,7 +32,7 @@ pub struct Provenance {
     pub git_revision: String,
     /// Where it ran.
     pub machine: Machine,
-    /// UTC start time, ISO 8601.
+    /// UTC time the measurements ended and the files were written, ISO 8601.
     pub date: String,
     /// Command-specific settings (repetitions, sizes, caps), as given.
     pub parameters: serde_json::Value,
@@ -41,7 +41,7 @@ pub struct Provenance {
 }
 
 impl Provenance {
-    /// The provenance of a run starting now.
+    /// The provenance of a run whose measurements end now.
     pub fn now(command: &str, seed: u64, parameters: serde_json::Value) -> Provenance {
         Provenance {
             command: command.to_owned(),
