@@ -1,0 +1,86 @@
+//! Shrunk `grid` workload failures from `clipbench verify` (positive fill), kept as named
+//! regression tests: each runs the recorded operation and the exact oracle on conventional output.
+
+use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Ring, WindowKind};
+use clip_testkit::polygon_oracle::{OutputRules, REGION_TOLERANCE, check_polygon_op};
+use clip_testkit::workload::polygon_case;
+use clip_vatti::Vatti;
+
+/// Rings from coordinate lists (closing point omitted).
+fn polygons(rings: &[&[(f64, f64)]]) -> Polygons {
+    Polygons::new(rings.iter().map(|r| Ring::new(r.iter().map(|&(x, y)| Point::new(x, y)).collect())).collect())
+}
+
+/// Runs `op` under `fill` and checks the output with the exact oracle.
+fn assert_oracle(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) {
+    let out = Vatti.clip(subject, clip, op, fill).expect("valid input");
+    let verdict = check_polygon_op(subject, clip, op, fill, &out, &OutputRules::conventional(REGION_TOLERANCE));
+    assert!(verdict.is_ok(), "{op} {fill}: {}\noutput: {:?}", verdict.unwrap_err(), out.rings);
+}
+
+/// Grid seed 1 index 3, shrunk: a triangle whose apex (4, 20) is a vertex of a clip triangle
+/// and whose edge passes through another clip vertex (2, 16); the difference has a hole
+/// touching the outer ring at (2, 16).
+fn grid_3() -> (Polygons, Polygons) {
+    let subject = polygons(&[&[(4.0, 20.0), (0.0, 12.0), (4.0, 6.0)]]);
+    let clip = polygons(&[&[(2.0, 12.0), (4.0, 22.0), (10.0, 4.0)], &[(4.0, 20.0), (2.0, 16.0), (8.0, 8.0)]]);
+    (subject, clip)
+}
+
+/// Grid seed 1 index 97, shrunk: a subject edge collinear with and overlapping a clip edge of a
+/// self-intersecting clip, a third clip edge crossing both where the overlap ends.
+fn grid_97() -> (Polygons, Polygons) {
+    let subject = polygons(&[&[(19.0, 17.0), (17.0, 21.0), (17.0, 15.0)]]);
+    let clip = polygons(&[&[(20.0, 18.0), (17.0, 15.0), (22.0, 18.0), (15.0, 14.0)]]);
+    (subject, clip)
+}
+
+#[test]
+fn grid_3_difference_positive() {
+    let (subject, clip) = grid_3();
+    assert_oracle(&subject, &clip, BoolOp::Difference, FillRule::Positive);
+}
+
+#[test]
+fn grid_3_xor_positive() {
+    let (subject, clip) = grid_3();
+    assert_oracle(&subject, &clip, BoolOp::Xor, FillRule::Positive);
+}
+
+#[test]
+fn grid_97_union_positive() {
+    let (subject, clip) = grid_97();
+    assert_oracle(&subject, &clip, BoolOp::Union, FillRule::Positive);
+}
+
+#[test]
+fn grid_97_xor_positive() {
+    let (subject, clip) = grid_97();
+    assert_oracle(&subject, &clip, BoolOp::Xor, FillRule::Positive);
+}
+
+/// Every operation and fill rule on both cases.
+#[test]
+fn grid_3_and_97_all_ops_and_fills() {
+    for (subject, clip) in [grid_3(), grid_97()] {
+        for op in BoolOp::ALL {
+            for fill in FillRule::ALL {
+                assert_oracle(&subject, &clip, op, fill);
+            }
+        }
+    }
+}
+
+/// The unshrunk cases as the harness generated them (grid seed 1, indices 3 and 97), every
+/// operation under positive and negative fill.
+#[test]
+fn grid_seed_1_cases_3_and_97_unshrunk() {
+    for index in [3, 97] {
+        let case = polygon_case("grid", 1, index, WindowKind::Any).expect("workload");
+        for op in BoolOp::ALL {
+            for fill in [FillRule::Positive, FillRule::Negative] {
+                assert_oracle(&case.subject, &case.clip, op, fill);
+            }
+        }
+    }
+}
