@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use clip_core::{BoolOp, Polygons, Segment};
+use clip_testkit::polygon_oracle::{OutputRules, region_area};
 
 use super::clipper2_file::parse_clipper2;
 use super::suite_case::{CaseInput, PolygonExpectation, SuiteCase};
@@ -108,20 +109,43 @@ pub fn area_tolerance(n: usize) -> f64 {
     }
 }
 
+/// What a result is judged on: its net area, and its ring count where rings mean something.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Measured {
+    /// Net covered area.
+    pub area: f64,
+    /// Number of output rings; `None` for bridged output (Sutherland-Hodgman, four-state), whose
+    /// rings keep the subject's rings joined by bridges and so do not count polygons.
+    pub count: Option<i64>,
+}
+
+impl Measured {
+    /// Conventional output: the rings' signed area (outers positive, holes negative) and their
+    /// number, as Clipper2's test measures. Bridged output keeps the subject's orientation and is
+    /// read under the input's fill rule, so its area is the covered region's, computed exactly.
+    pub fn of(output: &Polygons, rules: &OutputRules) -> Measured {
+        if rules.conventional {
+            Measured { area: output.signed_area(), count: Some(output.rings.len() as i64) }
+        } else {
+            Measured { area: region_area(&[(output, rules.output_fill)], |inside| inside[0]), count: None }
+        }
+    }
+}
+
 /// Judges a result the way TestPolygons.cpp does: the truncated net area within the record's
 /// fraction of the measured area, the path count within its count tolerance; a stored value of 0
-/// or less is not checked. `Err` holds (expected, got).
-pub fn judge(number: usize, area: i64, count: i64, output: &Polygons) -> Result<(), (String, String)> {
-    let measured_area = output.signed_area().trunc();
-    let measured_count = output.rings.len() as i64;
+/// or less is not checked, and neither is the count of bridged output.
+pub fn judge(number: usize, area: i64, count: i64, measured: Measured) -> Result<(), (String, String)> {
+    let measured_area = measured.area.trunc();
     let area_ok = area <= 0 || (measured_area - area as f64).abs() <= area_tolerance(number) * measured_area.abs();
-    let count_ok = count <= 0 || (measured_count - count).abs() <= count_tolerance(number);
+    let count_ok = count <= 0 || measured.count.is_none_or(|c| (c - count).abs() <= count_tolerance(number));
     if area_ok && count_ok {
         Ok(())
     } else {
+        let got_count = measured.count.map_or("not judged (bridged output)".to_owned(), |c| c.to_string());
         Err((
             format!("area {area} ±{}%, count {count} ±{}", area_tolerance(number) * 100.0, count_tolerance(number)),
-            format!("area {measured_area}, count {measured_count}"),
+            format!("area {measured_area}, count {got_count}"),
         ))
     }
 }
@@ -129,6 +153,7 @@ pub fn judge(number: usize, area: i64, count: i64, output: &Polygons) -> Result<
 #[cfg(test)]
 mod tests {
     use super::*;
+    use clip_core::FillRule;
     use clip_core::Rect;
 
     #[test]
@@ -141,10 +166,24 @@ mod tests {
     #[test]
     fn judge_checks_area_and_count_unless_stored_as_zero() {
         let square = Polygons::from(Rect::new(0.0, 0.0, 10.0, 10.0));
-        assert!(judge(1, 100, 1, &square).is_ok());
-        assert!(judge(1, 101, 1, &square).is_ok(), "1% of 100");
-        assert!(judge(1, 110, 1, &square).is_err());
-        assert!(judge(1, 100, 2, &square).is_err());
-        assert!(judge(1, 0, -1, &square).is_ok());
+        let m = Measured::of(&square, &OutputRules::conventional(1e-9));
+        assert!(judge(1, 100, 1, m).is_ok());
+        assert!(judge(1, 101, 1, m).is_ok(), "1% of 100");
+        assert!(judge(1, 110, 1, m).is_err());
+        assert!(judge(1, 100, 2, m).is_err());
+        assert!(judge(1, 0, -1, m).is_ok());
+    }
+
+    #[test]
+    fn bridged_output_is_judged_by_region_under_the_input_rule() {
+        // A clockwise square kept clockwise, as Sutherland-Hodgman keeps a subject's orientation:
+        // under the negative rule it covers its area; its ring count is not judged.
+        let cw = Polygons::from(Rect::new(0.0, 0.0, 3.0, 3.0).to_ring().reversed());
+        let m = Measured::of(&cw, &OutputRules::bridged(FillRule::Negative, 1e-9));
+        assert_eq!(m, Measured { area: 9.0, count: None });
+        assert!(judge(188, 9, 1, m).is_ok());
+        assert!(judge(188, 10, 1, m).is_err());
+        let wrong_rule = Measured::of(&cw, &OutputRules::bridged(FillRule::Positive, 1e-9));
+        assert!(judge(188, 9, 1, wrong_rule).is_err());
     }
 }

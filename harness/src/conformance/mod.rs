@@ -139,7 +139,10 @@ fn judge_polygon(entry: &PolygonEntry, case: &SuiteCase) -> Verdict {
         Err(message) => return Verdict::Fail("a result".into(), message),
     };
     let judged = match expected {
-        PolygonExpectation::Clipper2 { number, area, count } => clipper2_suites::judge(*number, *area, *count, &output),
+        PolygonExpectation::Clipper2 { number, area, count } => {
+            let measured = clipper2_suites::Measured::of(&output, &output_rules(entry, fill));
+            clipper2_suites::judge(*number, *area, *count, measured)
+        }
         PolygonExpectation::Region(want) => {
             let allowed = tolerance(subject, clip, entry.tolerance);
             same_region((&output, output_rules(entry, fill).output_fill), (want, fill), allowed).map_err(|area| {
