@@ -64,6 +64,7 @@
 
 pub mod case_record;
 pub mod line_oracle;
+pub mod line_probe;
 pub mod polygon_oracle;
 pub mod shrink;
 pub mod workload;

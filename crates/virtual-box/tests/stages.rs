@@ -1,11 +1,9 @@
 //! Each rejection stage of the paper, pinned with the counters: which stage removes a segment,
 //! and that New1 (no 45° box) leaves it to a later stage with the same (empty) result.
 
-mod common;
-
 use clip_core::{Polygons, Segment};
+use clip_testkit::line_probe::{seg, window};
 use clip_virtual_box::{PreparedVirtualBox, StageCounts};
-use common::{seg, window};
 
 /// The counts of clipping `s` alone with New2 and New1; both must show nothing.
 fn stages(w: &Polygons, s: Segment) -> (StageCounts, StageCounts) {
