@@ -3,18 +3,9 @@
 
 use clip_core::{LineClipper, Point, Polygons, Ring, Segment, WindowKind};
 use clip_cyrus_beck::{CyrusBeck, Liu};
-use clip_testkit::line_oracle::{LINE_T_TOLERANCE, check_line_batch};
+use clip_testkit::line_probe::assert_batch_matches_oracle;
 use clip_testkit::workload::line_case;
 use proptest::prelude::*;
-
-/// The clipper's pieces for the batch pass the exact line oracle.
-fn check_batch(clipper: &dyn LineClipper, w: &Polygons, segments: &[Segment], what: &str) {
-    let mut out = Vec::new();
-    clipper.prepare(w).unwrap().clip_batch(segments, &mut out).unwrap();
-    if let Err(failure) = check_line_batch(w, segments, &out, LINE_T_TOLERANCE) {
-        panic!("{what}, {}: {failure} in {w:?} with {segments:?}", clipper.name());
-    }
-}
 
 #[test]
 fn workloads_agree_with_the_oracle() {
@@ -23,10 +14,10 @@ fn workloads_agree_with_the_oracle() {
         let cases = std::env::var("LINE_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(12);
         for index in 0..cases {
             let any = line_case(workload, 7, index, WindowKind::Any, 150).unwrap();
-            check_batch(&Liu, &any.window, &any.segments, &any.description);
+            assert_batch_matches_oracle(&Liu, &any.window, &any.segments, &any.description);
             let convex = line_case(workload, 7, index, WindowKind::Convex, 150).unwrap();
-            check_batch(&Liu, &convex.window, &convex.segments, &convex.description);
-            check_batch(&CyrusBeck, &convex.window, &convex.segments, &convex.description);
+            assert_batch_matches_oracle(&Liu, &convex.window, &convex.segments, &convex.description);
+            assert_batch_matches_oracle(&CyrusBeck, &convex.window, &convex.segments, &convex.description);
         }
     }
 }
@@ -53,9 +44,9 @@ proptest! {
         let segments: Vec<Segment> = segments.into_iter().map(|(a, b)| Segment::new(a, b)).collect();
         if let Ok(prepared) = Liu.prepare(&w) {
             drop(prepared);
-            check_batch(&Liu, &w, &segments, "grid");
+            assert_batch_matches_oracle(&Liu, &w, &segments, "grid");
             if CyrusBeck.prepare(&w).is_ok() {
-                check_batch(&CyrusBeck, &w, &segments, "grid, convex");
+                assert_batch_matches_oracle(&CyrusBeck, &w, &segments, "grid, convex");
             }
         }
     }

@@ -5,7 +5,7 @@
 //! which compares the clipper, the hand-computed intervals and [`visible_intervals`] with each
 //! other, for both window orientations and both segment directions.
 
-use crate::line_oracle::{pieces_to_intervals, visible_intervals};
+use crate::line_oracle::{LINE_T_TOLERANCE, check_line_batch, pieces_to_intervals, visible_intervals};
 use clip_core::{ClipError, LineClipper, Point, Polygons, Ring, Segment};
 
 /// The parameter tolerance of the hand-computed cases: their answers are exact fractions.
@@ -48,6 +48,16 @@ pub fn assert_intervals(got: &[(f64, f64)], expected: &[(f64, f64)], tol: f64, w
     let close = got.len() == expected.len()
         && got.iter().zip(expected).all(|(g, e)| (g.0 - e.0).abs() <= tol && (g.1 - e.1).abs() <= tol);
     assert!(close, "{what}: got {got:?}, expected {expected:?}");
+}
+
+/// Clips the batch with `clipper` and panics, naming `what`, the clipper, the window and the
+/// segments, unless [`check_line_batch`] accepts the pieces within [`LINE_T_TOLERANCE`].
+pub fn assert_batch_matches_oracle(clipper: &dyn LineClipper, w: &Polygons, segments: &[Segment], what: &str) {
+    let mut out = Vec::new();
+    clipper.prepare(w).expect("window accepted").clip_batch(segments, &mut out).expect("finite segments");
+    if let Err(failure) = check_line_batch(w, segments, &out, LINE_T_TOLERANCE) {
+        panic!("{what}, {}: {failure} in {w:?} with {segments:?}", clipper.name());
+    }
 }
 
 /// What a singular case exercises; the crates' tests run one kind per test.

@@ -3,7 +3,7 @@
 
 use clip_core::{LineClipper, Point, Polygons, Ring, Segment, WindowKind};
 use clip_cyrus_beck::{CyrusBeck, Liu};
-use clip_testkit::line_oracle::{LINE_T_TOLERANCE, check_line_batch};
+use clip_testkit::line_probe::assert_batch_matches_oracle;
 use clip_testkit::workload::line_case;
 use clip_virtual_box::VirtualBox;
 use proptest::prelude::*;
@@ -16,11 +16,7 @@ fn check_all(w: &Polygons, segments: &[Segment], what: &str) {
         clippers.push(&CyrusBeck);
     }
     for c in clippers {
-        let mut out = Vec::new();
-        c.prepare(w).unwrap().clip_batch(segments, &mut out).unwrap();
-        if let Err(failure) = check_line_batch(w, segments, &out, LINE_T_TOLERANCE) {
-            panic!("{what}, {}: {failure} in {w:?} with {segments:?}", c.name());
-        }
+        assert_batch_matches_oracle(c, w, segments, what);
     }
 }
 
