@@ -297,6 +297,48 @@ pub fn check_singular_case(clipper: &dyn LineClipper, case: &SingularCase) {
     }
 }
 
+/// Runs every case of `kind` through each of `clippers` whose capabilities take its window,
+/// with [`check_singular_case`]. Panics if no clipper takes a case's window.
+pub fn check_singular_kind(kind: SingularKind, clippers: &[&dyn LineClipper]) {
+    for case in singular_cases_of(kind) {
+        let takers: Vec<_> = clippers.iter().filter(|c| c.capabilities().window.accepts(&case.window)).collect();
+        assert!(!takers.is_empty(), "{}: no clipper takes the window {:?}", case.name, case.window);
+        for c in takers {
+            check_singular_case(*c, &case);
+        }
+    }
+}
+
+/// Defines, in the calling test file, one `#[test]` per
+/// [`SingularKind`](crate::line_probe::SingularKind), each running
+/// [`check_singular_kind`](crate::line_probe::check_singular_kind) with the given clippers
+/// (`&dyn LineClipper`s): `clip_testkit::singular_case_tests!(&Liu, &CyrusBeck);` at the top
+/// level of a test file.
+#[macro_export]
+macro_rules! singular_case_tests {
+    ($($clipper:expr),+ $(,)?) => {
+        $crate::singular_case_tests!(@each [$($clipper),+]
+            crossing_the_interior CrossingInterior,
+            through_a_convex_vertex ConvexVertex,
+            through_a_concave_vertex ConcaveVertex,
+            along_an_edge AlongEdge,
+            endpoints_on_the_boundary EndpointOnBoundary,
+            inside_the_box_but_outside_the_window InsideBoxOutsideWindow,
+            rejected_by_the_bounding_box OutsideBox,
+            a_convex_window_with_collinear_vertices CollinearVertices,
+            several_rings_under_even_odd SeveralRings,
+        );
+    };
+    (@each $clippers:tt $($test:ident $kind:ident,)+) => {
+        $(
+            #[test]
+            fn $test() {
+                $crate::line_probe::check_singular_kind($crate::line_probe::SingularKind::$kind, &$clippers);
+            }
+        )+
+    };
+}
+
 /// Checks that `clipper` turns bad input into an error or nothing: a non-finite segment fails
 /// the whole batch with [`ClipError::NonFinite`] naming it and writes nothing, zero-length
 /// segments show nothing, and empty, collinear or non-finite windows are rejected.

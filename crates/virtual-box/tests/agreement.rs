@@ -38,13 +38,8 @@ fn grid_point() -> impl Strategy<Value = Point> {
     (0i32..=6, 0i32..=6).prop_map(|(x, y)| Point::new(f64::from(x), f64::from(y)))
 }
 
+// proptest's default: 256 cases, or PROPTEST_CASES=n for a longer run.
 proptest! {
-    // 256 cases by default; PROPTEST_CASES=n for a longer run.
-    #![proptest_config(ProptestConfig {
-        cases: std::env::var("PROPTEST_CASES").ok().and_then(|n| n.parse().ok()).unwrap_or(256),
-        ..ProptestConfig::default()
-    })]
-
     /// Random (often self-intersecting, often degenerate) rings on a 7x7 grid and segments on a
     /// slightly larger one: vertices on segments, collinear edges, shared endpoints everywhere.
     #[test]
