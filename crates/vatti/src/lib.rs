@@ -48,7 +48,8 @@
 //!   rings are split there (two rings touching at a vertex, never one ring visiting it twice);
 //!   `clip_core::nest` groups the holes with their outers. No area threshold is applied, so
 //!   slivers a unit wide survive where Clipper2, rounding to its integer grid, drops them: ring
-//!   counts differ from Clipper2's on many of its `Polygons.txt` cases (the test lists them).
+//!   counts differ from Clipper2's on many of its `Polygons.txt` cases (the test runs Clipper2
+//!   on each, normalises its output to these conventions and checks the counts agree).
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE`, rings with
 //!   fewer than three distinct points) gives a [`ClipError`]; nothing panics or loops.
 //!

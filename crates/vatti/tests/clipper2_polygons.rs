@@ -1,9 +1,11 @@
 //! Clipper2's `Polygons.txt` (195 cases): every area within Clipper2's own tolerance and every
-//! count within its count tolerance (FORMAT.md in the test data lists both).
+//! count within its count tolerance (FORMAT.md in the test data lists both) of the stored count,
+//! or, where our output conventions differ, of Clipper2's count run live and normalised to them.
 
 mod common;
 
 use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons, Ring};
+use clip_testkit::peers::Clipper2Clipper;
 use clip_vatti::Vatti;
 
 struct Case {
@@ -93,109 +95,76 @@ fn area_tolerance(n: usize) -> f64 {
     }
 }
 
-/// Cases whose ring count differs from Clipper2's stored count beyond its tolerance because of
-/// output conventions, with the count we produce (asserted exactly, so a change forces a look):
+/// Where our ring count differs from Clipper2's stored count beyond its tolerance, the
+/// difference must come from output conventions, and this proves it case by case by running
+/// Clipper2 itself on the case:
 ///
 /// 1. We split rings wherever the region pinches at a vertex (DESIGN.md's simple rings: rings
 ///    touch each other at vertices, no ring visits a vertex twice). Clipper2 keeps many such
-///    rings joined as one path through the pinch point, depending on its sweep order.
+///    rings joined as one path through the pinch point, depending on its sweep order. Its
+///    output is normalised to our convention by passing it through Vatti as a union with
+///    nothing under non-zero, which splits pinches (and merges rings sharing edges) as we do.
 /// 2. Clipper2 rounds every intersection point to its integer grid, so slivers narrower than a
-///    unit collapse and its output drops them (rings under 2 square units); we keep the exact
-///    region (see case 44 below for what that does to an area).
+///    unit collapse and its output drops them; we keep the exact region (see case 44 below for
+///    what that does to an area). On its own integer grid (how its tests run this data) our
+///    count may exceed the normalised one by our [`thin_rings`]; on a grid scaled to 2^30 of
+///    the extent ([`Clipper2Clipper::new`]) nothing real collapses, and the counts must agree.
 ///
-/// Every listed case still passes the area tolerance, the validity check and the sampled
-/// region check. Cases 120-184 (large random self-intersecting polygons) are dominated by 1;
-/// the small hand-made cases by 1 and 2 together.
-const CONVENTION_COUNTS: &[(usize, i64)] = &[
-    (8, 3),
-    (12, 5),
-    (13, 8),
-    (14, 10),
-    (17, 2),
-    (18, 3),
-    (22, 3),
-    (24, 3),
-    (32, 3),
-    (35, 3),
-    (37, 4),
-    (40, 4),
-    (42, 4),
-    (44, 2),
-    (45, 4),
-    (62, 1),
-    (75, 2),
-    (86, 5),
-    (100, 2),
-    (106, 6),
-    (107, 4),
-    (118, 13),
-    (119, 4),
-    (120, 417),
-    (121, 450),
-    (122, 363),
-    (123, 400),
-    (124, 458),
-    (125, 390),
-    (126, 356),
-    (127, 411),
-    (128, 451),
-    (129, 402),
-    (130, 452),
-    (131, 353),
-    (132, 400),
-    (133, 337),
-    (134, 385),
-    (135, 368),
-    (136, 419),
-    (137, 401),
-    (138, 435),
-    (139, 424),
-    (140, 455),
-    (141, 310),
-    (142, 236),
-    (143, 267),
-    (144, 311),
-    (145, 336),
-    (146, 467),
-    (147, 280),
-    (148, 291),
-    (149, 253),
-    (150, 259),
-    (151, 321),
-    (152, 288),
-    (153, 263),
-    (154, 282),
-    (155, 275),
-    (156, 339),
-    (157, 328),
-    (158, 289),
-    (159, 90),
-    (160, 91),
-    (161, 29),
-    (162, 61),
-    (163, 197),
-    (164, 258),
-    (165, 250),
-    (166, 250),
-    (167, 248),
-    (168, 227),
-    (169, 50),
-    (170, 52),
-    (171, 50),
-    (172, 233),
-    (173, 230),
-    (174, 243),
-    (175, 295),
-    (176, 257),
-    (177, 230),
-    (178, 233),
-    (179, 269),
-    (180, 145),
-    (181, 1097),
-    (182, 248),
-    (185, 9),
-    (194, 3),
-];
+/// Both within Clipper2's count tolerance, and our count may fall short by the case's
+/// [`PEER_CRACKS`]; the fine grid is not asserted for [`FINE_GRID_OVERLAPS`]. Returns the
+/// comparison for the tally, or `Err` with the figures.
+fn convention_count_check(c: &Case, out: &Polygons) -> Result<ConventionCount, String> {
+    let normalised_count = |clipper: Clipper2Clipper| -> Result<i64, String> {
+        let theirs = clipper.clip(&c.subject, &c.clip, c.op, c.fill).map_err(|e| e.to_string())?;
+        let ours = Vatti.clip(&theirs, &Polygons::empty(), BoolOp::Union, FillRule::NonZero);
+        Ok(ours.map_err(|e| e.to_string())?.rings.len() as i64)
+    };
+    let (fine, native) = (normalised_count(Clipper2Clipper::new())?, normalised_count(Clipper2Clipper::native())?);
+    let ours = out.rings.len() as i64;
+    let thin = thin_rings(out);
+    let tolerance = count_tolerance(c.number);
+    let cracks = PEER_CRACKS.iter().find(|&&(n, _)| n == c.number).map_or(0, |&(_, k)| k);
+    let within = |theirs: i64, extra: i64| (theirs - tolerance - cracks..=theirs + tolerance + extra).contains(&ours);
+    let fine_overlap = FINE_GRID_OVERLAPS.contains(&c.number);
+    if !(within(fine, 0) || fine_overlap) || !within(native, thin) {
+        return Err(format!(
+            "count {ours} (stored {}): Clipper2 normalised {fine} on the fine grid, {native} on its integer \
+             grid; tolerance {tolerance}, {thin} thin rings of ours, {cracks} recorded cracks",
+            c.count
+        ));
+    }
+    Ok(ConventionCount { fine_exact: ours == fine, native_exact: ours == native })
+}
+
+/// How a convention case compared with Clipper2's live, normalised counts.
+struct ConventionCount {
+    fine_exact: bool,
+    native_exact: bool,
+}
+
+/// Our rings narrower than a unit on average (twice the area over the perimeter): Clipper2's
+/// integer rounding moves their vertices by up to half a unit each way, which can collapse them
+/// to nothing (or below its 2 square units), so it may drop them where we keep them.
+fn thin_rings(out: &Polygons) -> i64 {
+    let thin = |r: &&Ring| {
+        let perimeter: f64 = r.edges().map(|e| e.a.distance(e.b)).sum();
+        2.0 * r.signed_area().abs() < perimeter
+    };
+    out.rings.iter().filter(thin).count() as i64
+}
+
+/// Cases where Clipper2 has more rings than the exact region, examined and recorded as the
+/// peer's doing: `(case, extra rings)`. Case 62 is one ring with a zero-area spike whose line
+/// crosses an edge at (572.72.., 245.45..); Clipper2 rounds that crossing onto its grid, which
+/// opens a crack from the spike's base to the edge and returns two triangles touching at the
+/// rounded point (on either grid). The exact region is one quadrilateral, our output.
+const PEER_CRACKS: &[(usize, i64)] = &[(62, 1)];
+
+/// Cases where Clipper2's rings on the fine grid touch at points that its rounding (steps of
+/// 5e-7 here) moves into a slight overlap, so the normalising union merges them: case 106's two
+/// outers, which we and Clipper2 on its integer grid both keep apart (6 rings), become one with
+/// holes (8 rings).
+const FINE_GRID_OVERLAPS: &[usize] = &[106];
 
 /// Cases whose stored area is off because Clipper2 rounds intersection points to integers:
 /// `(case, exact area)`. Case 44's result is two slivers; integrating the exact region by 400000
@@ -207,6 +176,7 @@ fn polygons_txt() {
     let cases = load();
     assert_eq!(cases.len(), 195);
     let mut failures = Vec::new();
+    let mut tally = CountTally::default();
     for c in &cases {
         let out = match Vatti.clip(&c.subject, &c.clip, c.op, c.fill) {
             Ok(out) => out,
@@ -224,15 +194,17 @@ fn polygons_txt() {
             failures.push(format!("case {}: area {area} expected {}", c.number, c.area));
         }
         let count = out.rings.len() as i64;
-        match CONVENTION_COUNTS.iter().find(|&&(n, _)| n == c.number) {
-            Some(&(_, ours)) if count != ours => {
-                failures.push(format!("case {}: count {count}, recorded convention count {ours}", c.number))
+        if c.count > 0 && (count - c.count).abs() > count_tolerance(c.number) {
+            match convention_count_check(c, &out) {
+                Ok(compared) => {
+                    tally.convention += 1;
+                    tally.fine_exact += usize::from(compared.fine_exact);
+                    tally.native_exact += usize::from(compared.native_exact);
+                }
+                Err(e) => failures.push(format!("case {}: {e}", c.number)),
             }
-            Some(_) => {}
-            None if c.count > 0 && (count - c.count).abs() > count_tolerance(c.number) => {
-                failures.push(format!("case {}: count {count} expected {}", c.number, c.count))
-            }
-            None => {}
+        } else if c.count > 0 {
+            if count == c.count { tally.stored_exact += 1 } else { tally.stored_within += 1 }
         }
         if let Err(e) = common::check_valid(&out) {
             failures.push(format!("case {}: invalid output: {e}", c.number));
@@ -241,5 +213,21 @@ fn polygons_txt() {
             failures.push(format!("case {}: wrong region: {e}", c.number));
         }
     }
+    eprintln!("ring counts: {tally:?}");
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// How the ring counts compared (printed with `--nocapture`).
+#[derive(Debug, Default)]
+struct CountTally {
+    /// Equal to the stored count.
+    stored_exact: usize,
+    /// Within the stored count's tolerance.
+    stored_within: usize,
+    /// Beyond it and checked against Clipper2's live, normalised counts.
+    convention: usize,
+    /// Of those, equal to the normalised count on the fine grid.
+    fine_exact: usize,
+    /// Of those, equal to the normalised count on Clipper2's integer grid.
+    native_exact: usize,
 }
