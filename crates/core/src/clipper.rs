@@ -46,6 +46,18 @@ impl PolygonCapabilities {
     pub fn supports(&self, op: BoolOp, fill: FillRule) -> bool {
         self.ops.contains(&op) && self.fill_rules.contains(&fill)
     }
+
+    /// `Ok` when the clipper does `op` under `fill`, else the [`ClipError::Unsupported`] it
+    /// returns: the guard at the top of every [`PolygonClipper::clip`].
+    pub fn check(&self, clipper: &'static str, op: BoolOp, fill: FillRule) -> Result<(), ClipError> {
+        if !self.ops.contains(&op) {
+            return Err(ClipError::Unsupported { clipper, what: format!("the {op} operation") });
+        }
+        if !self.fill_rules.contains(&fill) {
+            return Err(ClipError::Unsupported { clipper, what: format!("the {fill} fill rule") });
+        }
+        Ok(())
+    }
 }
 
 /// A boolean operation on polygon sets.

@@ -39,21 +39,14 @@ impl PolygonClipper for FourState {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        if op != BoolOp::Intersection {
-            return Err(ClipError::Unsupported { clipper: NAME, what: format!("the {op} operation") });
-        }
+        self.capabilities().check(NAME, op, fill)?;
         validate_polygons(subject, Operand::Subject)?;
         let rect = rect_window(clip, NAME)?;
         // Any fill rule: like Sutherland-Hodgman, the walk replaces what lies outside a boundary
         // by pieces of that boundary, which keeps every winding number inside the rectangle. The
         // window is read under `fill` too: under positive (negative) a clockwise
         // (counter-clockwise) rectangle covers nothing.
-        let orientation = clip.rings[0].convex_orientation();
-        let covers = match fill {
-            FillRule::EvenOdd | FillRule::NonZero => true,
-            FillRule::Positive => orientation == Some(Orientation::CounterClockwise),
-            FillRule::Negative => orientation == Some(Orientation::Clockwise),
-        };
+        let covers = clip.rings[0].convex_orientation().is_some_and(|o| fill.is_inside(o.sign()));
         if !covers {
             return Ok(Polygons::empty());
         }

@@ -4,7 +4,7 @@ use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, WindowKind, validate_polygons,
 };
 
-use crate::window::{ConvexWindow, window_covers};
+use crate::window::ConvexWindow;
 use crate::{Form, NAME};
 
 /// Sutherland-Hodgman reentrant clipping of any subject against a convex window
@@ -46,16 +46,14 @@ impl PolygonClipper for SutherlandHodgman {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        if op != BoolOp::Intersection {
-            return Err(ClipError::Unsupported { clipper: NAME, what: format!("the {op} operation") });
-        }
+        self.capabilities().check(NAME, op, fill)?;
         validate_polygons(subject, Operand::Subject)?;
         let window = ConvexWindow::new(clip)?;
         // Any fill rule: clipping to half-planes keeps every winding number inside the window, so
         // the output read under `fill` is the subject read under `fill`, within the window. The
         // window is read under `fill` too: under positive (negative) a clockwise
         // (counter-clockwise) window covers nothing.
-        if !window_covers(clip, fill) {
+        if !clip.rings[0].convex_orientation().is_some_and(|o| fill.is_inside(o.sign())) {
             return Ok(Polygons::empty());
         }
         Ok(window.clip(subject, self.form))

@@ -1,7 +1,7 @@
 //! The convex window prepared as a list of boundaries, and the clipping of whole polygon sets.
 
 use clip_core::predicates::{Orientation, orient};
-use clip_core::{ClipError, FillRule, Point, Polygons, Ring, convex_window};
+use clip_core::{ClipError, Point, Polygons, Ring, convex_window};
 
 use crate::boundary::Boundary;
 use crate::list_form::clip_list;
@@ -64,16 +64,4 @@ pub(crate) fn encloses_area(ring: Ring) -> Option<Ring> {
     let &first = pts.first()?;
     let second = pts.iter().copied().find(|&p| p != first)?;
     pts.iter().any(|&p| orient(first, second, p) != Orientation::Collinear).then_some(ring)
-}
-
-/// True when a convex window (already validated) covers its interior under `fill`: always under
-/// even-odd and non-zero; under positive only when counter-clockwise, under negative only when
-/// clockwise (its winding number inside is +1 or -1).
-pub(crate) fn window_covers(window: &Polygons, fill: FillRule) -> bool {
-    let orientation = window.rings.first().and_then(Ring::convex_orientation);
-    match fill {
-        FillRule::EvenOdd | FillRule::NonZero => true,
-        FillRule::Positive => orientation == Some(Orientation::CounterClockwise),
-        FillRule::Negative => orientation == Some(Orientation::Clockwise),
-    }
 }
