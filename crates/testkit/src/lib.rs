@@ -14,6 +14,9 @@
 //!   input rings. Plus area identities across the four ops, region comparison and bridge counts.
 //! - [`line_oracle`]: [`line_oracle::visible_intervals`], DESIGN.md's closed-set rule computed with
 //!   exact incidences, and [`line_oracle::check_line_batch`] for a clipper's pieces.
+//! - [`line_probe`]: named singular line cases (through a vertex, along an edge, endpoint on the
+//!   boundary, ...) with hand-computed answers, run through any line clipper in both directions
+//!   and both window orientations, checked against the answers and against the line oracle.
 //! - [`shrink`]: reduces a failing case while it still fails, with bounded work.
 //! - [`case_record`]: WKT text and SVG pictures of inputs and outputs for failure reports.
 //! - `peers` (feature `peers`): `geo` and Clipper2 behind clip-core's traits.
