@@ -20,7 +20,9 @@ fn assert_oracle(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule
 
 /// Grid seed 1 index 3, shrunk: a triangle whose apex (4, 20) is a vertex of a clip triangle
 /// and whose edge passes through another clip vertex (2, 16); the difference has a hole
-/// touching the outer ring at (2, 16).
+/// touching the outer ring at (2, 16). The hole's other corners are rounded crossings of two
+/// clip edges; each must go into both edges' chains although one passes it only within rounding
+/// (at 5d54aba it did not, and the hole crossed the outer ring at (2, 16)).
 fn grid_3() -> (Polygons, Polygons) {
     let subject = polygons(&[&[(4.0, 20.0), (0.0, 12.0), (4.0, 6.0)]]);
     let clip = polygons(&[&[(2.0, 12.0), (4.0, 22.0), (10.0, 4.0)], &[(4.0, 20.0), (2.0, 16.0), (8.0, 8.0)]]);
@@ -28,7 +30,9 @@ fn grid_3() -> (Polygons, Polygons) {
 }
 
 /// Grid seed 1 index 97, shrunk: a subject edge collinear with and overlapping a clip edge of a
-/// self-intersecting clip, a third clip edge crossing both where the overlap ends.
+/// self-intersecting clip, a third clip edge crossing both where the overlap ends. The rounded
+/// crossing (17.33.., 15.33..) must go into both coincident edges' chains so that their opposite
+/// output edges share end points and cancel (at 5d54aba they overlapped in two rings).
 fn grid_97() -> (Polygons, Polygons) {
     let subject = polygons(&[&[(19.0, 17.0), (17.0, 21.0), (17.0, 15.0)]]);
     let clip = polygons(&[&[(20.0, 18.0), (17.0, 15.0), (22.0, 18.0), (15.0, 14.0)]]);
