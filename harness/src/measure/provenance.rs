@@ -7,6 +7,7 @@ use std::time::{SystemTime, UNIX_EPOCH};
 use serde::{Deserialize, Serialize};
 
 use crate::cli_error::CliError;
+use crate::write::write_file;
 
 /// The machine a run happened on.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -67,8 +68,7 @@ impl Provenance {
     pub fn write(&self, path: &Path) -> Result<(), CliError> {
         let text = serde_json::to_string_pretty(self)
             .map_err(|e| CliError::failed(format!("{}: cannot encode ({e})", path.display())))?;
-        std::fs::write(path, text + "\n")
-            .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", path.display())))
+        write_file(path, &(text + "\n"))
     }
 
     /// Reads a sidecar written by [`Provenance::write`].

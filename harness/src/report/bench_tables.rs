@@ -12,6 +12,7 @@ use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::{geometric_mean, mean, median};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
+use crate::write::write_file;
 
 /// The markdown file.
 pub const MD: &str = "bench.md";
@@ -189,11 +190,10 @@ fn memory_table(records: &[MemoryRecord], clippers: &[String]) -> Option<String>
 
 /// Recomputes the bench tables and plots from `out`'s CSVs.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    if let Some(section) = section(out)? {
-        std::fs::write(out.join(MD), section)
-            .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", out.join(MD).display())))?;
+    match section(out)? {
+        Some(section) => write_file(&out.join(MD), &section),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// The bench's markdown section after writing its plots; `None` when `out` holds no bench results.

@@ -4,6 +4,7 @@ use std::path::Path;
 
 use super::{bench_tables, table3, table4};
 use crate::cli_error::CliError;
+use crate::write::write_file;
 
 /// The report's file name in the output folder.
 pub const REPORT_FILE: &str = "REPORT.md";
@@ -26,6 +27,5 @@ pub fn write(out: &Path) -> Result<(), CliError> {
         text.push_str(&s);
         text.push('\n');
     }
-    let path = out.join(REPORT_FILE);
-    std::fs::write(&path, text).map_err(|e| CliError::failed(format!("{}: cannot write ({e})", path.display())))
+    write_file(&out.join(REPORT_FILE), &text)
 }

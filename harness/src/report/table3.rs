@@ -13,6 +13,7 @@ use crate::papers::{VATTI_TABLE3, vatti_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::FACTORS;
 use crate::reproduce::table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV};
+use crate::write::write_file;
 
 /// The markdown table file.
 pub const MD: &str = "vatti-table3.md";
@@ -222,11 +223,10 @@ pub fn reading(rows: &[Row]) -> String {
 /// Recomputes the table from `out`'s CSV and writes its markdown and plot; `None` when the CSV
 /// is not there.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    if let Some(section) = section(out)? {
-        std::fs::write(out.join(MD), section)
-            .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", out.join(MD).display())))?;
+    match section(out)? {
+        Some(section) => write_file(&out.join(MD), &section),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// The table's markdown section (table, plot link, reading, provenance), after writing its plot;

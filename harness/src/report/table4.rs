@@ -13,6 +13,7 @@ use crate::papers::{WANG_TABLE4, wang_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::SIZE_ROWS;
 use crate::reproduce::table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
+use crate::write::write_file;
 
 /// The markdown table file.
 pub const MD: &str = "wang-table4.md";
@@ -291,11 +292,10 @@ pub fn reading(rows: &[Row]) -> String {
 
 /// Recomputes the table from `out`'s CSVs and writes its markdown and plot.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    if let Some(section) = section(out)? {
-        std::fs::write(out.join(MD), section)
-            .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", out.join(MD).display())))?;
+    match section(out)? {
+        Some(section) => write_file(&out.join(MD), &section),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// The table's markdown section after writing its plot; `None` when `out` holds no Table 4 results.
