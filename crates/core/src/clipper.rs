@@ -42,6 +42,16 @@ pub struct PolygonCapabilities {
 }
 
 impl PolygonCapabilities {
+    /// A general clipper: all four operations under all four fill rules, any clip operand,
+    /// conventional polygon output, no trapezoids.
+    pub const GENERAL: PolygonCapabilities = PolygonCapabilities {
+        ops: &BoolOp::ALL,
+        fill_rules: &FillRule::ALL,
+        window: WindowKind::Any,
+        trapezoids: false,
+        bridges: false,
+    };
+
     /// True when the clipper does `op` under `fill`.
     pub fn supports(&self, op: BoolOp, fill: FillRule) -> bool {
         self.ops.contains(&op) && self.fill_rules.contains(&fill)

@@ -85,8 +85,7 @@ mod sweep;
 mod trapezoids;
 
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, WindowKind,
-    validate_polygons,
+    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, validate_polygons,
 };
 
 use crate::bounds::Bounds;
@@ -121,13 +120,7 @@ impl PolygonClipper for Vatti {
     }
 
     fn capabilities(&self) -> PolygonCapabilities {
-        PolygonCapabilities {
-            ops: &BoolOp::ALL,
-            fill_rules: &FillRule::ALL,
-            window: WindowKind::Any,
-            trapezoids: true,
-            bridges: false,
-        }
+        PolygonCapabilities { trapezoids: true, ..PolygonCapabilities::GENERAL }
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {

@@ -1,8 +1,7 @@
 //! The C++ Clipper2 (through the `clipper2` crate) as a polygon clipper.
 
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Ring, WindowKind,
-    validate_polygons,
+    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Ring, validate_polygons,
 };
 use clipper2::{Clipper, FillRule as C2Fill, One, Path, Paths, Point as C2Point};
 
@@ -109,13 +108,7 @@ impl PolygonClipper for Clipper2Clipper {
     }
 
     fn capabilities(&self) -> PolygonCapabilities {
-        PolygonCapabilities {
-            ops: &BoolOp::ALL,
-            fill_rules: &FillRule::ALL,
-            window: WindowKind::Any,
-            trapezoids: false,
-            bridges: false,
-        }
+        PolygonCapabilities::GENERAL
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {

@@ -54,13 +54,7 @@ impl PolygonClipper for GeoClipper {
     }
 
     fn capabilities(&self) -> PolygonCapabilities {
-        PolygonCapabilities {
-            ops: &BoolOp::ALL,
-            fill_rules: &FillRule::ALL,
-            window: WindowKind::Any,
-            trapezoids: false,
-            bridges: false,
-        }
+        PolygonCapabilities::GENERAL
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
