@@ -41,6 +41,7 @@ mod ring;
 mod segment;
 mod trapezoid;
 mod winding;
+mod window_rings;
 
 pub use area::signed_area;
 pub use clipper::{
@@ -62,3 +63,4 @@ pub use ring::Ring;
 pub use segment::Segment;
 pub use trapezoid::Trapezoid;
 pub use winding::{Location, locate, ring_winding, winding_number};
+pub use window_rings::WindowRings;

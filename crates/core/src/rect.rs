@@ -93,6 +93,23 @@ impl Rect {
         self.min.x <= other.max.x && other.min.x <= self.max.x && self.min.y <= other.max.y && other.min.y <= self.max.y
     }
 
+    /// Cohen-Sutherland's four-bit code of `p` against the closed box: 0 inside or on it, one bit
+    /// per side it lies strictly beyond (left, right, below, above).
+    #[inline]
+    pub fn outcode(&self, p: Point) -> u8 {
+        (p.x < self.min.x) as u8
+            | ((p.x > self.max.x) as u8) << 1
+            | ((p.y < self.min.y) as u8) << 2
+            | ((p.y > self.max.y) as u8) << 3
+    }
+
+    /// Cohen-Sutherland's trivial reject: both ends of the segment `a b` lie strictly beyond the
+    /// same side, so it cannot touch the box. Exact (comparisons of input coordinates).
+    #[inline]
+    pub fn rejects_segment(&self, a: Point, b: Point) -> bool {
+        self.outcode(a) & self.outcode(b) != 0
+    }
+
     /// The box grown by `d` on every side.
     #[inline]
     pub fn inflate(&self, d: f64) -> Rect {

@@ -347,3 +347,18 @@ fn holes_go_to_the_smallest_outer_holding_them() {
     let outer_island = nested.iter().find(|n| n.outer == island).unwrap();
     assert_eq!(outer_island.holes, vec![island_hole, touching_hole]);
 }
+
+#[test]
+fn cohen_sutherland_codes_and_trivial_reject() {
+    let r = Rect::new(0.0, 0.0, 4.0, 2.0);
+    assert_eq!(r.outcode(p(2.0, 1.0)), 0);
+    assert_eq!(r.outcode(p(4.0, 2.0)), 0, "the boundary is inside");
+    assert_eq!(r.outcode(p(-1.0, 1.0)), 1);
+    assert_eq!(r.outcode(p(5.0, 3.0)), 2 | 8);
+    assert_eq!(r.outcode(p(-1.0, -1.0)), 1 | 4);
+    assert!(r.rejects_segment(p(-1.0, -1.0), p(-2.0, 5.0)), "both left");
+    assert!(!r.rejects_segment(p(-1.0, 1.0), p(5.0, 1.0)), "crosses the box");
+    // Beyond different sides but missing the box: not a trivial reject.
+    assert!(!r.rejects_segment(p(-1.0, 1.0), p(1.0, 5.0)));
+    assert!(!r.rejects_segment(p(4.0, 3.0), p(4.0, 2.0)), "ends on the corner");
+}

@@ -2,7 +2,7 @@
 
 use core::ops::Range;
 
-use clip_core::{Point, Polygons, Rect, Segment};
+use clip_core::{Point, Polygons, Rect, Segment, WindowRings};
 
 /// A window laid out for the per-segment loops: every vertex of every ring in one contiguous
 /// array, each ring followed by a copy of its first vertex so that edge `i` is always
@@ -20,15 +20,7 @@ pub(crate) struct RingTable {
 impl RingTable {
     /// Lays out already validated rings, dropping consecutive repeated vertices.
     pub fn new(window: &Polygons) -> RingTable {
-        let mut points = Vec::with_capacity(window.vertex_count() + window.rings.len());
-        let mut rings = Vec::with_capacity(window.rings.len());
-        for ring in &window.rings {
-            let ring = ring.without_repeats();
-            let start = points.len();
-            points.extend_from_slice(&ring.points);
-            points.push(ring.points[0]);
-            rings.push(start..points.len() - 1);
-        }
+        let WindowRings { points, rings } = WindowRings::new(window);
         RingTable { points, rings, bounds: window.bounds() }
     }
 
@@ -36,12 +28,6 @@ impl RingTable {
     /// (Cohen-Sutherland's trivial reject): then `s` cannot touch the window.
     #[inline]
     pub fn misses_bounds(&self, s: Segment) -> bool {
-        outcode(s.a, &self.bounds) & outcode(s.b, &self.bounds) != 0
+        self.bounds.rejects_segment(s.a, s.b)
     }
-}
-
-/// Cohen-Sutherland's four-bit code of `p` against the closed box `r` (0 inside or on it).
-#[inline]
-pub(crate) fn outcode(p: Point, r: &Rect) -> u8 {
-    (p.x < r.min.x) as u8 | ((p.x > r.max.x) as u8) << 1 | ((p.y < r.min.y) as u8) << 2 | ((p.y > r.max.y) as u8) << 3
 }

@@ -4,12 +4,11 @@ use core::ops::Range;
 
 use clip_core::{
     ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, Point, Polygons, PreparedWindow, Rect, Segment,
-    VisiblePiece, WindowKind, validate_segments, validate_window,
+    VisiblePiece, WindowKind, WindowRings, validate_segments, validate_window,
 };
 
 use crate::adaptive_box::AdaptiveBox;
 use crate::intersections::intersect;
-use crate::meb::meb_rejects;
 use crate::rotated_box::RotatedBox;
 use crate::vertex_codes::encode;
 
@@ -116,15 +115,7 @@ impl PreparedVirtualBox {
     /// window is an error.
     pub fn new(window: &Polygons, rotated_box: bool) -> Result<PreparedVirtualBox, ClipError> {
         validate_window(window)?;
-        let mut points = Vec::with_capacity(window.vertex_count() + window.rings.len());
-        let mut rings = Vec::with_capacity(window.rings.len());
-        for ring in &window.rings {
-            let ring = ring.without_repeats();
-            let start = points.len();
-            points.extend_from_slice(&ring.points);
-            points.push(ring.points[0]);
-            rings.push(start..points.len() - 1);
-        }
+        let WindowRings { points, rings } = WindowRings::new(window);
         let meb = window.bounds();
         let rotated = RotatedBox::new(window.points());
         let (xs, ys) = points.iter().map(|p| (p.x, p.y)).unzip();
@@ -184,7 +175,7 @@ impl PreparedVirtualBox {
         }
         // Both box tests are a few comparisons: evaluated together, they cost one branch, which
         // matters more than the comparisons (which box rejected is told apart only then).
-        let meb = meb_rejects(a, b, &self.meb);
+        let meb = self.meb.rejects_segment(a, b);
         if meb | (ROTATED && self.rotated.rejects(a, b)) {
             return if meb { Stage::Meb } else { Stage::RotatedBox };
         }

@@ -15,7 +15,7 @@
 //!
 //! | paper | code |
 //! |---|---|
-//! | MEB, Cohen-Sutherland codes (Fig. 2) | `meb`: the window's bounding box, both endpoint codes sharing a bit reject |
+//! | MEB, Cohen-Sutherland codes (Fig. 2) | the window's bounding box; [`clip_core::Rect::rejects_segment`]: both endpoint codes sharing a bit reject |
 //! | 45° rotated virtual box (Fig. 3, Lu et al. 2002) | `rotated_box`: the bounding box in `u = x + y`, `v = x - y`, coded the same way (New2 only) |
 //! | slope-adaptive virtual box, `P1`, `P2` (Fig. 4) | `adaptive_box`: where the line meets the MEB's left/right sides (`\|k\| <= 1`) or bottom/top (`\|k\| > 1`) |
 //! | Table 1 (box above/below or left/right of the MEB) | `adaptive_box::AdaptiveBox::new` returns `None`: the line misses the MEB |
@@ -102,7 +102,6 @@
 mod adaptive_box;
 mod clipper;
 mod intersections;
-mod meb;
 mod rotated_box;
 mod vertex_codes;
 
