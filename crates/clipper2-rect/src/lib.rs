@@ -1,0 +1,64 @@
+//! clip-clipper2-rect: Clipper2's dedicated rectangle clipper (`RectClip`) as a peer.
+//!
+//! Sutherland-Hodgman (`../shared/papers/003_40d47b82321f04f0.txt`) and the four-state clipper
+//! (`../shared/papers/004_7c7020c5f4d30de8.txt`) clip polygons to a rectangle; the modern
+//! library routine for the same job is Angus Johnson's `RectClip` in Clipper2
+//! (`clipper.rectclip.cpp`), much faster than Clipper2's general boolean engine. The `clipper2`
+//! 0.6 crate does not bind it; its C layer `clipper2c-sys` compiles and links it. This crate
+//! wraps that C function in [`Clipper2RectClipper`], a [`clip_core::PolygonClipper`], so the
+//! harness's `verify` and the window clippers' benches can put the two papers' algorithms
+//! next to it.
+//!
+//! # Why a crate of its own
+//!
+//! Calling C needs `unsafe`, which the workspace forbids (`forbid` cannot be lowered by
+//! `allow`). This crate does not take the workspace lints; it has the same ones with unsafe code
+//! *denied*, and allows it only in the private `ffi` module, where every unsafe block says why it
+//! is sound and every C++ object allocated is deleted by an owner's `Drop`.
+//!
+//! # Vocabulary
+//!
+//! | Clipper2 | code |
+//! |---|---|
+//! | `Rect64 {left, top, right, bottom}` (`top` is the smaller y) | [`clip_core::Rect`] `min`, `max` |
+//! | `Path64`, `Paths64` on `int64` points | [`clip_core::Ring`], [`clip_core::Polygons`] on an [`IntegerGrid`] |
+//! | `RectClip(rect, paths)` | [`Clipper2RectClipper::clip_to_rect`] |
+//!
+//! # Limits and where the output differs from a true intersection
+//!
+//! - Intersection only; the window must be one axis-aligned rectangle
+//!   ([`ClipError::WindowNotRectangle`](clip_core::ClipError::WindowNotRectangle) otherwise),
+//!   and bad subjects get clip-core's typed errors (non-finite, out of range, too few points).
+//! - `RectClip` clips each ring on its own and keeps its orientation, so overlapping rings stay
+//!   overlapping: the output is read under the input's fill rule, like Sutherland-Hodgman's
+//!   (capabilities say `bridges`). Unlike Sutherland-Hodgman it splits a result that falls apart
+//!   into separate rings, with no bridges. The rectangle is read under the same rule: under
+//!   positive a clockwise rectangle covers nothing (under negative a counter-clockwise one).
+//! - It computes on integers: the inputs are rounded to a grid of about extent x 2^-30
+//!   ([`IntegerGrid`]), so the output is compared with a loose tolerance (the testkit's
+//!   `GEO_TOLERANCE`). Cut points on the rectangle's sides get the sides' exact coordinates back.
+//!
+//! # Example
+//!
+//! ```
+//! use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons, Rect, Ring};
+//! use clip_clipper2_rect::Clipper2RectClipper;
+//!
+//! let subject = Polygons::from(Rect::new(-1.0, -1.0, 1.0, 1.0).to_ring());
+//! let window = Polygons::from(Rect::new(0.0, 0.0, 4.0, 4.0).to_ring());
+//! let out = Clipper2RectClipper.clip(&subject, &window, BoolOp::Intersection, FillRule::NonZero).unwrap();
+//! assert_eq!(out.rings.len(), 1);
+//! assert_eq!(out.signed_area(), 1.0);
+//! ```
+
+mod clipper;
+#[allow(unsafe_code)]
+mod ffi;
+mod grid;
+
+pub use clipper::Clipper2RectClipper;
+pub use ffi::GridPoint;
+pub use grid::IntegerGrid;
+
+/// The registry name.
+pub const NAME: &str = "clipper2-rect";
