@@ -11,7 +11,7 @@ use clip_core::{LineClipper, PolygonClipper};
 use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
-use clip_testkit::peers::{Clipper2Clipper, GeoClipper, GeoLineClipper};
+use clip_testkit::peers::{Clipper2Clipper, Clipper2RectClipper, GeoClipper, GeoLineClipper};
 use clip_testkit::polygon_oracle::{GEO_TOLERANCE, REGION_TOLERANCE};
 use clip_vatti::Vatti;
 use clip_virtual_box::VirtualBox;
@@ -34,6 +34,7 @@ pub fn registry() -> Registry {
         .polygon(Origin::Peer, GEO_TOLERANCE, GeoClipper::new())
         .line(Origin::Peer, GEO_TOLERANCE, GeoLineClipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RectClipper)
 }
 
 /// Whether a clipper is this project's (its failures fail a run) or a peer library (reported only).
