@@ -7,7 +7,9 @@ use std::sync::Once;
 
 use clip_core::{BoolOp, FillRule, Polygons, Segment, VisiblePiece};
 use clip_testkit::line_oracle::{check_line_batch, pieces_to_intervals};
-use clip_testkit::polygon_oracle::{OutputRules, check_area_identities, check_polygon_op, same_region, tolerance};
+use clip_testkit::polygon_oracle::{
+    OutputRules, check_area_identities_given, check_polygon_op, same_region, tolerance,
+};
 
 use crate::registry::{LineEntry, PolygonEntry};
 
@@ -89,7 +91,8 @@ pub fn run_polygon(
     guarded(|| entry.clipper.clip(subject, clip, op, fill).map_err(|e| format!("refused: {e}")))
 }
 
-/// The oracle's verdict on one polygon result.
+/// The oracle's verdict on one polygon result; when it passes, the area by which it differs from
+/// the exact answer.
 pub fn polygon_oracle(
     entry: &PolygonEntry,
     subject: &Polygons,
@@ -97,31 +100,43 @@ pub fn polygon_oracle(
     op: BoolOp,
     fill: FillRule,
     output: &Polygons,
-) -> Result<(), String> {
+) -> Result<f64, String> {
     check_polygon_op(subject, clip, op, fill, output, &output_rules(entry, fill)).map_err(|f| f.to_string())
 }
 
-/// The area identities on the four operations' results.
+/// The area identities on the four operations' results; `operands` are |A| and |B| under `fill`
+/// (`clip_testkit::polygon_oracle::operand_areas`), measured once per case.
 pub fn area_identities(
     entry: &PolygonEntry,
     subject: &Polygons,
     clip: &Polygons,
     fill: FillRule,
+    operands: (f64, f64),
     outputs: &[(BoolOp, &Polygons)],
 ) -> Result<(), String> {
-    check_area_identities(subject, clip, fill, outputs, &output_rules(entry, fill)).map_err(|f| f.to_string())
+    let rules = output_rules(entry, fill);
+    let tol = tolerance(subject, clip, rules.relative_tolerance);
+    check_area_identities_given(operands, tol, outputs, &rules).map_err(|f| f.to_string())
 }
 
 /// Whether two clippers' results cover the same region, within the looser of their tolerances.
+///
+/// `off_exact` is, when the oracle passed both, how far each is from the exact answer (area of
+/// the symmetric difference): the two differ by at most the sum, so when that is within the
+/// tolerance they agree without another sweep.
 pub fn polygons_agree(
     x: (&PolygonEntry, &Polygons),
     y: (&PolygonEntry, &Polygons),
     subject: &Polygons,
     clip: &Polygons,
     fill: FillRule,
+    off_exact: Option<(f64, f64)>,
 ) -> Result<(), String> {
     let relative = x.0.tolerance.max(y.0.tolerance);
     let allowed = tolerance(subject, clip, relative);
+    if off_exact.is_some_and(|(a, b)| a + b <= allowed) {
+        return Ok(());
+    }
     let read = |e: &PolygonEntry| output_rules(e, fill).output_fill;
     same_region((x.1, read(x.0)), (y.1, read(y.0)), allowed).map_err(|area| {
         format!(
@@ -168,4 +183,28 @@ pub fn lines_agree(
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::registry;
+    use clip_core::Rect;
+
+    #[test]
+    fn agreement_follows_from_two_oracle_passes_only_within_the_tolerance() {
+        let registry = registry();
+        let vatti = registry.find_polygon("vatti").expect("registered");
+        let (a, b) = (Polygons::from(Rect::new(0.0, 0.0, 2.0, 2.0)), Polygons::from(Rect::new(1.0, 1.0, 3.0, 3.0)));
+        let exact = vatti.clipper.clip(&a, &b, BoolOp::Intersection, FillRule::NonZero).expect("valid input");
+        let off = polygon_oracle(vatti, &a, &b, BoolOp::Intersection, FillRule::NonZero, &exact).expect("passes");
+        assert!(off <= tolerance(&a, &b, vatti.tolerance), "{off}");
+        // A different result is caught by the sweep, and by the bound when it does not prove agreement.
+        let shifted = Polygons::from(Rect::new(1.0, 1.0, 2.0, 2.5));
+        assert!(polygons_agree((vatti, &exact), (vatti, &shifted), &a, &b, FillRule::NonZero, None).is_err());
+        assert!(
+            polygons_agree((vatti, &exact), (vatti, &shifted), &a, &b, FillRule::NonZero, Some((off, 0.5))).is_err()
+        );
+        assert!(polygons_agree((vatti, &exact), (vatti, &exact), &a, &b, FillRule::NonZero, Some((off, off))).is_ok());
+    }
 }

@@ -115,7 +115,9 @@ impl std::error::Error for PolygonFailure {}
 /// conventional; crossings within the tolerance times the extent of an end point count as
 /// touching, see [`check_valid_output_within`]), every sample point (a 12 x 12 grid and 112 seeded random points over the
 /// bounding box of inputs and output) farther than a margin from every edge classified exactly,
-/// and the area of the symmetric difference within the tolerance.
+/// and the area of the symmetric difference within the tolerance. On success, that area: two
+/// outputs that pass differ by at most the sum of theirs (the triangle inequality), which lets a
+/// caller compare them without another sweep.
 pub fn check_polygon_op(
     subject: &Polygons,
     clip: &Polygons,
@@ -123,13 +125,13 @@ pub fn check_polygon_op(
     fill: FillRule,
     output: &Polygons,
     rules: &OutputRules,
-) -> Result<(), PolygonFailure> {
+) -> Result<f64, PolygonFailure> {
     if let Some(p) = output.points().find(|p| !p.is_finite()) {
         return Err(PolygonFailure::Invalid(format!("non-finite output vertex ({}, {})", p.x, p.y)));
     }
     let b = subject.bounds().union(clip.bounds()).union(output.bounds());
     if b.is_empty() {
-        return Ok(());
+        return Ok(0.0);
     }
     if rules.conventional {
         check_valid_output_within(output, b.extent() * rules.relative_tolerance)?;
@@ -141,7 +143,7 @@ pub fn check_polygon_op(
     if xor_area > tol {
         return Err(PolygonFailure::WrongRegion { xor_area, tolerance: tol });
     }
-    Ok(())
+    Ok(xor_area)
 }
 
 fn check_sample_points(
@@ -180,15 +182,35 @@ pub fn check_area_identities(
     outputs: &[(BoolOp, &Polygons)],
     rules: &OutputRules,
 ) -> Result<(), PolygonFailure> {
+    let tol = tolerance(subject, clip, rules.relative_tolerance);
+    check_area_identities_given(operand_areas(subject, clip, fill), tol, outputs, rules)
+}
+
+/// |A| and |B| under `fill`, by [`region_area`]: measure them once per case and fill rule and
+/// pass them to [`check_area_identities_given`] for every clipper.
+pub fn operand_areas(subject: &Polygons, clip: &Polygons, fill: FillRule) -> (f64, f64) {
+    (region_area(&[(subject, fill)], |i| i[0]), region_area(&[(clip, fill)], |i| i[0]))
+}
+
+/// [`check_area_identities`] with |A| and |B| given ([`operand_areas`]) and the case's absolute
+/// tolerance ([`tolerance`]). Conventional outputs are measured by the shoelace formula, which
+/// is their area when they are valid and does not share code with the sweep that measured |A|
+/// and |B|; bridged outputs by [`region_area`] under the input's rule.
+pub fn check_area_identities_given(
+    (a, b): (f64, f64),
+    tolerance: f64,
+    outputs: &[(BoolOp, &Polygons)],
+    rules: &OutputRules,
+) -> Result<(), PolygonFailure> {
     let area_of = |op: BoolOp| {
-        outputs.iter().find(|(o, _)| *o == op).map(|(_, p)| region_area(&[(p, rules.output_fill)], |i| i[0]))
+        outputs.iter().find(|(o, _)| *o == op).map(|(_, p)| {
+            if rules.conventional { p.signed_area() } else { region_area(&[(p, rules.output_fill)], |i| i[0]) }
+        })
     };
-    let a = region_area(&[(subject, fill)], |i| i[0]);
-    let b = region_area(&[(clip, fill)], |i| i[0]);
     let (i, u, d, x) =
         (area_of(BoolOp::Intersection), area_of(BoolOp::Union), area_of(BoolOp::Difference), area_of(BoolOp::Xor));
     // Each side sums up to three areas, each within the tolerance.
-    let tol = 3.0 * tolerance(subject, clip, rules.relative_tolerance);
+    let tol = 3.0 * tolerance;
     let check = |name: &str, lhs: f64, rhs: f64| {
         if (lhs - rhs).abs() > tol {
             Err(PolygonFailure::AreaIdentity(format!("{name}: {lhs} vs {rhs} (tolerance {tol:e})")))

@@ -65,19 +65,28 @@ impl LinePlan<'_> {
             for &x in &here {
                 for &y in here.iter().filter(|&&y| y > x) {
                     let (Some(px), Some(py)) = (&outputs[x], &outputs[y]) else { continue };
-                    let verdict = lines_agree((self.entries[x], px), (self.entries[y], py), &case.segments);
                     for (me, other) in [(x, y), (y, x)] {
                         if counted(me) {
-                            let n =
-                                outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
-                            *n += usize::from(verdict.is_err());
+                            outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
+                        }
+                    }
+                    // A pair where one result failed the oracle is that result's failure.
+                    if !(passed[x] && passed[y]) {
+                        continue;
+                    }
+                    let Err(message) = lines_agree((self.entries[x], px), (self.entries[y], py), &case.segments) else {
+                        continue;
+                    };
+                    for (me, other) in [(x, y), (y, x)] {
+                        if counted(me) {
+                            *outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default() += 1;
                         }
                     }
                     let under = [(x, y), (y, x)]
                         .into_iter()
                         .filter(|&(me, _)| counted(me))
                         .min_by_key(|&(me, _)| self.entries[me].origin == Origin::Peer);
-                    if let (Err(message), Some((me, other)), true) = (verdict, under, passed[x] && passed[y]) {
+                    if let Some((me, other)) = under {
                         let check = Check::Disagreement(self.entries[other].clipper.name());
                         outcome.findings.push(finding(self.entries[me].clipper.name(), check, message));
                     }

@@ -154,6 +154,9 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         ours_failed,
     };
     print!("{}", table(&summary.rows));
+    println!(
+        "(vs X: results that differ from X's while both passed the oracle; a difference where one fails is its oracle failure)"
+    );
     if !written.is_empty() {
         println!(
             "{} failure case(s) shrunk and written under {}{}; replay one with: clipbench verify --replay {}",

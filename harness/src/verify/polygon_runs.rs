@@ -2,7 +2,7 @@
 //! each operation and fill rule it supports; checks each result and compares the clippers.
 
 use clip_core::{BoolOp, FillRule, Polygons, WindowKind};
-use clip_testkit::polygon_oracle::bridge_count;
+use clip_testkit::polygon_oracle::{bridge_count, operand_areas};
 use clip_testkit::workload::polygon_case;
 
 use super::finding::{CaseOutcome, Finding, Kind};
@@ -70,10 +70,14 @@ impl PolygonPlan<'_> {
                 // outputs[i][op] for each clipper here; None when unsupported or refused.
                 let mut outputs: Vec<Vec<Option<Polygons>>> = vec![vec![None; BoolOp::ALL.len()]; self.entries.len()];
                 for &op in &self.ops {
-                    let mut passed = vec![false; self.entries.len()];
+                    // Per clipper, how far its result is from the exact answer when the oracle passed it.
+                    let mut off_exact: Vec<Option<f64>> = vec![None; self.entries.len()];
+                    let supports = |i: usize| self.entries[i].clipper.capabilities().supports(op, fill);
+                    // A clipper not counted on this case runs only to be compared with one that is.
+                    let wanted = here.iter().any(|&j| counted(j) && supports(j));
                     for &i in &here {
                         let e = self.entries[i];
-                        if !e.clipper.capabilities().supports(op, fill) {
+                        if !supports(i) || !(counted(i) || wanted) {
                             continue;
                         }
                         let result = run_polygon(e, subject, clip, op, fill);
@@ -98,11 +102,24 @@ impl PolygonPlan<'_> {
                                 ));
                             }
                         }
-                        passed[i] = verdict.is_ok();
+                        off_exact[i] = verdict.ok();
                         outputs[i][op_slot(op)] = result.ok();
                     }
-                    self.compare(&mut outcome, &here, &counted, &outputs, &passed, op, subject, clip, fill, &finding);
+                    self.compare(
+                        &mut outcome,
+                        &here,
+                        &counted,
+                        &outputs,
+                        &off_exact,
+                        op,
+                        subject,
+                        clip,
+                        fill,
+                        &finding,
+                    );
                 }
+                // |A| and |B| under this rule, measured once for every clipper that needs them.
+                let mut operands = None;
                 for &i in here.iter().filter(|&&i| counted(i)) {
                     let four: Vec<(BoolOp, &Polygons)> = BoolOp::ALL
                         .iter()
@@ -111,7 +128,8 @@ impl PolygonPlan<'_> {
                     if four.len() < BoolOp::ALL.len() {
                         continue;
                     }
-                    if let Err(message) = area_identities(self.entries[i], subject, clip, fill, &four) {
+                    let operands = *operands.get_or_insert_with(|| operand_areas(subject, clip, fill));
+                    if let Err(message) = area_identities(self.entries[i], subject, clip, fill, operands, &four) {
                         outcome.rows[i].oracle_failures += 1;
                         let name = self.entries[i].clipper.name();
                         outcome.findings.push(finding(name, None, fill, Check::AreaIdentities, message));
@@ -122,9 +140,9 @@ impl PolygonPlan<'_> {
         Ok(outcome)
     }
 
-    /// Counts disagreements between the clippers that produced a result for `op`. A pair is
-    /// recorded as a finding once (under ours when one side is ours), and only when both
-    /// results passed the oracle: otherwise the oracle failure already explains it.
+    /// Counts disagreements between the clippers whose results for `op` both passed the oracle
+    /// (`off_exact` is `Some`; otherwise the oracle failure already explains the difference),
+    /// and records each as a finding once, under ours when one side is ours.
     #[allow(clippy::too_many_arguments)]
     fn compare(
         &self,
@@ -132,7 +150,7 @@ impl PolygonPlan<'_> {
         here: &[usize],
         counted: &dyn Fn(usize) -> bool,
         outputs: &[Vec<Option<Polygons>>],
-        passed: &[bool],
+        off_exact: &[Option<f64>],
         op: BoolOp,
         subject: &Polygons,
         clip: &Polygons,
@@ -144,23 +162,29 @@ impl PolygonPlan<'_> {
             for &y in here.iter().filter(|&&y| y > x) {
                 let (Some(ox), Some(oy)) = (&outputs[x][slot], &outputs[y][slot]) else { continue };
                 let (ex, ey) = (self.entries[x], self.entries[y]);
-                let verdict = polygons_agree((ex, ox), (ey, oy), subject, clip, fill);
                 for (me, other) in [(x, y), (y, x)] {
                     if counted(me) {
-                        let n = outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
-                        *n += usize::from(verdict.is_err());
+                        outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
                     }
                 }
-                if let Err(message) = verdict {
-                    // Record under a side counted on this case, ours first, else the first.
-                    let under = [(x, y), (y, x)]
-                        .into_iter()
-                        .filter(|&(me, _)| counted(me))
-                        .min_by_key(|&(me, _)| self.entries[me].origin == Origin::Peer);
-                    if let (Some((me, other)), true) = (under, passed[x] && passed[y]) {
-                        let check = Check::Disagreement(self.entries[other].clipper.name());
-                        outcome.findings.push(finding(self.entries[me].clipper.name(), Some(op), fill, check, message));
+                // A pair where one result failed the oracle is that result's failure, not a disagreement.
+                let Some(both) = off_exact[x].zip(off_exact[y]) else { continue };
+                let Err(message) = polygons_agree((ex, ox), (ey, oy), subject, clip, fill, Some(both)) else {
+                    continue;
+                };
+                for (me, other) in [(x, y), (y, x)] {
+                    if counted(me) {
+                        *outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default() += 1;
                     }
+                }
+                // Record under a side counted on this case, ours first, else the first.
+                let under = [(x, y), (y, x)]
+                    .into_iter()
+                    .filter(|&(me, _)| counted(me))
+                    .min_by_key(|&(me, _)| self.entries[me].origin == Origin::Peer);
+                if let Some((me, other)) = under {
+                    let check = Check::Disagreement(self.entries[other].clipper.name());
+                    outcome.findings.push(finding(self.entries[me].clipper.name(), Some(op), fill, check, message));
                 }
             }
         }

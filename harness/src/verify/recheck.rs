@@ -2,6 +2,7 @@
 //! heart of `--replay`.
 
 use clip_core::{BoolOp, FillRule, Operand, Polygons, Segment, validate_polygons, validate_segments, validate_window};
+use clip_testkit::polygon_oracle::operand_areas;
 
 use crate::checks::{
     Check, area_identities, line_oracle, lines_agree, polygon_oracle, polygons_agree, run_line, run_polygon,
@@ -36,7 +37,7 @@ pub fn polygon_failure(registry: &Registry, target: Target, subject: &Polygons, 
     }
     let checked = |e, op| {
         let out = run_polygon(e, subject, clip, op, fill)?;
-        polygon_oracle(e, subject, clip, op, fill, &out).map(|()| out)
+        polygon_oracle(e, subject, clip, op, fill, &out).map(|_| out)
     };
     match target.check {
         Check::Oracle => checked(entry, target.op?).err(),
@@ -46,7 +47,7 @@ pub fn polygon_failure(registry: &Registry, target: Target, subject: &Polygons, 
                 outputs.push((op, run_polygon(entry, subject, clip, op, fill).ok()?));
             }
             let four: Vec<(BoolOp, &Polygons)> = outputs.iter().map(|(op, o)| (*op, o)).collect();
-            area_identities(entry, subject, clip, fill, &four).err()
+            area_identities(entry, subject, clip, fill, operand_areas(subject, clip, fill), &four).err()
         }
         Check::Disagreement(other) => {
             let other = registry.find_polygon(other)?;
@@ -55,7 +56,7 @@ pub fn polygon_failure(registry: &Registry, target: Target, subject: &Polygons, 
             }
             let op = target.op?;
             let (a, b) = (checked(entry, op).ok()?, checked(other, op).ok()?);
-            polygons_agree((entry, &a), (other, &b), subject, clip, fill).err()
+            polygons_agree((entry, &a), (other, &b), subject, clip, fill, None).err()
         }
     }
 }

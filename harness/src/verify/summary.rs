@@ -23,7 +23,9 @@ pub struct Row {
     pub runs: usize,
     /// Results the oracle rejected (including refusals and failed area identities).
     pub oracle_failures: usize,
-    /// Results that differ by region from another clipper's, per other clipper.
+    /// Results that differ by region (or by visible intervals) from another clipper's while both
+    /// passed the oracle, per other clipper; where one side failed, the difference is counted as
+    /// that side's oracle failure instead.
     pub disagreements: BTreeMap<&'static str, usize>,
     /// Zero-width bridges in the output, for clippers whose capabilities say they make them.
     pub bridges: Option<usize>,
