@@ -38,7 +38,9 @@ impl Group {
 
 /// The groups: `star`, `scribble`, `grid`, `holes` at 4-200 edges with three cases each;
 /// `large` smooth blobs (even indices) and checkerboards (odd indices) up to 10^6 vertices (10^5
-/// quick); rectangle windows over `star` and `large` smooth subjects, intersection only.
+/// quick); rectangle windows over `star` and `large` smooth subjects, intersection only, where the
+/// window-limited clippers join (Sutherland-Hodgman, four-state, and Clipper2's dedicated
+/// rectangle clipper `clipper2-rect`, the peer to compare them with).
 pub fn groups(quick: bool) -> Vec<Group> {
     let small: Vec<usize> = if quick { vec![4, 20, 100, 200] } else { vec![4, 10, 20, 40, 100, 200] };
     let large: Vec<usize> = if quick { vec![1_000, 10_000, 100_000] } else { vec![1_000, 10_000, 100_000, 1_000_000] };
