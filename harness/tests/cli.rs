@@ -210,13 +210,29 @@ fn replay_reruns_a_saved_case() {
 #[test]
 fn conformance_suites_run_and_print_a_closing_line_per_clipper() {
     let dir = scratch("conformance");
-    let o = clipbench(&["conformance", "clipper2-polygons", "--clipper", "clipper2"]);
+    let o = clipbench(&["conformance", "clipper2-polygons", "--clipper", "vatti", "--clipper", "clipper2"]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(stdout(&o).lines().any(|l| l == "clipper2: 195 passed, 0 failed"), "{}", stdout(&o));
-    let o = clipbench(&["conformance", "clipper2-lines", "--clipper", "geo"]);
-    assert!(stdout(&o).lines().any(|l| l.starts_with("geo: 15 passed, 0 failed")), "{}", stdout(&o));
-    let o = clipbench(&["conformance", "geo-booleanop", "--clipper", "geo", "--clipper", "clipper2"]);
+    for line in ["vatti: 195 passed, 0 failed", "clipper2: 195 passed, 0 failed"] {
+        assert!(stdout(&o).lines().any(|l| l == line), "{line}\n{}", stdout(&o));
+    }
+    let o = clipbench(&[
+        "conformance",
+        "clipper2-lines",
+        "--clipper",
+        "liu",
+        "--clipper",
+        "virtual-box",
+        "--clipper",
+        "geo",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
+    for name in ["liu", "virtual-box", "geo"] {
+        let closing = format!("{name}: 15 passed, 0 failed");
+        assert!(stdout(&o).lines().any(|l| l.starts_with(&closing)), "{closing}\n{}", stdout(&o));
+    }
+    let o = clipbench(&["conformance", "geo-booleanop", "--clipper", "vatti", "--clipper", "geo"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).lines().any(|l| l.starts_with("vatti: ") && l.contains(" passed, 0 failed")), "{}", stdout(&o));
     assert!(stdout(&o).lines().any(|l| l.starts_with("geo: ") && l.contains(" passed, ")), "{}", stdout(&o));
     // One case by name, with a picture.
     let svg = dir.join("168.svg");

@@ -19,7 +19,9 @@
 //!   and both window orientations, checked against the answers and against the line oracle.
 //! - [`shrink`]: reduces a failing case while it still fails, with bounded work.
 //! - [`case_record`]: WKT text and SVG pictures of inputs and outputs for failure reports.
-//! - `peers` (feature `peers`): `geo` and Clipper2 behind clip-core's traits.
+//! - `peers` (feature `peers`): `geo` and Clipper2 behind clip-core's traits, and
+//!   `clipper2_suite`: Clipper2's `Polygons.txt` / `Lines.txt` records and the grading of its
+//!   own test, shared by the harness's conformance command and clip-vatti's tests.
 //!
 //! # The papers' vocabulary here
 //!
@@ -72,5 +74,7 @@ pub mod polygon_oracle;
 pub mod shrink;
 pub mod workload;
 
+#[cfg(feature = "peers")]
+pub mod clipper2_suite;
 #[cfg(feature = "peers")]
 pub mod peers;

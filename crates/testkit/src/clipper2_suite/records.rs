@@ -1,5 +1,6 @@
 //! Reads Clipper2's test files (`Polygons.txt`, `Lines.txt`): records of an operation, a fill
-//! rule, expected area and count, and closed subject, open subject and clip paths.
+//! rule, expected area and count, and closed subject, open subject and clip paths; a malformed
+//! record is reported with its file line and the rest are still read.
 
 use clip_core::{BoolOp, FillRule, Point, Ring};
 
