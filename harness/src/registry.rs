@@ -11,7 +11,7 @@ use clip_core::{LineClipper, PolygonClipper};
 use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
-use clip_testkit::peers::{Clipper2Clipper, Clipper2RectClipper, GeoClipper, GeoLineClipper};
+use clip_testkit::peers::{Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, GeoClipper, GeoLineClipper};
 use clip_testkit::polygon_oracle::{GEO_TOLERANCE, REGION_TOLERANCE};
 use clip_vatti::Vatti;
 use clip_virtual_box::VirtualBox;
@@ -35,6 +35,7 @@ pub fn registry() -> Registry {
         .line(Origin::Peer, GEO_TOLERANCE, GeoLineClipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RectClipper)
+        .line(Origin::Peer, GEO_TOLERANCE, Clipper2RectLines)
 }
 
 /// Whether a clipper is this project's (its failures fail a run) or a peer library (reported only).
@@ -143,6 +144,8 @@ mod tests {
         let geo = registry().select(&["geo".to_owned()]).unwrap();
         assert_eq!(geo.polygon.len(), 1);
         assert_eq!(geo.line.len(), 1);
+        let rect = registry().select(&["clipper2-rect".to_owned()]).unwrap();
+        assert_eq!((rect.polygon.len(), rect.line.len()), (1, 1));
     }
 
     #[test]

@@ -7,7 +7,8 @@
 //! 0.6 crate does not bind it; its C layer `clipper2c-sys` compiles and links it. This crate
 //! wraps that C function in [`Clipper2RectClipper`], a [`clip_core::PolygonClipper`], so the
 //! harness's `verify` and the window clippers' benches can put the two papers' algorithms
-//! next to it.
+//! next to it, and its line counterpart `RectClipLines` in [`Clipper2RectLines`], a
+//! [`clip_core::LineClipper`] for rectangle windows.
 //!
 //! # Why a crate of its own
 //!
@@ -23,6 +24,7 @@
 //! | `Rect64 {left, top, right, bottom}` (`top` is the smaller y) | [`clip_core::Rect`] `min`, `max` |
 //! | `Path64`, `Paths64` on `int64` points | [`clip_core::Ring`], [`clip_core::Polygons`] on an [`IntegerGrid`] |
 //! | `RectClip(rect, paths)` | [`Clipper2RectClipper::clip_to_rect`] |
+//! | `RectClipLines(rect, paths)` | the window [`Clipper2RectLines`] prepares |
 //!
 //! # Limits and where the output differs from a true intersection
 //!
@@ -37,6 +39,11 @@
 //! - It computes on integers: the inputs are rounded to a grid of about extent x 2^-30
 //!   ([`IntegerGrid`]), so the output is compared with a loose tolerance (the testkit's
 //!   `GEO_TOLERANCE`). Cut points on the rectangle's sides get the sides' exact coordinates back.
+//!   Line pieces are rebuilt on the input segment from their parameters; each segment gets a
+//!   grid of its own (see [`Clipper2RectLines`]).
+//! - `RectClipLines` breaks DESIGN.md's closed-set rule for a segment along a side that goes on
+//!   beyond the rectangle: it drops the part on the side (a segment wholly on a side is kept),
+//!   so `verify` reports oracle failures for this peer on the `lines-degenerate` workload.
 //!
 //! # Example
 //!
@@ -55,10 +62,12 @@ mod clipper;
 #[allow(unsafe_code)]
 mod ffi;
 mod grid;
+mod lines;
 
 pub use clipper::Clipper2RectClipper;
 pub use ffi::GridPoint;
 pub use grid::IntegerGrid;
+pub use lines::Clipper2RectLines;
 
 /// The registry name.
 pub const NAME: &str = "clipper2-rect";

@@ -5,13 +5,13 @@
 //!   loose tolerance (the testkit's `GEO_TOLERANCE`).
 //! - [`Clipper2Clipper`]: the C++ Clipper2 through the `clipper2` crate, on an integer grid scaled
 //!   per call to the inputs' extent (see [`Clipper2Clipper`]), so it too is compared loosely.
-//! - [`Clipper2RectClipper`]: Clipper2's dedicated rectangle clipper (`RectClip`), from the
-//!   clip-clipper2-rect crate (the C API needs `unsafe`), on the same grid; intersection with a
-//!   rectangle only, its output read under the input's fill rule like Sutherland-Hodgman's.
+//! - [`Clipper2RectClipper`] and [`Clipper2RectLines`]: Clipper2's dedicated rectangle clippers
+//!   (`RectClip`, `RectClipLines`), from the clip-clipper2-rect crate (the C API needs `unsafe`),
+//!   on the same grid; rectangle windows only, polygon output read under the input's fill rule
+//!   like Sutherland-Hodgman's.
 //!
-//! There is no Clipper2 line clipper: the `clipper2` 0.6 crate's safe API returns only the closed
-//! output of an operation and drops the open (line) output, and reaching the C API directly needs
-//! `unsafe`, which the workspace forbids.
+//! There is no Clipper2 line clipper for other windows: the `clipper2` 0.6 crate's safe API
+//! returns only the closed output of an operation and drops the open (line) output.
 //!
 //! Each adapter passes our ring list to its library faithfully (every ring, in order, with its own
 //! orientation) and converts the result to DESIGN.md's conventions; what each normalises is said
@@ -22,4 +22,4 @@ mod geo;
 
 pub use self::clipper2::Clipper2Clipper;
 pub use self::geo::{GeoClipper, GeoLineClipper};
-pub use clip_clipper2_rect::Clipper2RectClipper;
+pub use clip_clipper2_rect::{Clipper2RectClipper, Clipper2RectLines};
