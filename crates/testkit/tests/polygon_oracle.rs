@@ -338,3 +338,25 @@ fn dense_output_checks_every_close_pair() {
     let e = check_valid_output(&nudged).unwrap_err();
     assert!(e.to_string().contains("cross"), "{e}");
 }
+
+/// Clipper2's union of grid seed 1 case 3 (shrunk): a triangle whose apex (10, 12) Clipper2
+/// rounded onto the edge of the big ring it touches. The apex is not exactly on that edge, so a
+/// nesting test at the apex alone reads the outside triangle as a hole; within the snap
+/// distance the rings touch there, and the triangle's other points say it is outside.
+#[test]
+fn a_ring_touching_another_at_a_rounded_vertex_is_not_read_as_its_hole() {
+    let big = ring(&[
+        (11.571428567171097, 12.69841268658638),
+        (11.0, 12.0),
+        (19.0, 12.0),
+        (20.0, 23.0),
+        (16.614678889513016, 18.86238531768322),
+        (14.0, 22.0),
+        (6.978102192282677, 10.656934320926666),
+    ]);
+    let triangle = ring(&[(10.0, 12.0), (6.727272734045982, 8.0), (12.0, 8.0)]);
+    let output = Polygons::new(vec![big, triangle]);
+    let snap = output.bounds().extent() * GEO_TOLERANCE;
+    assert!(check_valid_output_within(&output, snap).is_ok(), "{:?}", check_valid_output_within(&output, snap));
+    assert!(check_valid_output(&output).is_err(), "exactly, the apex is off the edge");
+}

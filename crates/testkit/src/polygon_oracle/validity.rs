@@ -98,7 +98,7 @@ pub fn check_valid_output_within(output: &Polygons, snap: f64) -> Result<(), Pol
     }
     let edges = ring_edges(output);
     for_each_close_pair(&edges, |e, f| check_pair(output, e, f, snap))?;
-    check_orientation(output)
+    check_orientation(output, snap)
 }
 
 fn invalid(message: String) -> Result<(), PolygonFailure> {
@@ -218,8 +218,8 @@ fn side(p: Point, (u, v): (Point, Point), q: Point) -> Option<bool> {
 }
 
 /// Outer rings (even depth) counter-clockwise, holes (odd depth) clockwise.
-fn check_orientation(output: &Polygons) -> Result<(), PolygonFailure> {
-    for (r, depth) in nesting_depths(output).into_iter().enumerate() {
+fn check_orientation(output: &Polygons, snap: f64) -> Result<(), PolygonFailure> {
+    for (r, depth) in nesting_depths(output, snap).into_iter().enumerate() {
         let area = output.rings[r].signed_area();
         let want_ccw = depth % 2 == 0;
         if (area > 0.0) != want_ccw {
@@ -234,8 +234,9 @@ fn check_orientation(output: &Polygons) -> Result<(), PolygonFailure> {
 /// For each ring, how many other rings hold it (rings that do not cross). One exact winding
 /// count per ring, at its first vertex, against every other ring at once: the edges are
 /// bucketed by height, so the vertex meets only the edges at its height. Where the vertex lies
-/// on another ring (they touch there), that pair is decided by [`ring_inside`].
-fn nesting_depths(output: &Polygons) -> Vec<usize> {
+/// on another ring, or within `snap` of it (they touch there, up to a rounded vertex), that pair
+/// is decided by [`ring_inside`].
+fn nesting_depths(output: &Polygons, snap: f64) -> Vec<usize> {
     let rings = &output.rings;
     let edges: Vec<(Point, Point, usize)> =
         rings.iter().enumerate().flat_map(|(r, ring)| ring.edges().map(move |e| (e.a, e.b, r))).collect();
@@ -255,20 +256,35 @@ fn nesting_depths(output: &Polygons) -> Vec<usize> {
     let mut winding = vec![0i32; rings.len()];
     let mut touching = vec![false; rings.len()];
     let mut met: Vec<usize> = Vec::new();
+    let mut near: Vec<u32> = Vec::new();
     let mut depths = Vec::with_capacity(rings.len());
     for (r, ring) in rings.iter().enumerate() {
         let Some(&p) = ring.points.first() else {
             depths.push(0);
             continue;
         };
-        for &i in &buckets[bucket_of(p.y)] {
+        // The edges at the vertex's height, and within `snap` of it (one bucket but rarely).
+        let (lo, hi) = (bucket_of(p.y - snap), bucket_of(p.y + snap));
+        let candidates: &[u32] = if lo == hi {
+            &buckets[lo]
+        } else {
+            near.clear();
+            near.extend(buckets[lo..=hi].iter().flatten());
+            near.sort_unstable();
+            near.dedup();
+            &near
+        };
+        for &i in candidates {
             let (a, c, s) = edges[i as usize];
-            if s == r || p.y < a.y.min(c.y) || p.y > a.y.max(c.y) || p.x > a.x.max(c.x) {
+            let (bottom, top) = (a.y.min(c.y), a.y.max(c.y));
+            if s == r || p.y < bottom - snap || p.y > top + snap || p.x > a.x.max(c.x) + snap {
                 continue;
             }
             met.push(s);
-            if on_segment(p, Segment::new(a, c)) {
+            if within(p, Segment::new(a, c), snap) {
                 touching[s] = true;
+            } else if p.y < bottom || p.y > top || p.x > a.x.max(c.x) {
+                continue;
             } else if a.y <= p.y {
                 if c.y > p.y && orient(a, c, p) == Orientation::CounterClockwise {
                     winding[s] += 1;
@@ -279,8 +295,10 @@ fn nesting_depths(output: &Polygons) -> Vec<usize> {
         }
         met.sort_unstable();
         met.dedup();
-        let depth =
-            met.iter().filter(|&&s| if touching[s] { ring_inside(ring, &rings[s]) } else { winding[s] != 0 }).count();
+        let depth = met
+            .iter()
+            .filter(|&&s| if touching[s] { ring_inside(ring, &rings[s], snap) } else { winding[s] != 0 })
+            .count();
         depths.push(depth);
         for &s in &met {
             winding[s] = 0;
@@ -291,11 +309,22 @@ fn nesting_depths(output: &Polygons) -> Vec<usize> {
     depths
 }
 
+/// True when `p` is on `e` (exactly, when `snap` is 0) or within `snap` of it.
+fn within(p: Point, e: Segment, snap: f64) -> bool {
+    if snap == 0.0 {
+        return on_segment(p, e);
+    }
+    let (dx, dy) = (e.b.x - e.a.x, e.b.y - e.a.y);
+    let length2 = dx * dx + dy * dy;
+    let t = if length2 > 0.0 { (((p.x - e.a.x) * dx + (p.y - e.a.y) * dy) / length2).clamp(0.0, 1.0) } else { 0.0 };
+    p.distance(Point::new(e.a.x + t * dx, e.a.y + t * dy)) <= snap
+}
+
 /// True when ring `r` lies inside ring `s` (rings that do not cross): decided at the first
-/// vertex or edge midpoint of `r` that is not on `s`.
-fn ring_inside(r: &Ring, s: &Ring) -> bool {
+/// vertex or edge midpoint of `r` that is neither on `s` nor within `snap` of it.
+fn ring_inside(r: &Ring, s: &Ring, snap: f64) -> bool {
     let probes = r.points.iter().copied().chain(r.edges().map(|e| e.at(0.5)));
-    for p in probes {
+    for p in probes.filter(|&p| snap == 0.0 || !s.edges().any(|e| within(p, e, snap))) {
         if let Some(w) = ring_winding(p, s) {
             return w != 0;
         }
