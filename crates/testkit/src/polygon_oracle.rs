@@ -9,7 +9,7 @@ mod sampling;
 mod validity;
 
 pub use region_area::{region_area, region_area_with_witness};
-pub use validity::{bridge_count, check_valid_output, check_valid_output_within};
+pub use validity::{bridge_count, bridge_count_within, check_valid_output, check_valid_output_within};
 
 use clip_core::{BoolOp, FillRule, Point, Polygons, Rect};
 use core::fmt;

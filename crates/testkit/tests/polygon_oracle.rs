@@ -360,3 +360,18 @@ fn a_ring_touching_another_at_a_rounded_vertex_is_not_read_as_its_hole() {
     assert!(check_valid_output_within(&output, snap).is_ok(), "{:?}", check_valid_output_within(&output, snap));
     assert!(check_valid_output(&output).is_err(), "exactly, the apex is off the edge");
 }
+
+#[test]
+fn a_bridge_on_a_slanted_side_is_counted_within_rounding() {
+    // The same two squares rotated by 30 degrees: the bridge's two edges end at points rotated
+    // (so rounded) separately, collinear only to within ulps.
+    let (sin, cos) = 30f64.to_radians().sin_cos();
+    let turn = |(x, y): (f64, f64)| (x * cos - y * sin, x * sin + y * cos);
+    let points = [(0.0, 0.0), (4.0, 0.0), (4.0, 1.0), (3.0, 1.0), (3.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+    let bridged = Polygons::from(ring(&points.map(turn)));
+    assert_eq!(bridge_count_within(&bridged, 1e-9), 1);
+    // Edges that are merely close and antiparallel, farther apart than the snap, are not a bridge.
+    let apart =
+        ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 1.0), (3.0, 1.0), (3.0, 1e-6), (1.0, 1e-6), (1.0, 1.0), (0.0, 1.0)]);
+    assert_eq!(bridge_count_within(&Polygons::from(apart), 1e-9), 0);
+}

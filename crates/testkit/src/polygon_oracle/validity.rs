@@ -336,18 +336,49 @@ fn ring_inside(r: &Ring, s: &Ring, snap: f64) -> bool {
 /// along a positive length while running in opposite directions. Such pairs enclose no area;
 /// Sutherland-Hodgman leaves them along the window when a concave result falls apart.
 pub fn bridge_count(output: &Polygons) -> usize {
+    bridge_count_within(output, 0.0)
+}
+
+/// [`bridge_count`], where edges within `snap` of each other's line count as overlapping: on a
+/// slanted window side, the two edges of a bridge end at points rounded separately, so they are
+/// collinear only to within rounding. With `snap` 0 the overlap is exact.
+pub fn bridge_count_within(output: &Polygons, snap: f64) -> usize {
     let edges = ring_edges(output);
     let mut count = 0;
     let _ = for_each_close_pair(&edges, |e, f| {
-        if let SegmentIntersection::Overlap(_) = segment_intersection(e.segment, f.segment) {
-            let (d, g) = (e.segment.b - e.segment.a, f.segment.b - f.segment.a);
-            // Collinear, so the signs along either axis agree; use the larger component.
-            let opposite = if d.x.abs() >= d.y.abs() { (d.x > 0.0) != (g.x > 0.0) } else { (d.y > 0.0) != (g.y > 0.0) };
-            if opposite {
-                count += 1;
-            }
-        }
+        count += usize::from(if snap > 0.0 {
+            opposite_within(e.segment, f.segment, snap)
+        } else {
+            opposite_overlap(e.segment, f.segment)
+        });
         Ok(())
     });
     count
+}
+
+/// Exactly collinear, overlapping along a positive length, in opposite directions.
+fn opposite_overlap(e: Segment, f: Segment) -> bool {
+    if let SegmentIntersection::Overlap(_) = segment_intersection(e, f) {
+        let (d, g) = (e.b - e.a, f.b - f.a);
+        // Collinear, so the signs along either axis agree; use the larger component.
+        if d.x.abs() >= d.y.abs() { (d.x > 0.0) != (g.x > 0.0) } else { (d.y > 0.0) != (g.y > 0.0) }
+    } else {
+        false
+    }
+}
+
+/// Opposite directions, `f` within `snap` of `e`'s line, and overlapping along it by more than
+/// `snap`.
+fn opposite_within(e: Segment, f: Segment, snap: f64) -> bool {
+    let d = e.b - e.a;
+    let length = (d.x * d.x + d.y * d.y).sqrt();
+    if length <= snap {
+        return false;
+    }
+    let (ux, uy) = (d.x / length, d.y / length);
+    let along = |p: Point| (p.x - e.a.x) * ux + (p.y - e.a.y) * uy;
+    let across = |p: Point| ((p.x - e.a.x) * uy - (p.y - e.a.y) * ux).abs();
+    let (fa, fb) = (along(f.a), along(f.b));
+    let overlap = fa.max(fb).min(length) - fa.min(fb).max(0.0);
+    fb < fa && overlap > snap && across(f.a) <= snap && across(f.b) <= snap
 }
