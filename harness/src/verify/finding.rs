@@ -91,4 +91,28 @@ impl CaseOutcome {
             findings: Vec::new(),
         }
     }
+
+    /// Notes that clippers `x` and `y` (row indices) were compared on this case, in the rows of
+    /// those `counted` here, and whether they `disagree`. For a disagreement, returns the rows
+    /// to record it under: (a counted side, the other), ours before a peer.
+    pub fn compared(
+        &mut self,
+        (x, y): (usize, usize),
+        counted: &dyn Fn(usize) -> bool,
+        disagree: bool,
+    ) -> Option<(usize, usize)> {
+        for (me, other) in [(x, y), (y, x)] {
+            if counted(me) {
+                let name = self.rows[other].clipper;
+                *self.rows[me].disagreements.entry(name).or_default() += usize::from(disagree);
+            }
+        }
+        if !disagree {
+            return None;
+        }
+        [(x, y), (y, x)]
+            .into_iter()
+            .filter(|&(me, _)| counted(me))
+            .min_by_key(|&(me, _)| self.rows[me].origin == "peer")
+    }
 }

@@ -7,7 +7,7 @@ use clip_testkit::workload::line_case;
 use super::finding::{CaseOutcome, Finding, Kind};
 use super::polygon_runs::{takes, variants};
 use crate::checks::{Check, line_oracle, lines_agree, run_line};
-use crate::registry::{LineEntry, Origin};
+use crate::registry::LineEntry;
 
 /// What to run on every line case.
 pub struct LinePlan<'a> {
@@ -65,28 +65,15 @@ impl LinePlan<'_> {
             for &x in &here {
                 for &y in here.iter().filter(|&&y| y > x) {
                     let (Some(px), Some(py)) = (&outputs[x], &outputs[y]) else { continue };
-                    for (me, other) in [(x, y), (y, x)] {
-                        if counted(me) {
-                            outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
-                        }
-                    }
                     // A pair where one result failed the oracle is that result's failure.
-                    if !(passed[x] && passed[y]) {
-                        continue;
-                    }
-                    let Err(message) = lines_agree((self.entries[x], px), (self.entries[y], py), &case.segments) else {
-                        continue;
+                    let verdict = if passed[x] && passed[y] {
+                        lines_agree((self.entries[x], px), (self.entries[y], py), &case.segments)
+                    } else {
+                        Ok(())
                     };
-                    for (me, other) in [(x, y), (y, x)] {
-                        if counted(me) {
-                            *outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default() += 1;
-                        }
-                    }
-                    let under = [(x, y), (y, x)]
-                        .into_iter()
-                        .filter(|&(me, _)| counted(me))
-                        .min_by_key(|&(me, _)| self.entries[me].origin == Origin::Peer);
-                    if let Some((me, other)) = under {
+                    if let Some((me, other)) = outcome.compared((x, y), &counted, verdict.is_err())
+                        && let Err(message) = verdict
+                    {
                         let check = Check::Disagreement(self.entries[other].clipper.name());
                         outcome.findings.push(finding(self.entries[me].clipper.name(), check, message));
                     }

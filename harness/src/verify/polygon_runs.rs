@@ -7,7 +7,7 @@ use clip_testkit::workload::polygon_case;
 
 use super::finding::{CaseOutcome, Finding, Kind};
 use crate::checks::{Check, area_identities, polygon_oracle, polygons_agree, run_polygon};
-use crate::registry::{Origin, PolygonEntry};
+use crate::registry::PolygonEntry;
 
 /// What to run on every polygon case.
 pub struct PolygonPlan<'a> {
@@ -164,27 +164,14 @@ impl PolygonPlan<'_> {
             for &y in here.iter().filter(|&&y| y > x) {
                 let (Some(ox), Some(oy)) = (&outputs[x][slot], &outputs[y][slot]) else { continue };
                 let (ex, ey) = (self.entries[x], self.entries[y]);
-                for (me, other) in [(x, y), (y, x)] {
-                    if counted(me) {
-                        outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default();
-                    }
-                }
                 // A pair where one result failed the oracle is that result's failure, not a disagreement.
-                let Some(both) = off_exact[x].zip(off_exact[y]) else { continue };
-                let Err(message) = polygons_agree((ex, ox), (ey, oy), subject, clip, fill, Some(both)) else {
-                    continue;
+                let verdict = match off_exact[x].zip(off_exact[y]) {
+                    Some(both) => polygons_agree((ex, ox), (ey, oy), subject, clip, fill, Some(both)),
+                    None => Ok(()),
                 };
-                for (me, other) in [(x, y), (y, x)] {
-                    if counted(me) {
-                        *outcome.rows[me].disagreements.entry(self.entries[other].clipper.name()).or_default() += 1;
-                    }
-                }
-                // Record under a side counted on this case, ours first, else the first.
-                let under = [(x, y), (y, x)]
-                    .into_iter()
-                    .filter(|&(me, _)| counted(me))
-                    .min_by_key(|&(me, _)| self.entries[me].origin == Origin::Peer);
-                if let Some((me, other)) = under {
+                if let Some((me, other)) = outcome.compared((x, y), counted, verdict.is_err())
+                    && let Err(message) = verdict
+                {
                     let check = Check::Disagreement(self.entries[other].clipper.name());
                     outcome.findings.push(finding(self.entries[me].clipper.name(), Some(op), fill, check, message));
                 }
