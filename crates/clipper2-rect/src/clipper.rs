@@ -2,7 +2,7 @@
 
 use clip_core::{
     BoolOp, ClipError, FillRule, Operand, Point, PolygonCapabilities, PolygonClipper, Polygons, Rect, Ring, WindowKind,
-    rect_window, validate_polygons,
+    rect_window, validate_polygons, window_covers,
 };
 
 use crate::NAME;
@@ -71,10 +71,8 @@ impl PolygonClipper for Clipper2RectClipper {
         self.capabilities().check(NAME, op, fill)?;
         validate_polygons(subject, Operand::Subject)?;
         let rect = rect_window(clip, NAME)?;
-        // The window is read under `fill` too: under positive (negative) a clockwise
-        // (counter-clockwise) rectangle covers nothing. RectClip itself ignores orientation.
-        let covers = clip.rings[0].convex_orientation().is_some_and(|o| fill.is_inside(o.sign()));
-        if !covers {
+        // RectClip itself ignores the window's orientation.
+        if !window_covers(clip, fill) {
             return Ok(Polygons::empty());
         }
         self.clip_to_rect(subject, &rect)

@@ -3,7 +3,7 @@
 use core::fmt;
 
 use crate::predicates::Orientation;
-use crate::{Point, Polygons, Rect, Ring, Segment};
+use crate::{FillRule, Point, Polygons, Rect, Ring, Segment};
 
 /// Largest coordinate magnitude accepted. Below it every product of two coordinate differences,
 /// and sums of a few such products, stay finite, so the exact predicates stay exact.
@@ -177,6 +177,14 @@ pub fn convex_window(window: &Polygons, clipper: &'static str) -> Result<(Ring, 
         Some(o) => Ok((ring, o)),
         None => Err(ClipError::WindowNotConvex { clipper, reason: "it turns both ways, folds back or winds twice" }),
     }
+}
+
+/// Whether a one-ring convex window (as [`convex_window`] or [`rect_window`] accepted it) covers
+/// its interior under `fill`: under positive (negative) a clockwise (counter-clockwise) window
+/// winds -1 (+1) inside and so covers nothing; under non-zero and even-odd it always does.
+/// Window clippers return the empty result when it does not.
+pub fn window_covers(window: &Polygons, fill: FillRule) -> bool {
+    window.rings.first().and_then(Ring::convex_orientation).is_some_and(|o| fill.is_inside(o.sign()))
 }
 
 /// The window as an axis-aligned rectangle, or the error a rectangle clipper should return.

@@ -49,7 +49,7 @@ pub use clipper::{
 };
 pub use error::{
     ClipError, MAX_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
-    validate_segments, validate_window,
+    validate_segments, validate_window, window_covers,
 };
 pub use line_crossings::{LineCrossings, PARAMETER_SNAP};
 pub use line_frame::{Along, LineFrame};

@@ -4,7 +4,7 @@ use clip_core::predicates::{crossing_point, on_segment, orient2d};
 use clip_core::{
     ClipError, FillRule, Location, Operand, Orientation, Point, Polygons, Rect, Ring, Segment, SegmentIntersection,
     convex_window, locate, nest, orient, rect_window, segment_intersection, validate_polygons, validate_segments,
-    validate_window, winding_number,
+    validate_window, winding_number, window_covers,
 };
 use proptest::prelude::*;
 
@@ -361,4 +361,16 @@ fn cohen_sutherland_codes_and_trivial_reject() {
     // Beyond different sides but missing the box: not a trivial reject.
     assert!(!r.rejects_segment(p(-1.0, 1.0), p(1.0, 5.0)));
     assert!(!r.rejects_segment(p(4.0, 3.0), p(4.0, 2.0)), "ends on the corner");
+}
+
+#[test]
+fn a_window_covers_its_inside_unless_its_orientation_winds_the_wrong_way_for_the_rule() {
+    let ccw = Polygons::from(Rect::new(0.0, 0.0, 2.0, 1.0));
+    let cw = Polygons::from(Rect::new(0.0, 0.0, 2.0, 1.0).to_ring().reversed());
+    for fill in [FillRule::EvenOdd, FillRule::NonZero] {
+        assert!(window_covers(&ccw, fill) && window_covers(&cw, fill), "{fill}");
+    }
+    assert!(window_covers(&ccw, FillRule::Positive) && !window_covers(&cw, FillRule::Positive));
+    assert!(!window_covers(&ccw, FillRule::Negative) && window_covers(&cw, FillRule::Negative));
+    assert!(!window_covers(&Polygons::empty(), FillRule::NonZero));
 }

@@ -3,7 +3,7 @@
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Rect, Ring, WindowKind,
-    rect_window, validate_polygons,
+    rect_window, validate_polygons, window_covers,
 };
 
 use crate::NAME;
@@ -43,11 +43,8 @@ impl PolygonClipper for FourState {
         validate_polygons(subject, Operand::Subject)?;
         let rect = rect_window(clip, NAME)?;
         // Any fill rule: like Sutherland-Hodgman, the walk replaces what lies outside a boundary
-        // by pieces of that boundary, which keeps every winding number inside the rectangle. The
-        // window is read under `fill` too: under positive (negative) a clockwise
-        // (counter-clockwise) rectangle covers nothing.
-        let covers = clip.rings[0].convex_orientation().is_some_and(|o| fill.is_inside(o.sign()));
-        if !covers {
+        // by pieces of that boundary, which keeps every winding number inside the rectangle.
+        if !window_covers(clip, fill) {
             return Ok(Polygons::empty());
         }
         Ok(self.clip_to_rect(subject, &rect))

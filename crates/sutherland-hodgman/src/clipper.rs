@@ -2,6 +2,7 @@
 
 use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, WindowKind, validate_polygons,
+    window_covers,
 };
 
 use crate::window::ConvexWindow;
@@ -50,10 +51,8 @@ impl PolygonClipper for SutherlandHodgman {
         validate_polygons(subject, Operand::Subject)?;
         let window = ConvexWindow::new(clip)?;
         // Any fill rule: clipping to half-planes keeps every winding number inside the window, so
-        // the output read under `fill` is the subject read under `fill`, within the window. The
-        // window is read under `fill` too: under positive (negative) a clockwise
-        // (counter-clockwise) window covers nothing.
-        if !clip.rings[0].convex_orientation().is_some_and(|o| fill.is_inside(o.sign())) {
+        // the output read under `fill` is the subject read under `fill`, within the window.
+        if !window_covers(clip, fill) {
             return Ok(Polygons::empty());
         }
         Ok(window.clip(subject, self.form))
