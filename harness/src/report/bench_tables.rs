@@ -164,6 +164,35 @@ pub fn vatti_ratios(points: &Points, groups: &[String]) -> String {
     text
 }
 
+/// The rectangle-window clippers against Clipper2's dedicated rectangle clipper, per group where
+/// it ran, intersection: the ratio of geometric means over cases against the baseline, which is
+/// the geometric mean of the per-case ratios between the two.
+pub fn rect_clip_ratios(points: &Points, groups: &[String]) -> String {
+    const RECT_PEER: &str = "clipper2-rect";
+    let op = "intersection";
+    let mut text = String::new();
+    for g in groups {
+        let sizes: BTreeSet<usize> =
+            points.keys().filter(|(gg, o, _, c)| gg == g && o == op && c == RECT_PEER).map(|(_, _, s, _)| *s).collect();
+        let mut parts = Vec::new();
+        for s in sizes {
+            let key = |c: &str| (g.clone(), op.to_owned(), s, c.to_owned());
+            let Some(peer) = points.get(&key(RECT_PEER)) else { continue };
+            let ours: Vec<String> = ["sutherland-hodgman", "rect-four-state"]
+                .iter()
+                .filter_map(|c| points.get(&key(c)).map(|p| format!("{c} {}", num(p.ratio / peer.ratio, 2))))
+                .collect();
+            if !ours.is_empty() {
+                parts.push(format!("{s}: {}", ours.join(", ")));
+            }
+        }
+        if !parts.is_empty() {
+            text.push_str(&format!("- {g}, x {RECT_PEER}: {}.\n", parts.join("; ")));
+        }
+    }
+    text
+}
+
 /// Peak memory of the large groups, MiB above the resident size before the call.
 fn memory_table(records: &[MemoryRecord], clippers: &[String]) -> Option<String> {
     let mut points: BTreeMap<(String, usize), BTreeMap<String, u64>> = BTreeMap::new();
@@ -216,8 +245,11 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          ratio to `{BASELINE}` measured in the same run (geometric mean over cases; below 1 is faster than \
          Clipper2). Operands read under even-odd. ¹ marks a point over the time cap, timed once; n/a: not run (the \
          clipper does not take that window, or it was skipped after the cap: see the notes).\n\n\
-         Ratios of `vatti` at 4, 20, 100, 200 edges and the largest size (intersection):\n\n{}\n{notes}\n",
-        vatti_ratios(&points, &groups)
+         Ratios of `vatti` at 4, 20, 100, 200 edges and the largest size (intersection):\n\n{}\n\
+         Sutherland-Hodgman and four-state on rectangle windows against Clipper2's rectangle clipper \
+         (`clipper2-rect`, RectClip64), measured in the same run:\n\n{}\n{notes}\n",
+        vatti_ratios(&points, &groups),
+        rect_clip_ratios(&points, &groups)
     );
     for g in &groups {
         chart(&points, g, &clippers).write_svg(&out.join(plot_file(g)))?;
@@ -271,5 +303,20 @@ mod tests {
         assert_eq!(v.time_ns, 1025.0);
         let text = vatti_ratios(&p, &["star".to_owned()]);
         assert!(text.contains("20: 1.00 x clipper2, 0.47 x geo"), "{text}");
+    }
+
+    #[test]
+    fn rectangle_clippers_are_compared_with_clipper2_rect_case_by_case() {
+        let rows = vec![
+            m("clipper2", "0", 0, 100.0),
+            m("clipper2", "1", 0, 1000.0),
+            m("clipper2-rect", "0", 0, 10.0),
+            m("clipper2-rect", "1", 0, 400.0),
+            m("sutherland-hodgman", "0", 0, 5.0),
+            m("sutherland-hodgman", "1", 0, 800.0),
+        ];
+        let text = rect_clip_ratios(&points(&rows), &["star".to_owned()]);
+        // Per case 0.5 and 2: geometric mean 1.
+        assert_eq!(text, "- star, x clipper2-rect: 20: sutherland-hodgman 1.00.\n");
     }
 }
