@@ -186,6 +186,37 @@ fn verify_prints_a_table_writes_json_and_does_not_depend_on_the_thread_count() {
     assert_eq!(summary_one, summary_two);
 }
 
+/// Every clipper of this project on every workload it takes, every op and fill rule, against
+/// the oracle: a regression in any of them fails CI here (peers are left out: their failures
+/// are reported, not failed on).
+#[test]
+fn verify_passes_every_clipper_of_ours_on_every_workload() {
+    let dir = scratch("verify-ours");
+    let ours =
+        ["vatti", "sutherland-hodgman", "rect-four-state", "cyrus-beck", "liu", "virtual-box", "virtual-box-no45"];
+    let small = ["vatti-t3", "star", "scribble", "holes", "multi", "grid", "wang-t4", "lines-degenerate"];
+    for (workloads, cases) in [(&small[..], 120), (&["large"][..], 4)] {
+        let json = dir.join(format!("{}.json", workloads[0]));
+        let mut args = vec!["verify".to_owned(), "--cases".to_owned(), cases.to_string()];
+        args.extend(workloads.iter().flat_map(|w| ["--workload".to_owned(), (*w).to_owned()]));
+        args.extend(ours.iter().flat_map(|c| ["--clipper".to_owned(), (*c).to_owned()]));
+        args.extend(["--json".to_owned(), json.to_str().unwrap().to_owned()]);
+        args.extend(["--out".to_owned(), dir.join(workloads[0]).to_str().unwrap().to_owned()]);
+        let o = clipbench(&args.iter().map(String::as_str).collect::<Vec<_>>());
+        assert!(o.status.success(), "{}{}", stdout(&o), stderr(&o));
+        let summary: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+        let rows = summary["rows"].as_array().unwrap();
+        for w in workloads {
+            let here: Vec<&serde_json::Value> = rows.iter().filter(|r| r["workload"] == *w).collect();
+            assert!(!here.is_empty(), "no clipper ran {w}");
+            for r in here {
+                assert_eq!(r["cases"], cases, "{r}");
+                assert_eq!(r["oracle_failures"], 0, "{r}");
+            }
+        }
+    }
+}
+
 #[test]
 fn replay_reruns_a_saved_case() {
     let dir = scratch("replay");
