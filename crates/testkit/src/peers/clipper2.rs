@@ -1,5 +1,6 @@
 //! The C++ Clipper2 (through the `clipper2` crate) as a polygon clipper.
 
+use clip_clipper2_rect::IntegerGrid;
 use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Ring, validate_polygons,
 };
@@ -8,12 +9,14 @@ use clipper2::{Clipper, FillRule as C2Fill, One, Path, Paths, Point as C2Point};
 /// Clipper2's boolean operations: all four ops under all four fill rules.
 ///
 /// Clipper2 works on 64-bit integers. The crate's default scaler rounds to 0.01, far too coarse
-/// for unit-sized or grid inputs, so each call moves the inputs' bounding-box centre to the
-/// origin and picks its own power-of-two scale that maps the largest distance from it to just
-/// under [`Clipper2Clipper::GRID_BITS`] bits: the rounding step is then about extent x 2^-30
-/// (like geo's snapping) wherever the inputs sit, and the output is moved back. Every ring is passed in order with its orientation; Clipper2 reads counter-clockwise
-/// loops as +1, as we do, and returns outers counter-clockwise and holes clockwise (positive area
-/// for outers, y up), which is our convention, so the output is converted ring by ring.
+/// for unit-sized or grid inputs, so each call fits its own [`IntegerGrid`] (shared with the
+/// `clipper2-rect` peer) to the inputs: their bounding-box centre at the origin and a power-of-two
+/// scale that maps the largest distance from it to just under [`Clipper2Clipper::GRID_BITS`]
+/// bits, so the rounding step is about extent x 2^-30 (like geo's snapping) wherever the inputs
+/// sit, and the output is moved back. Every ring is passed in order with its orientation;
+/// Clipper2 reads counter-clockwise loops as +1, as we do, and returns outers counter-clockwise
+/// and holes clockwise (positive area for outers, y up), which is our convention, so the output
+/// is converted ring by ring.
 ///
 /// [`Clipper2Clipper::native`] skips the scaling: coordinates are rounded to integers and used
 /// as they are, which is how Clipper2's own tests run their integer data (`Polygons.txt`). The
@@ -26,7 +29,7 @@ pub struct Clipper2Clipper {
 
 impl Clipper2Clipper {
     /// Bits of the integer grid the inputs' extent is scaled to.
-    pub const GRID_BITS: i32 = 30;
+    pub const GRID_BITS: i32 = IntegerGrid::BITS;
 
     /// The adapter on a grid scaled to the inputs' extent.
     pub fn new() -> Clipper2Clipper {
@@ -39,24 +42,7 @@ impl Clipper2Clipper {
     }
 }
 
-/// The power of two that maps coordinates of magnitude up to `extent` below 2^GRID_BITS.
-fn grid_scale(extent: f64) -> f64 {
-    if extent == 0.0 {
-        return 1.0;
-    }
-    // extent < 2^(e+1) when e = floor(log2(extent)); scale it below 2^GRID_BITS.
-    let exponent = extent.log2().floor() as i32 + 1;
-    2f64.powi(Clipper2Clipper::GRID_BITS - exponent)
-}
-
-/// Where the integer grid sits: `integer = round((coordinate - origin) * scale)`.
-#[derive(Clone, Copy, Debug)]
-struct Grid {
-    origin: clip_core::Point,
-    scale: f64,
-}
-
-fn to_paths(p: &Polygons, grid: Grid) -> Paths<One> {
+fn to_paths(p: &Polygons, grid: IntegerGrid) -> Paths<One> {
     Paths::new(
         p.rings
             .iter()
@@ -64,9 +50,9 @@ fn to_paths(p: &Polygons, grid: Grid) -> Paths<One> {
                 Path::new(
                     r.points
                         .iter()
-                        .map(|q| {
-                            let (x, y) = ((q.x - grid.origin.x) * grid.scale, (q.y - grid.origin.y) * grid.scale);
-                            C2Point::from_scaled(x.round() as i64, y.round() as i64)
+                        .map(|&q| {
+                            let [x, y] = grid.to_grid(q);
+                            C2Point::from_scaled(x, y)
                         })
                         .collect(),
                 )
@@ -75,20 +61,11 @@ fn to_paths(p: &Polygons, grid: Grid) -> Paths<One> {
     )
 }
 
-fn from_paths(paths: &Paths<One>, grid: Grid) -> Polygons {
+fn from_paths(paths: &Paths<One>, grid: IntegerGrid) -> Polygons {
     Polygons::new(
         paths
             .iter()
-            .map(|path| {
-                Ring::new(
-                    path.iter()
-                        .map(|q| {
-                            let (x, y) = (q.x_scaled() as f64 / grid.scale, q.y_scaled() as f64 / grid.scale);
-                            clip_core::Point::new(x + grid.origin.x, y + grid.origin.y)
-                        })
-                        .collect(),
-                )
-            })
+            .map(|path| Ring::new(path.iter().map(|q| grid.to_point([q.x_scaled(), q.y_scaled()])).collect()))
             .collect(),
     )
 }
@@ -115,15 +92,9 @@ impl PolygonClipper for Clipper2Clipper {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
         let grid = if self.native {
-            Grid { origin: clip_core::Point::ZERO, scale: 1.0 }
+            IntegerGrid { origin: clip_core::Point::ZERO, scale: 1.0 }
         } else {
-            let b = subject.bounds().union(clip.bounds());
-            let origin = if b.is_empty() { clip_core::Point::ZERO } else { b.min.lerp(b.max, 0.5) };
-            let extent = subject
-                .points()
-                .chain(clip.points())
-                .fold(0.0f64, |m, q| m.max((q.x - origin.x).abs()).max((q.y - origin.y).abs()));
-            Grid { origin, scale: grid_scale(extent) }
+            IntegerGrid::fitting(subject.bounds().union(clip.bounds()))
         };
         let clipper = Clipper::<_, One>::new().add_subject(to_paths(subject, grid)).add_clip(to_paths(clip, grid));
         let fill = c2_fill(fill);
@@ -147,15 +118,6 @@ mod tests {
 
     fn square(x0: f64, y0: f64, size: f64) -> Ring {
         Rect::new(x0, y0, x0 + size, y0 + size).to_ring()
-    }
-
-    #[test]
-    fn scale_keeps_the_extent_within_the_grid() {
-        for extent in [1e-7, 0.3, 1.0, 1280.0, 1e6, 1e140] {
-            let scaled = extent * grid_scale(extent);
-            assert!(scaled < 2f64.powi(Clipper2Clipper::GRID_BITS), "{extent}: {scaled}");
-            assert!(scaled >= 2f64.powi(Clipper2Clipper::GRID_BITS - 1), "{extent}: {scaled}");
-        }
     }
 
     #[test]
