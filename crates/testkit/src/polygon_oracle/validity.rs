@@ -315,9 +315,13 @@ fn within(p: Point, e: Segment, snap: f64) -> bool {
         return on_segment(p, e);
     }
     let (dx, dy) = (e.b.x - e.a.x, e.b.y - e.a.y);
+    if p.x < e.a.x.min(e.b.x) - snap || p.x > e.a.x.max(e.b.x) + snap {
+        return false;
+    }
     let length2 = dx * dx + dy * dy;
     let t = if length2 > 0.0 { (((p.x - e.a.x) * dx + (p.y - e.a.y) * dy) / length2).clamp(0.0, 1.0) } else { 0.0 };
-    p.distance(Point::new(e.a.x + t * dx, e.a.y + t * dy)) <= snap
+    let (ex, ey) = (p.x - (e.a.x + t * dx), p.y - (e.a.y + t * dy));
+    ex * ex + ey * ey <= snap * snap
 }
 
 /// True when ring `r` lies inside ring `s` (rings that do not cross): decided at the first
