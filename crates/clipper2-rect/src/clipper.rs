@@ -56,15 +56,7 @@ impl PolygonClipper for Clipper2RectClipper {
     }
 
     fn capabilities(&self) -> PolygonCapabilities {
-        PolygonCapabilities {
-            ops: &[BoolOp::Intersection],
-            fill_rules: &FillRule::ALL,
-            window: WindowKind::Rectangle,
-            trapezoids: false,
-            // Each ring is clipped on its own, so overlapping rings stay overlapping: the output
-            // is read under the input's fill rule, like Sutherland-Hodgman's.
-            bridges: true,
-        }
+        PolygonCapabilities::window_clipper(WindowKind::Rectangle)
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {

@@ -52,6 +52,19 @@ impl PolygonCapabilities {
         bridges: false,
     };
 
+    /// A window clipper (Sutherland-Hodgman, four-state, Clipper2's RectClip): intersection
+    /// with a `window` of the given kind under any fill rule, its output read under the input's
+    /// rule because each subject ring is clipped on its own (and may keep bridges).
+    pub const fn window_clipper(window: WindowKind) -> PolygonCapabilities {
+        PolygonCapabilities {
+            ops: &[BoolOp::Intersection],
+            fill_rules: &FillRule::ALL,
+            window,
+            trapezoids: false,
+            bridges: true,
+        }
+    }
+
     /// True when the clipper does `op` under `fill`.
     pub fn supports(&self, op: BoolOp, fill: FillRule) -> bool {
         self.ops.contains(&op) && self.fill_rules.contains(&fill)

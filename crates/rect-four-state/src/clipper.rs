@@ -29,13 +29,7 @@ impl PolygonClipper for FourState {
     }
 
     fn capabilities(&self) -> PolygonCapabilities {
-        PolygonCapabilities {
-            ops: &[BoolOp::Intersection],
-            fill_rules: &FillRule::ALL,
-            window: WindowKind::Rectangle,
-            trapezoids: false,
-            bridges: true,
-        }
+        PolygonCapabilities::window_clipper(WindowKind::Rectangle)
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {

@@ -37,13 +37,7 @@ impl PolygonClipper for SutherlandHodgman {
     }
 
     fn capabilities(&self) -> PolygonCapabilities {
-        PolygonCapabilities {
-            ops: &[BoolOp::Intersection],
-            fill_rules: &FillRule::ALL,
-            window: WindowKind::Convex,
-            trapezoids: false,
-            bridges: true,
-        }
+        PolygonCapabilities::window_clipper(WindowKind::Convex)
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
