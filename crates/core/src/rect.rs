@@ -87,6 +87,21 @@ impl Rect {
         p.x >= self.min.x && p.x <= self.max.x && p.y >= self.min.y && p.y <= self.max.y
     }
 
+    /// True when `other` lies in the closed box (an empty `other` lies in any box).
+    #[inline]
+    pub fn contains_rect(&self, other: &Rect) -> bool {
+        other.is_empty() || (self.contains(other.min) && self.contains(other.max))
+    }
+
+    /// The box grown by `by` on every side (an empty box stays empty).
+    #[inline]
+    pub fn expanded(&self, by: f64) -> Rect {
+        if self.is_empty() {
+            return *self;
+        }
+        Rect { min: Point::new(self.min.x - by, self.min.y - by), max: Point::new(self.max.x + by, self.max.y + by) }
+    }
+
     /// True when the closed boxes share a point.
     #[inline]
     pub fn intersects(&self, other: &Rect) -> bool {

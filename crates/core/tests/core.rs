@@ -374,3 +374,12 @@ fn a_window_covers_its_inside_unless_its_orientation_winds_the_wrong_way_for_the
     assert!(!window_covers(&ccw, FillRule::Negative) && window_covers(&cw, FillRule::Negative));
     assert!(!window_covers(&Polygons::empty(), FillRule::NonZero));
 }
+
+#[test]
+fn boxes_grow_and_hold_boxes() {
+    let r = Rect::new(0.0, 0.0, 2.0, 1.0);
+    assert_eq!(r.expanded(0.5), Rect::new(-0.5, -0.5, 2.5, 1.5));
+    assert!(r.expanded(1.0).contains_rect(&r) && r.contains_rect(&r));
+    assert!(!r.contains_rect(&Rect::new(1.0, 0.0, 2.5, 1.0)));
+    assert!(Rect::EMPTY.expanded(1.0).is_empty() && r.contains_rect(&Rect::EMPTY));
+}

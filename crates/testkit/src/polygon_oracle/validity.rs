@@ -30,50 +30,102 @@ fn ring_edges(p: &Polygons) -> Vec<RingEdge> {
         .collect()
 }
 
-/// Calls `visit` once on every pair of edges whose bounding boxes meet. The edges are binned
-/// into a uniform grid of about one cell per edge; a pair is visited in the one cell that holds
-/// the lower-left corner of the overlap of their boxes, so dense output (checkerboards of
-/// thousands of squares) costs about linear time rather than quadratic.
+/// Calls `visit` once on every pair of edges whose bounding boxes meet, each pair in the one
+/// cell of a [`CellIndex`] that holds the lower-left corner of the overlap of their boxes. So
+/// output whose edges crowd along a curve (10^4-gons) or across a checkerboard costs about
+/// linear time rather than quadratic.
 fn for_each_close_pair(
     edges: &[RingEdge],
     mut visit: impl FnMut(&RingEdge, &RingEdge) -> Result<(), PolygonFailure>,
 ) -> Result<(), PolygonFailure> {
-    let b = edges.iter().fold(Rect::EMPTY, |b, e| b.union(e.bounds));
-    if b.is_empty() {
-        return Ok(());
-    }
-    let side = ((edges.len() as f64).sqrt().ceil() as usize).clamp(1, 512);
-    let (cw, ch) = (b.width() / side as f64, b.height() / side as f64);
-    let cell = |v: f64, lo: f64, size: f64| {
-        let k = if size > 0.0 { ((v - lo) / size).floor() } else { 0.0 };
-        if k > 0.0 { (k as usize).min(side - 1) } else { 0 }
-    };
-    let mut cells: Vec<Vec<u32>> = vec![Vec::new(); side * side];
-    for (i, e) in edges.iter().enumerate() {
-        let (x0, x1) = (cell(e.bounds.min.x, b.min.x, cw), cell(e.bounds.max.x, b.min.x, cw));
-        let (y0, y1) = (cell(e.bounds.min.y, b.min.y, ch), cell(e.bounds.max.y, b.min.y, ch));
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                cells[y * side + x].push(i as u32);
-            }
-        }
-    }
-    for (c, members) in cells.iter().enumerate() {
-        for (k, &i) in members.iter().enumerate() {
+    let boxes: Vec<Rect> = edges.iter().map(|e| e.bounds).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return Ok(()) };
+    for members in index.entries.chunk_by(|a, b| a.0 == b.0) {
+        for (k, &(cell, i)) in members.iter().enumerate() {
             let e = &edges[i as usize];
-            for &j in &members[k + 1..] {
+            for &(_, j) in &members[k + 1..] {
                 let f = &edges[j as usize];
                 if !e.bounds.intersects(&f.bounds) {
                     continue;
                 }
-                let (lx, ly) = (e.bounds.min.x.max(f.bounds.min.x), e.bounds.min.y.max(f.bounds.min.y));
-                if cell(ly, b.min.y, ch) * side + cell(lx, b.min.x, cw) == c {
+                let corner = Point::new(e.bounds.min.x.max(f.bounds.min.x), e.bounds.min.y.max(f.bounds.min.y));
+                if index.cell(corner) == cell {
                     visit(e, f)?;
                 }
             }
         }
     }
     Ok(())
+}
+
+/// Boxes binned into a uniform grid whose square cells are about as large as a typical box,
+/// kept sparse as sorted (cell, box) entries: every cell a box covers lists it.
+struct CellIndex {
+    origin: Point,
+    size: f64,
+    columns: u64,
+    rows: u64,
+    /// (cell key, box index), sorted.
+    entries: Vec<(u64, u32)>,
+}
+
+impl CellIndex {
+    /// The index of `boxes`, or `None` when there are none. Cells start at the median box's
+    /// larger side and double until the boxes cover at most eight cells each on average (a few
+    /// long boxes among many small ones must not cover millions).
+    fn new(boxes: &[Rect]) -> Option<CellIndex> {
+        let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
+        if b.is_empty() {
+            return None;
+        }
+        let mut sides: Vec<f64> = boxes.iter().map(|r| r.width().max(r.height())).collect();
+        let middle = sides.len() / 2;
+        let median = *sides.select_nth_unstable_by(middle, f64::total_cmp).1;
+        let mut size = median.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
+        loop {
+            let covered: f64 =
+                boxes.iter().map(|r| ((r.width() / size).floor() + 2.0) * ((r.height() / size).floor() + 2.0)).sum();
+            if covered <= 8.0 * boxes.len() as f64 || !size.is_finite() {
+                break;
+            }
+            size *= 2.0;
+        }
+        let count = |span: f64| ((span / size).floor() as u64).saturating_add(1);
+        let mut index =
+            CellIndex { origin: b.min, size, columns: count(b.width()), rows: count(b.height()), entries: Vec::new() };
+        let mut entries = Vec::with_capacity(2 * boxes.len());
+        for (i, r) in boxes.iter().enumerate() {
+            let ((x0, y0), (x1, y1)) = (index.coordinates(r.min), index.coordinates(r.max));
+            for y in y0..=y1 {
+                entries.extend((x0..=x1).map(|x| (y * index.columns + x, i as u32)));
+            }
+        }
+        entries.sort_unstable();
+        index.entries = entries;
+        Some(index)
+    }
+
+    /// The column and row holding `p` (clamped to the grid).
+    fn coordinates(&self, p: Point) -> (u64, u64) {
+        let index = |v: f64, lo: f64, n: u64| {
+            let k = ((v - lo) / self.size).floor();
+            if k > 0.0 { (k as u64).min(n - 1) } else { 0 }
+        };
+        (index(p.x, self.origin.x, self.columns), index(p.y, self.origin.y, self.rows))
+    }
+
+    /// The key of the cell holding `p`.
+    fn cell(&self, p: Point) -> u64 {
+        let (x, y) = self.coordinates(p);
+        y * self.columns + x
+    }
+
+    /// The boxes listed in the cell holding `p`.
+    fn at(&self, p: Point) -> impl Iterator<Item = usize> + '_ {
+        let key = self.cell(p);
+        let start = self.entries.partition_point(|e| e.0 < key);
+        self.entries[start..].iter().take_while(move |e| e.0 == key).map(|e| e.1 as usize)
+    }
 }
 
 /// Checks conventional output: every coordinate finite; every ring of at least 3 vertices, no
@@ -257,12 +309,24 @@ fn nesting_depths(output: &Polygons, snap: f64) -> Vec<usize> {
     let mut touching = vec![false; rings.len()];
     let mut met: Vec<usize> = Vec::new();
     let mut near: Vec<u32> = Vec::new();
+    // A ring can lie only inside rings whose box (grown by `snap`) holds its own box: rings that
+    // have none (every square of a checkerboard) are outers without a ray cast.
+    let grown: Vec<Rect> = rings.iter().map(|r| r.bounds().expanded(snap)).collect();
+    let boxes = CellIndex::new(&grown);
+    let may_hold = |r: usize, p: Point| {
+        let own = rings[r].bounds();
+        boxes.as_ref().is_some_and(|index| index.at(p).any(|s| s != r && grown[s].contains_rect(&own)))
+    };
     let mut depths = Vec::with_capacity(rings.len());
     for (r, ring) in rings.iter().enumerate() {
         let Some(&p) = ring.points.first() else {
             depths.push(0);
             continue;
         };
+        if !may_hold(r, p) {
+            depths.push(0);
+            continue;
+        }
         // The edges at the vertex's height, and within `snap` of it (one bucket but rarely).
         let (lo, hi) = (bucket_of(p.y - snap), bucket_of(p.y + snap));
         let candidates: &[u32] = if lo == hi {
