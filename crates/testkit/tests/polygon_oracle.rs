@@ -375,3 +375,21 @@ fn a_bridge_on_a_slanted_side_is_counted_within_rounding() {
         ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 1.0), (3.0, 1.0), (3.0, 1e-6), (1.0, 1e-6), (1.0, 1.0), (0.0, 1.0)]);
     assert_eq!(bridge_count_within(&Polygons::from(apart), 1e-9), 0);
 }
+
+/// Clipper2's union of multi seed 1 case 1104 left a hole of area 2e-10 touching its outer at a
+/// vertex, smaller than the snap distance: its nesting is decided exactly, not guessed.
+#[test]
+fn a_sliver_hole_within_the_snap_distance_is_read_by_its_exact_position() {
+    let outer = Rect::new(0.0, 0.0, 100.0, 100.0).to_ring();
+    let inside = ring(&[(50.0, 100.0), (50.00002, 99.99999), (49.99999, 99.99998)]);
+    let outside = ring(&[(50.0, 100.0), (49.99999, 100.00002), (50.00002, 100.00001)]);
+    let snap = 1e-4;
+    // Clockwise inside: a hole. Clockwise outside: a wrongly oriented outer.
+    assert!(inside.signed_area() < 0.0 && outside.signed_area() < 0.0);
+    let hole = Polygons::new(vec![outer.clone(), inside.clone()]);
+    assert!(check_valid_output_within(&hole, snap).is_ok(), "{:?}", check_valid_output_within(&hole, snap));
+    let stray = Polygons::new(vec![outer.clone(), outside]);
+    assert!(check_valid_output_within(&stray, snap).is_err());
+    let island = Polygons::new(vec![outer, inside.reversed()]);
+    assert!(check_valid_output_within(&island, snap).is_err(), "counter-clockwise inside is not a hole");
+}

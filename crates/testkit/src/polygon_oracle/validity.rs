@@ -389,15 +389,12 @@ fn within(p: Point, e: Segment, snap: f64) -> bool {
 }
 
 /// True when ring `r` lies inside ring `s` (rings that do not cross): decided at the first
-/// vertex or edge midpoint of `r` that is neither on `s` nor within `snap` of it.
+/// vertex or edge midpoint of `r` that is neither on `s` nor within `snap` of it; for a ring
+/// that lies wholly within `snap` of `s` (a rounding sliver), at the first one not exactly on it.
 fn ring_inside(r: &Ring, s: &Ring, snap: f64) -> bool {
-    let probes = r.points.iter().copied().chain(r.edges().map(|e| e.at(0.5)));
-    for p in probes.filter(|&p| snap == 0.0 || !s.edges().any(|e| within(p, e, snap))) {
-        if let Some(w) = ring_winding(p, s) {
-            return w != 0;
-        }
-    }
-    false
+    let probes = || r.points.iter().copied().chain(r.edges().map(|e| e.at(0.5)));
+    let clear = probes().filter(|&p| snap == 0.0 || !s.edges().any(|e| within(p, e, snap)));
+    clear.chain(probes()).find_map(|p| ring_winding(p, s)).is_some_and(|w| w != 0)
 }
 
 /// The number of zero-width bridges in an output: pairs of edges (of any rings) that overlap
