@@ -1,7 +1,7 @@
 //! `Clipper2RectLines`: Clipper2's `RectClipLines` behind clip-core's `LineClipper` trait.
 
 use clip_core::{
-    ClipError, LineCapabilities, LineClipper, Point, Polygons, PreparedWindow, Rect, Segment, VisiblePiece, WindowKind,
+    ClipError, LineCapabilities, LineClipper, Polygons, PreparedWindow, Rect, Segment, VisiblePiece, WindowKind,
     rect_window, validate_segments,
 };
 
@@ -46,7 +46,7 @@ impl PreparedWindow for RectWindow {
                 continue;
             }
             for (ta, tb) in visible_intervals(&self.rect, s)? {
-                out.push(VisiblePiece { segment: index, piece: Segment::new(point_at(s, ta), point_at(s, tb)) });
+                out.push(VisiblePiece { segment: index, piece: s.piece(ta, tb) });
             }
         }
         Ok(())
@@ -69,34 +69,6 @@ fn visible_intervals(rect: &Rect, s: &Segment) -> Result<Vec<(f64, f64)>, ClipEr
     let pieces = rect_clip_lines(window, &[vec![grid.to_grid(s.a), grid.to_grid(s.b)]]).ok_or_else(|| {
         ClipError::Unsupported { clipper: NAME, what: "an output with more than i32::MAX paths or points".into() }
     })?;
-    let mut intervals: Vec<(f64, f64)> = pieces
-        .iter()
-        .flat_map(|path| path.windows(2))
-        .map(|edge| {
-            let t0 = s.param_of(grid.to_point(edge[0])).clamp(0.0, 1.0);
-            let t1 = s.param_of(grid.to_point(edge[1])).clamp(0.0, 1.0);
-            (t0.min(t1), t0.max(t1))
-        })
-        .filter(|(ta, tb)| tb > ta)
-        .collect();
-    intervals.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let mut merged: Vec<(f64, f64)> = Vec::with_capacity(intervals.len());
-    for (ta, tb) in intervals {
-        match merged.last_mut() {
-            Some(last) if ta <= last.1 => last.1 = last.1.max(tb),
-            _ => merged.push((ta, tb)),
-        }
-    }
-    Ok(merged)
-}
-
-/// The point at `t`, exactly the input's end point at `t = 0` or `t = 1`.
-fn point_at(s: &Segment, t: f64) -> Point {
-    if t == 0.0 {
-        s.a
-    } else if t == 1.0 {
-        s.b
-    } else {
-        s.at(t)
-    }
+    let edges = pieces.iter().flat_map(|path| path.windows(2));
+    Ok(s.covered_intervals(edges.map(|e| Segment::new(grid.to_point(e[0]), grid.to_point(e[1])))))
 }

@@ -383,3 +383,18 @@ fn boxes_grow_and_hold_boxes() {
     assert!(!r.contains_rect(&Rect::new(1.0, 0.0, 2.5, 1.0)));
     assert!(Rect::EMPTY.expanded(1.0).is_empty() && r.contains_rect(&Rect::EMPTY));
 }
+
+#[test]
+fn covered_intervals_merge_pieces_and_pieces_keep_exact_end_points() {
+    let s = Segment::new(Point::new(0.1, 0.2), Point::new(10.3, 7.7));
+    // Pieces out of order, one reversed, two touching, one of zero length, one past the end.
+    let pieces = [s.piece(0.5, 0.75), s.piece(0.2, 0.1), s.piece(0.75, 0.9), s.piece(0.3, 0.3), s.piece(0.95, 1.0)];
+    let beyond = Segment::new(s.at(0.95), s.at(1.5));
+    let got = s.covered_intervals(pieces.into_iter().chain([beyond]));
+    let expected = [(0.1, 0.2), (0.5, 0.9), (0.95, 1.0)];
+    assert_eq!(got.len(), expected.len(), "{got:?}");
+    for ((a, b), (c, d)) in got.iter().zip(expected) {
+        assert!((a - c).abs() < 1e-12 && (b - d).abs() < 1e-12, "{got:?}");
+    }
+    assert_eq!(s.piece(0.0, 1.0), s, "end points exactly");
+}

@@ -116,46 +116,12 @@ impl PreparedWindow for GeoWindow {
             }
             let line = MultiLineString(vec![LineString::from(vec![s.a, s.b])]);
             let clipped = self.rings.clip_with_fill_rule(&line, false, GeoFill::EvenOdd);
-            for (ta, tb) in merged_intervals(s, &clipped) {
-                out.push(VisiblePiece { segment: index, piece: Segment::new(point_at(s, ta), point_at(s, tb)) });
+            let pieces = clipped.0.iter().flat_map(|ls| ls.lines()).map(|l| Segment::new(l.start.into(), l.end.into()));
+            for (ta, tb) in s.covered_intervals(pieces) {
+                out.push(VisiblePiece { segment: index, piece: s.piece(ta, tb) });
             }
         }
         Ok(())
-    }
-}
-
-/// geo's output for one segment as sorted, merged parameter intervals of positive length.
-fn merged_intervals(s: &Segment, clipped: &MultiLineString<f64>) -> Vec<(f64, f64)> {
-    let mut intervals: Vec<(f64, f64)> = clipped
-        .0
-        .iter()
-        .flat_map(|ls| ls.lines())
-        .map(|edge| {
-            let t0 = s.param_of(edge.start.into()).clamp(0.0, 1.0);
-            let t1 = s.param_of(edge.end.into()).clamp(0.0, 1.0);
-            (t0.min(t1), t0.max(t1))
-        })
-        .filter(|(ta, tb)| tb > ta)
-        .collect();
-    intervals.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let mut merged: Vec<(f64, f64)> = Vec::with_capacity(intervals.len());
-    for (ta, tb) in intervals {
-        match merged.last_mut() {
-            Some(last) if ta <= last.1 => last.1 = last.1.max(tb),
-            _ => merged.push((ta, tb)),
-        }
-    }
-    merged
-}
-
-/// The point at `t`, exactly the input's end point at `t = 0` or `t = 1`.
-fn point_at(s: &Segment, t: f64) -> clip_core::Point {
-    if t == 0.0 {
-        s.a
-    } else if t == 1.0 {
-        s.b
-    } else {
-        s.at(t)
     }
 }
 
