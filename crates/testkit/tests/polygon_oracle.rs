@@ -393,3 +393,18 @@ fn a_sliver_hole_within_the_snap_distance_is_read_by_its_exact_position() {
     let island = Polygons::new(vec![outer, inside.reversed()]);
     assert!(check_valid_output_within(&island, snap).is_err(), "counter-clockwise inside is not a hole");
 }
+
+/// Clipper2's difference of grid seed 1 case 100 (shrunk): a hole touches its outer at a
+/// rounded crossing point, one hole edge running along an outer edge from there; rounding tilts
+/// it by 1e-8, which an exact side test reads as the rings crossing at the shared point.
+#[test]
+fn a_hole_running_along_its_outer_from_a_rounded_shared_point_does_not_cross_it() {
+    let p = (12.66666665673256, 5.66666667163372);
+    let outer = ring(&[p, (16.0, 4.0), (7.0, 11.0), (0.0, 11.0), (14.0, 3.0)]);
+    let hole = ring(&[(12.0, 6.0), p, (13.0, 5.0)]);
+    let output = Polygons::new(vec![outer, hole]);
+    let snap = output.bounds().extent() * GEO_TOLERANCE;
+    assert!(check_valid_output_within(&output, snap).is_ok(), "{:?}", check_valid_output_within(&output, snap));
+    let exact = check_valid_output(&output).unwrap_err();
+    assert!(exact.to_string().contains("shared point"), "{exact}");
+}

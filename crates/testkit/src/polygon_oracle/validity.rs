@@ -220,7 +220,7 @@ fn check_pair(output: &Polygons, e: &RingEdge, f: &RingEdge, snap: f64) -> Resul
         SegmentIntersection::Overlap(_) => Ok(()),
         SegmentIntersection::Touching(p) => {
             let (pe, pf) = (passage(output, e, p), passage(output, f, p));
-            match (side(p, pe, pf.0), side(p, pe, pf.1)) {
+            match (side(p, pe, pf.0, snap), side(p, pe, pf.1, snap)) {
                 (Some(x), Some(y)) if x != y => invalid(format!(
                     "ring {} (edge {}) crosses ring {} (edge {}) at the shared point {}",
                     e.ring,
@@ -254,10 +254,10 @@ fn passage(output: &Polygons, e: &RingEdge, p: Point) -> (Point, Point) {
 
 /// Which side of the path `u -> p -> v` the ray from `p` towards `q` leaves on: `Some(true)`
 /// inside the counter-clockwise turn from ray `pu` to ray `pv`, `Some(false)` outside, `None`
-/// when it runs along either ray or the path folds back on itself. Exact.
-fn side(p: Point, (u, v): (Point, Point), q: Point) -> Option<bool> {
-    let along = |r: Point| orient(p, r, q) == Orientation::Collinear && !on_segment(p, Segment::new(r, q));
-    if q == p || along(u) || along(v) {
+/// when it runs along either ray (exactly, or within `snap`: `p` may be a rounded point) or the
+/// path folds back on itself.
+fn side(p: Point, (u, v): (Point, Point), q: Point, snap: f64) -> Option<bool> {
+    if q == p || runs_along(p, u, q, snap) || runs_along(p, v, q, snap) {
         return None;
     }
     let ccw = |a: Point, b: Point| orient(p, a, b) == Orientation::CounterClockwise;
@@ -267,6 +267,21 @@ fn side(p: Point, (u, v): (Point, Point), q: Point) -> Option<bool> {
         Orientation::Collinear if on_segment(p, Segment::new(u, v)) => Some(ccw(u, q)),
         Orientation::Collinear => None,
     }
+}
+
+/// True when the rays from `p` towards `r` and towards `q` run the same way: exactly, or with
+/// the nearer of the two points within `snap` of the line to the farther.
+fn runs_along(p: Point, r: Point, q: Point, snap: f64) -> bool {
+    if snap == 0.0 {
+        return orient(p, r, q) == Orientation::Collinear && !on_segment(p, Segment::new(r, q));
+    }
+    let (a, b) = (r - p, q - p);
+    if a.dot(b) <= 0.0 {
+        return false;
+    }
+    let (near, far) = if a.dot(a) <= b.dot(b) { (a, b) } else { (b, a) };
+    let cross = far.x * near.y - far.y * near.x;
+    cross.abs() <= snap * far.dot(far).sqrt()
 }
 
 /// Outer rings (even depth) counter-clockwise, holes (odd depth) clockwise.
