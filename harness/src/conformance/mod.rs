@@ -11,7 +11,7 @@ use std::process::ExitCode;
 
 use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons, VisiblePiece};
 use clip_testkit::case_record::{lines_svg, polygons_svg};
-use clip_testkit::clipper2_suite::{Record, judge};
+use clip_testkit::clipper2_suite::{Passed, Record, judge};
 use clip_testkit::peers::Clipper2Clipper;
 use clip_testkit::polygon_oracle::{same_region, tolerance};
 use clip_vatti::Vatti;
@@ -56,7 +56,8 @@ pub struct ConformanceArgs {
 
 /// One clipper's verdict on one case.
 enum Verdict {
-    Pass,
+    /// Passed; for Clipper2's records, by which readings (stored values when both are false).
+    Pass(Passed),
     /// Expected, got.
     Fail(String, String),
     Skip,
@@ -98,14 +99,19 @@ pub fn run(args: &ConformanceArgs, registry: Registry) -> Result<ExitCode, CliEr
     if clippers.is_empty() {
         return Err(CliError::usage(format!("no selected clipper can run {suite_name}")));
     }
-    // (passed, failed, skipped) per clipper.
+    // (passed, failed, skipped) per clipper, and passes by the exact area / normalised count.
     let mut tally = vec![(0usize, 0usize, 0usize); clippers.len()];
+    let mut readings = vec![(0usize, 0usize); clippers.len()];
     for case in &cases {
         for (k, t) in tally.iter_mut().enumerate() {
             let verdict =
                 if lines { judge_line(&registry.line[k], case) } else { judge_polygon(&registry.polygon[k], case) };
             match verdict {
-                Verdict::Pass => t.0 += 1,
+                Verdict::Pass(by) => {
+                    t.0 += 1;
+                    readings[k].0 += usize::from(by.by_exact_area);
+                    readings[k].1 += usize::from(by.by_normalised_count);
+                }
                 Verdict::Skip => t.2 += 1,
                 Verdict::Fail(expected, got) => {
                     t.1 += 1;
@@ -117,6 +123,12 @@ pub fn run(args: &ConformanceArgs, registry: Registry) -> Result<ExitCode, CliEr
     for ((name, _), (passed, failed, skipped)) in clippers.iter().zip(&tally) {
         let skipped = if *skipped > 0 { format!(", {skipped} skipped") } else { String::new() };
         println!("{name}: {passed} passed, {failed} failed{skipped}");
+    }
+    for ((name, _), (exact, normalised)) in clippers.iter().zip(&readings).filter(|(_, r)| r.0 + r.1 > 0) {
+        println!(
+            "  ({name}: of its passes, {exact} by the exact area where the stored one is off, {normalised} by \
+             Clipper2's live ring count in our ring convention)"
+        );
     }
     if let (Some(path), Some(case)) = (&args.svg, cases.first()) {
         write_file(path, &picture(&registry, case))?;
@@ -142,17 +154,19 @@ fn judge_polygon(entry: &PolygonEntry, case: &SuiteCase) -> Verdict {
     let judged = match expected {
         PolygonExpectation::Clipper2 { number, area, count } => {
             let record = Record { number: *number, subject, clip, op, fill, area: *area, count: *count };
-            judge(&record, &output, &output_rules(entry, fill), &normalise_rings).map(|_| ())
+            judge(&record, &output, &output_rules(entry, fill), &normalise_rings)
         }
         PolygonExpectation::Region(want) => {
             let allowed = tolerance(subject, clip, entry.tolerance);
-            same_region((&output, output_rules(entry, fill).output_fill), (want, fill), allowed).map_err(|area| {
-                ("the expected region".into(), format!("symmetric difference {area:e} > tolerance {allowed:e}"))
-            })
+            same_region((&output, output_rules(entry, fill).output_fill), (want, fill), allowed)
+                .map(|()| Passed::default())
+                .map_err(|area| {
+                    ("the expected region".into(), format!("symmetric difference {area:e} > tolerance {allowed:e}"))
+                })
         }
     };
     match judged {
-        Ok(()) => Verdict::Pass,
+        Ok(by) => Verdict::Pass(by),
         Err((expected, got)) => Verdict::Fail(expected, got),
     }
 }
@@ -173,7 +187,7 @@ fn judge_line(entry: &LineEntry, case: &SuiteCase) -> Verdict {
         return Verdict::Skip;
     }
     match run_line(entry, window, segments).and_then(|pieces| line_oracle(entry, window, segments, &pieces)) {
-        Ok(()) => Verdict::Pass,
+        Ok(()) => Verdict::Pass(Passed::default()),
         Err(message) => Verdict::Fail("the exact visible intervals".into(), message),
     }
 }
