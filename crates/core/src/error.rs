@@ -122,7 +122,7 @@ pub fn validate_ring(ring: &Ring, operand: Operand, part: usize) -> Result<(), C
     for (vertex, &p) in ring.points.iter().enumerate() {
         check_point(p, operand, part, vertex)?;
     }
-    let distinct = ring.distinct_points();
+    let distinct = ring.distinct_points_up_to(3);
     if distinct < 3 {
         return Err(ClipError::TooFewPoints { operand, part, distinct });
     }

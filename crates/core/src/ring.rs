@@ -56,6 +56,21 @@ impl Ring {
         Ring { points }
     }
 
+    /// Number of distinct vertices, counted only up to `limit`: a scan that stops once `limit`
+    /// are found, where [`Ring::distinct_points`] sorts (validation asks for at least three).
+    pub fn distinct_points_up_to(&self, limit: usize) -> usize {
+        let mut seen: Vec<Point> = Vec::with_capacity(limit);
+        for &p in &self.points {
+            if seen.len() >= limit {
+                break;
+            }
+            if !seen.contains(&p) {
+                seen.push(p);
+            }
+        }
+        seen.len()
+    }
+
     /// Number of distinct vertices.
     pub fn distinct_points(&self) -> usize {
         let mut pts: Vec<(u64, u64)> =

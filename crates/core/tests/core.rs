@@ -398,3 +398,16 @@ fn covered_intervals_merge_pieces_and_pieces_keep_exact_end_points() {
     }
     assert_eq!(s.piece(0.0, 1.0), s, "end points exactly");
 }
+
+#[test]
+fn distinct_points_up_to_a_limit_agree_with_the_full_count() {
+    let ring = Ring::new(
+        [(0.0, 0.0), (-0.0, 0.0), (1.0, 0.0), (0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (2.0, 2.0)]
+            .map(|(x, y)| Point::new(x, y))
+            .to_vec(),
+    );
+    assert_eq!(ring.distinct_points(), 4);
+    for limit in 0..6 {
+        assert_eq!(ring.distinct_points_up_to(limit), limit.min(4), "{limit}");
+    }
+}

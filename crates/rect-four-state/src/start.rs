@@ -41,6 +41,9 @@ pub(crate) fn walk_start(points: &[Point], rect: &Rect) -> WalkStart {
     let sides = rect.to_ring().edges().collect::<Vec<Segment>>();
     for i in 0..n {
         let edge = Segment::new(points[i], points[(i + 1) % n]);
+        if !edge.bounds().intersects(rect) {
+            continue;
+        }
         for side in &sides {
             let meet = match segment_intersection(edge, *side) {
                 SegmentIntersection::None => continue,
