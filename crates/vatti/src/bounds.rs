@@ -42,14 +42,18 @@ impl Bounds {
     /// Links every ring of both operands (repeated and collinear vertices removed, which leaves
     /// the region unchanged) and lists their local minima by increasing y.
     pub(crate) fn build(subject: &Polygons, clip: &Polygons) -> Bounds {
-        let mut b = Bounds::default();
+        let total: usize = [subject, clip].iter().flat_map(|p| &p.rings).map(|r| r.points.len()).sum();
+        let mut b = Bounds { vertices: Vec::with_capacity(total), minima: Vec::new() };
         for (kind, polygons) in [(SUBJECT, subject), (CLIP, clip)] {
             for ring in &polygons.rings {
                 b.add_ring(&simplify_ring(&ring.points), kind);
             }
         }
         let vertices = &b.vertices;
-        b.minima.sort_by(|p, q| vertices[p.vertex as usize].pt.y.total_cmp(&vertices[q.vertex as usize].pt.y));
+        // Ties in vertex order, as a stable sort would leave them.
+        b.minima.sort_unstable_by(|p, q| {
+            vertices[p.vertex as usize].pt.y.total_cmp(&vertices[q.vertex as usize].pt.y).then(p.vertex.cmp(&q.vertex))
+        });
         b
     }
 

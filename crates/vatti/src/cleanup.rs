@@ -10,76 +10,35 @@
 //! visit a vertex twice. So every ring is simple; rings touch only at vertices; outers come out
 //! counter-clockwise and holes clockwise. Collinear vertices are dropped last.
 
-use std::collections::HashMap;
-use std::collections::hash_map::Entry;
-use std::hash::{BuildHasherDefault, Hasher};
-
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{Point, Ring};
 
 use crate::simplify::simplify_ring;
 
-/// Exact key of a point (`-0.0` and `0.0` alike).
+/// Exact key of a point (`-0.0` and `0.0` alike), ordered so equal points sort together.
 #[inline]
 fn key(p: Point) -> (u64, u64) {
     ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
 }
-
-/// A fast multiplicative hash for exact point keys (the keys are not attacker-controlled).
-#[derive(Default)]
-struct KeyHasher(u64);
-
-impl Hasher for KeyHasher {
-    #[inline]
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(u64::from(b));
-        }
-    }
-
-    #[inline]
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x517c_c1b7_2722_0a95);
-    }
-
-    #[inline]
-    fn write_u32(&mut self, v: u32) {
-        self.write_u64(u64::from(v));
-    }
-
-    #[inline]
-    fn write_usize(&mut self, v: usize) {
-        self.write_u64(v as u64);
-    }
-
-    #[inline]
-    fn finish(&self) -> u64 {
-        self.0
-    }
-}
-
-type FastMap<K, V> = HashMap<K, V, BuildHasherDefault<KeyHasher>>;
 
 /// The sweep's rings as conventional output rings. Only rings that share a point with another
 /// ring (or with themselves) or have a vertex inside a horizontal edge are rebuilt; the others
 /// are already simple and lose only collinear vertices.
 pub(crate) fn conventional_rings(raw: Vec<Vec<Point>>) -> Vec<Ring> {
     let raw: Vec<Vec<Point>> = raw.into_iter().map(without_repeats).filter(|r| r.len() >= 3).collect();
-    let touched = touched_rings(&raw);
+    let mut touched = shared_points(&raw);
+    let splits = split_horizontals(&raw, &mut touched);
     let mut out = Vec::with_capacity(raw.len());
-    let mut rebuild_set = Vec::new();
-    for (r, t) in raw.into_iter().zip(touched) {
-        if t {
-            rebuild_set.push(r);
-        } else {
-            let s = simplify_ring(&r);
+    for (r, &t) in raw.iter().zip(&touched) {
+        if !t {
+            let s = simplify_ring(r);
             if s.len() >= 3 {
                 out.push(Ring::new(s));
             }
         }
     }
-    if !rebuild_set.is_empty() {
-        out.extend(rebuild(&rebuild_set));
+    if touched.contains(&true) {
+        rebuild(&raw, &touched, &splits, &mut out);
     }
     out
 }
@@ -93,42 +52,40 @@ fn without_repeats(mut r: Vec<Point>) -> Vec<Point> {
     r
 }
 
-/// For each ring: does it share a point with another ring or itself, or have a vertex inside a
-/// horizontal edge (or own a horizontal edge with another ring's vertex inside)?
-fn touched_rings(rings: &[Vec<Point>]) -> Vec<bool> {
+/// For each ring: does it share a point with another ring or visit one twice? By sorting the
+/// exact keys, which for the few hundred points of a typical result beats hashing them.
+fn shared_points(rings: &[Vec<Point>]) -> Vec<bool> {
     let mut touched = vec![false; rings.len()];
-    let total: usize = rings.iter().map(Vec::len).sum();
-    let mut first: FastMap<(u64, u64), usize> = FastMap::with_capacity_and_hasher(total, Default::default());
-    for (i, r) in rings.iter().enumerate() {
-        for &p in r {
-            match first.entry(key(p)) {
-                Entry::Occupied(e) => {
-                    touched[i] = true;
-                    touched[*e.get()] = true;
-                }
-                Entry::Vacant(e) => {
-                    e.insert(i);
-                }
+    let mut keyed: Vec<((u64, u64), u32)> =
+        rings.iter().enumerate().flat_map(|(i, r)| r.iter().map(move |&p| (key(p), i as u32))).collect();
+    keyed.sort_unstable_by_key(|&(k, _)| k);
+    for run in keyed.chunk_by(|a, b| a.0 == b.0) {
+        if run.len() > 1 {
+            for &(_, i) in run {
+                touched[i as usize] = true;
             }
-        }
-    }
-    for (edge_ring, vertex_rings) in horizontal_contacts(rings) {
-        touched[edge_ring] = true;
-        for v in vertex_rings {
-            touched[v] = true;
         }
     }
     touched
 }
 
-/// Rings with a horizontal edge that has vertices strictly inside it, with those vertices' rings.
-fn horizontal_contacts(rings: &[Vec<Point>]) -> Vec<(usize, Vec<usize>)> {
+/// A horizontal edge (`ring`, `edge`: the edge from vertex `edge` to the next) with vertices
+/// strictly inside it, at these x values in the edge's direction.
+struct SplitEdge {
+    ring: usize,
+    edge: usize,
+    xs: Vec<f64>,
+}
+
+/// Every horizontal edge with vertices strictly inside it, in ring and edge order; its ring and
+/// the vertices' rings are marked touched.
+fn split_horizontals(rings: &[Vec<Point>], touched: &mut [bool]) -> Vec<SplitEdge> {
     let has_horizontal = rings.iter().any(|r| (0..r.len()).any(|i| r[i].y == r[(i + 1) % r.len()].y));
     if !has_horizontal {
         return Vec::new();
     }
     let by_y = vertices_by_y(rings);
-    let mut contacts = Vec::new();
+    let mut splits = Vec::new();
     for (ri, r) in rings.iter().enumerate() {
         let n = r.len();
         for i in 0..n {
@@ -136,20 +93,30 @@ fn horizontal_contacts(rings: &[Vec<Point>]) -> Vec<(usize, Vec<usize>)> {
             if a.y != b.y {
                 continue;
             }
-            let inside: Vec<usize> = inside_horizontal(&by_y, a, b).map(|&(_, _, rj)| rj).collect();
-            if !inside.is_empty() {
-                contacts.push((ri, inside));
+            let mut xs = Vec::new();
+            for &(_, x, rj) in inside_horizontal(&by_y, a, b) {
+                touched[rj] = true;
+                xs.push(x);
             }
+            if xs.is_empty() {
+                continue;
+            }
+            touched[ri] = true;
+            xs.dedup();
+            if a.x > b.x {
+                xs.reverse();
+            }
+            splits.push(SplitEdge { ring: ri, edge: i, xs });
         }
     }
-    contacts
+    splits
 }
 
 /// Every vertex as `(y, x, ring)`, sorted by y then x.
 fn vertices_by_y(rings: &[Vec<Point>]) -> Vec<(f64, f64, usize)> {
     let mut v: Vec<(f64, f64, usize)> =
         rings.iter().enumerate().flat_map(|(i, r)| r.iter().map(move |p| (p.y, p.x, i))).collect();
-    v.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    v.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
     v
 }
 
@@ -160,94 +127,96 @@ fn inside_horizontal(by_y: &[(f64, f64, usize)], a: Point, b: Point) -> impl Ite
     by_y[start..].iter().take_while(move |&&(y, x, _)| y == a.y && x < hi)
 }
 
-/// For every horizontal edge `(ring, index)` with vertices strictly inside it, those vertices'
-/// x values in the edge's direction.
-fn horizontal_splits(rings: &[Vec<Point>]) -> FastMap<(usize, usize), Vec<f64>> {
-    let by_y = vertices_by_y(rings);
-    let mut splits = FastMap::default();
-    for (ri, r) in rings.iter().enumerate() {
-        let n = r.len();
-        for i in 0..n {
-            let (a, b) = (r[i], r[(i + 1) % n]);
-            if a.y != b.y || a.x == b.x {
-                continue;
+/// Rebuilds the touched rings (`splits` as found by [`split_horizontals`]) into simple rings,
+/// pushed onto `out`.
+fn rebuild(rings: &[Vec<Point>], touched: &[bool], splits: &[SplitEdge], out: &mut Vec<Ring>) {
+    // Every vertex visit in ring order, horizontals split at the vertices inside them.
+    let mut visits: Vec<Point> = Vec::new();
+    let mut ring_ends: Vec<usize> = Vec::new();
+    let mut next_split = splits.iter().peekable();
+    for (ri, r) in rings.iter().enumerate().filter(|&(ri, _)| touched[ri]) {
+        for (i, &p) in r.iter().enumerate() {
+            visits.push(p);
+            while next_split.next_if(|s| (s.ring, s.edge) < (ri, i)).is_some() {}
+            if let Some(s) = next_split.next_if(|s| (s.ring, s.edge) == (ri, i)) {
+                visits.extend(s.xs.iter().map(|&x| Point::new(x, p.y)));
             }
-            let mut xs: Vec<f64> = inside_horizontal(&by_y, a, b).map(|&(_, x, _)| x).collect();
-            if xs.is_empty() {
-                continue;
-            }
-            xs.dedup();
-            if a.x > b.x {
-                xs.reverse();
-            }
-            splits.insert((ri, i), xs);
         }
+        ring_ends.push(visits.len());
     }
-    splits
-}
-
-fn rebuild(rings: &[Vec<Point>]) -> Vec<Ring> {
-    let splits = horizontal_splits(rings);
-    // Points by id, and the directed edges between them.
-    let mut ids: FastMap<(u64, u64), u32> = FastMap::default();
+    // Point ids: equal points, found by sorting their keys, share one.
+    let mut keyed: Vec<((u64, u64), u32)> = visits.iter().enumerate().map(|(i, &p)| (key(p), i as u32)).collect();
+    keyed.sort_unstable();
+    let mut id = vec![0u32; visits.len()];
     let mut pts: Vec<Point> = Vec::new();
-    let mut id_of = |p: Point, pts: &mut Vec<Point>| {
-        *ids.entry(key(p)).or_insert_with(|| {
-            pts.push(p);
-            pts.len() as u32 - 1
-        })
-    };
-    let mut edges: Vec<(u32, u32)> = Vec::new();
-    for (ri, r) in rings.iter().enumerate() {
-        let n = r.len();
-        for i in 0..n {
-            let (a, b) = (r[i], r[(i + 1) % n]);
-            let mut from = id_of(a, &mut pts);
-            if let Some(xs) = splits.get(&(ri, i)) {
-                for &x in xs {
-                    let mid = id_of(Point::new(x, a.y), &mut pts);
-                    edges.push((from, mid));
-                    from = mid;
-                }
-            }
-            let to = id_of(b, &mut pts);
+    for run in keyed.chunk_by(|a, b| a.0 == b.0) {
+        for &(_, v) in run {
+            id[v as usize] = pts.len() as u32;
+        }
+        pts.push(visits[run[0].1 as usize]);
+    }
+    // The directed edges between them.
+    let mut edges: Vec<(u32, u32)> = Vec::with_capacity(visits.len());
+    let mut first = 0;
+    for &end in &ring_ends {
+        for k in first..end {
+            let (from, to) = (id[k], id[if k + 1 == end { first } else { k + 1 }]);
             if from != to {
                 edges.push((from, to));
             }
         }
+        first = end;
     }
-    // Opposite edges cancel: they bound nothing.
+    // Opposite edges cancel in pairs: they bound nothing.
     let mut live = vec![true; edges.len()];
-    let mut open: FastMap<(u32, u32), Vec<usize>> = FastMap::default();
-    for (i, &(a, b)) in edges.iter().enumerate() {
-        if let Some(j) = open.get_mut(&(b, a)).and_then(Vec::pop) {
-            live[i] = false;
-            live[j] = false;
-        } else {
-            open.entry((a, b)).or_default().push(i);
+    let mut undirected: Vec<(u32, u32, u32)> =
+        edges.iter().enumerate().map(|(i, &(a, b))| (a.min(b), a.max(b), i as u32)).collect();
+    undirected.sort_unstable();
+    for run in undirected.chunk_by(|a, b| (a.0, a.1) == (b.0, b.1)) {
+        if run.len() < 2 {
+            continue;
+        }
+        let upwards = run.iter().filter(|u| edges[u.2 as usize].0 == u.0);
+        let downwards = run.iter().filter(|u| edges[u.2 as usize].0 != u.0);
+        for (u, d) in upwards.zip(downwards) {
+            live[u.2 as usize] = false;
+            live[d.2 as usize] = false;
         }
     }
-    let mut outgoing: Vec<Vec<usize>> = vec![Vec::new(); pts.len()];
+    // Live edges by start point (compressed rows, in edge order).
+    let mut row = vec![0u32; pts.len() + 1];
     for (i, &(a, _)) in edges.iter().enumerate() {
         if live[i] {
-            outgoing[a as usize].push(i);
+            row[a as usize + 1] += 1;
+        }
+    }
+    for v in 0..pts.len() {
+        row[v + 1] += row[v];
+    }
+    let mut outgoing = vec![0u32; row[pts.len()] as usize];
+    let mut fill = row.clone();
+    for (i, &(a, _)) in edges.iter().enumerate() {
+        if live[i] {
+            outgoing[fill[a as usize] as usize] = i as u32;
+            fill[a as usize] += 1;
         }
     }
     let mut used = vec![false; edges.len()];
-    let mut result = Vec::new();
     let mut slot = vec![usize::MAX; pts.len()];
+    let mut walk: Vec<u32> = Vec::new();
     for start in 0..edges.len() {
         if !live[start] || used[start] {
             continue;
         }
-        let mut walk: Vec<u32> = Vec::new();
+        walk.clear();
         let mut e = start;
         // Each step uses one edge, so the walk ends within the edge count.
         for _ in 0..edges.len() {
             used[e] = true;
             let (from, to) = edges[e];
             walk.push(from);
-            let candidates = outgoing[to as usize].iter().copied().filter(|&c| !used[c] || c == start);
+            let leaving = &outgoing[row[to as usize] as usize..row[to as usize + 1] as usize];
+            let candidates = leaving.iter().map(|&c| c as usize).filter(|&c| !used[c] || c == start);
             match first_clockwise(&pts, from, to, candidates, &edges) {
                 Some(next) if next != start => e = next,
                 _ => break,
@@ -257,11 +226,10 @@ fn rebuild(rings: &[Vec<Point>]) -> Vec<Ring> {
             let points: Vec<Point> = ring.iter().map(|&i| pts[i as usize]).collect();
             let s = simplify_ring(&points);
             if s.len() >= 3 {
-                result.push(Ring::new(s));
+                out.push(Ring::new(s));
             }
         });
     }
-    result
 }
 
 /// Of the edges leaving `v`, the first met turning clockwise from the direction back to `u`.

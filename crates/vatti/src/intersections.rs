@@ -40,6 +40,8 @@ impl Sweep<'_> {
         if self.traps.is_some() && yt > y_prev {
             self.emit_slab(y_prev, yt);
         }
+        table.clear();
+        self.table = table;
     }
 
     #[inline]
@@ -51,7 +53,7 @@ impl Sweep<'_> {
     /// at `yt`; each edge an edge has to jump over is a crossing (the paper's ST pass).
     fn intersection_table(&mut self, yb: f64, yt: f64) -> Vec<Intersection> {
         let n = self.ael.len();
-        let mut table = Vec::new();
+        let mut table = std::mem::take(&mut self.table);
         if n < 2 {
             return table;
         }

@@ -40,6 +40,11 @@ pub(crate) struct OutputBuilder {
 }
 
 impl OutputBuilder {
+    /// An empty builder with room for `n` points.
+    pub(crate) fn with_capacity(n: usize) -> OutputBuilder {
+        OutputBuilder { pts: Vec::with_capacity(n), recs: Vec::new() }
+    }
+
     /// AddLocalMin: a new polygon holding `p`, fed by `left_edge` and `right_edge`.
     pub(crate) fn add_local_min(&mut self, left_edge: u32, right_edge: u32, p: Point) -> u32 {
         let pt = self.pts.len() as u32;

@@ -7,6 +7,7 @@ use clip_core::{Point, Trapezoid};
 use crate::active::{ActiveEdges, ROUNDING};
 use crate::bounds::{Bounds, LocalMinimum, NONE};
 use crate::contribution::{Crossing, Rules, classify};
+use crate::intersections::Intersection;
 use crate::output::OutputBuilder;
 use crate::scanbeam::Scanbeams;
 
@@ -43,6 +44,8 @@ pub(crate) struct Sweep<'a> {
     /// The sorted edge table's x values at the scanbeam top, and its order (reused buffers).
     pub(crate) xtop: Vec<f64>,
     pub(crate) sorted: Vec<u32>,
+    /// The intersection table's buffer, reused between scanbeams.
+    pub(crate) table: Vec<Intersection>,
 }
 
 impl<'a> Sweep<'a> {
@@ -52,8 +55,8 @@ impl<'a> Sweep<'a> {
             rules,
             bounds,
             ael: ActiveEdges::with_capacity(n),
-            beams: Scanbeams::default(),
-            out: OutputBuilder::default(),
+            beams: Scanbeams::with_capacity(n),
+            out: OutputBuilder::with_capacity(n),
             traps: trapezoids.then(Vec::new),
             ending_fwd: vec![NONE; n],
             ending_bwd: vec![NONE; n],
@@ -61,8 +64,9 @@ impl<'a> Sweep<'a> {
             maxima: Vec::new(),
             settle: Vec::new(),
             slides: Vec::new(),
-            xtop: Vec::new(),
-            sorted: Vec::new(),
+            xtop: Vec::with_capacity(n),
+            sorted: Vec::with_capacity(n),
+            table: Vec::new(),
         }
     }
 
