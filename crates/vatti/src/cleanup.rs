@@ -303,3 +303,56 @@ fn split_repeats(walk: &[u32], slot: &mut [usize], emit: &mut impl FnMut(&[u32])
         slot[w as usize] = usize::MAX;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(points: &[(f64, f64)]) -> Vec<Point> {
+        points.iter().map(|&(x, y)| Point::new(x, y)).collect()
+    }
+
+    fn areas(rings: &[Ring]) -> Vec<f64> {
+        let mut a: Vec<f64> = rings.iter().map(Ring::signed_area).collect();
+        a.sort_by(f64::total_cmp);
+        a
+    }
+
+    #[test]
+    fn rings_sharing_an_edge_merge_into_one() {
+        let left = ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+        let right = ring(&[(1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0)]);
+        let out = conventional_rings(vec![left, right]);
+        assert_eq!(out.len(), 1);
+        assert_eq!(out[0].len(), 4, "collinear vertices dropped: {:?}", out[0]);
+        assert_eq!(out[0].signed_area(), 2.0);
+    }
+
+    #[test]
+    fn a_ring_visiting_a_point_twice_splits_there() {
+        // A bow tie of two counter-clockwise triangles meeting at (1, 1).
+        let bow = ring(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (2.0, 2.0), (1.0, 1.0), (0.0, 2.0)]);
+        let out = conventional_rings(vec![bow]);
+        assert_eq!(areas(&out), vec![1.0, 1.0]);
+    }
+
+    #[test]
+    fn horizontal_edges_split_where_the_other_ring_has_vertices() {
+        // [0,2]x[0,1] above [1,3]x[-1,0]: they share (1,0)-(2,0), each end inside the other's edge.
+        let top = ring(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (0.0, 1.0)]);
+        let bottom = ring(&[(1.0, -1.0), (3.0, -1.0), (3.0, 0.0), (1.0, 0.0)]);
+        let out = conventional_rings(vec![top, bottom]);
+        assert_eq!(out.len(), 1);
+        assert_eq!(out[0].len(), 8, "{:?}", out[0]);
+        assert_eq!(out[0].signed_area(), 4.0);
+    }
+
+    #[test]
+    fn untouched_rings_only_lose_collinear_vertices() {
+        let square = ring(&[(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)]);
+        let hole = ring(&[(0.5, 0.5), (0.5, 1.5), (1.5, 1.5), (1.5, 0.5)]);
+        let out = conventional_rings(vec![square, hole]);
+        assert_eq!(areas(&out), vec![-1.0, 4.0]);
+        assert_eq!(out.iter().map(Ring::len).collect::<Vec<_>>(), vec![4, 4]);
+    }
+}
