@@ -27,11 +27,6 @@ pub(crate) struct Scanbeams {
 }
 
 impl Scanbeams {
-    /// An empty table with room for `n` marks.
-    pub(crate) fn with_capacity(n: usize) -> Scanbeams {
-        Scanbeams { heap: BinaryHeap::with_capacity(n) }
-    }
-
     /// MarkSBT(y): remember a scanline (duplicates are dropped when popped).
     #[inline]
     pub(crate) fn mark(&mut self, y: f64) {

@@ -55,8 +55,8 @@ impl<'a> Sweep<'a> {
             rules,
             bounds,
             ael: ActiveEdges::with_capacity(n),
-            beams: Scanbeams::with_capacity(n),
-            out: OutputBuilder::with_capacity(n),
+            beams: Scanbeams::default(),
+            out: OutputBuilder::with_capacity(if trapezoids { 0 } else { n }),
             traps: trapezoids.then(Vec::new),
             ending_fwd: vec![NONE; n],
             ending_bwd: vec![NONE; n],
@@ -64,8 +64,8 @@ impl<'a> Sweep<'a> {
             maxima: Vec::new(),
             settle: Vec::new(),
             slides: Vec::new(),
-            xtop: Vec::with_capacity(n),
-            sorted: Vec::with_capacity(n),
+            xtop: Vec::new(),
+            sorted: Vec::new(),
             table: Vec::new(),
         }
     }
