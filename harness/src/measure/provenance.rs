@@ -91,7 +91,9 @@ fn git_revision() -> String {
     };
     match run(&["rev-parse", "HEAD"]) {
         Some(rev) if !rev.is_empty() => {
-            let dirty = run(&["status", "--porcelain", "--untracked-files=no"]).is_some_and(|s| !s.is_empty());
+            // Dirty means the code differs from the commit; result files being rewritten do not count.
+            let code = ["status", "--porcelain", "--untracked-files=no", "--", "*.rs", "*.toml", "Cargo.lock", "*.sh"];
+            let dirty = run(&code).is_some_and(|s| !s.is_empty());
             if dirty { format!("{rev}+dirty") } else { rev }
         }
         _ => "unknown".to_owned(),
