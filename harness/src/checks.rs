@@ -6,10 +6,8 @@ use std::panic::AssertUnwindSafe;
 use std::sync::Once;
 
 use clip_core::{BoolOp, FillRule, Polygons, Segment, VisiblePiece};
-use clip_testkit::line_oracle::{check_line_batch, pieces_to_intervals};
-use clip_testkit::polygon_oracle::{
-    OutputRules, check_area_identities_given, check_polygon_op, same_region, tolerance,
-};
+use clip_oracle::line::{check_line_batch, pieces_to_intervals};
+use clip_oracle::polygon::{OutputRules, check_area_identities_given, check_polygon_result, same_region, tolerance};
 
 use crate::registry::{LineEntry, PolygonEntry};
 
@@ -101,11 +99,11 @@ pub fn polygon_oracle(
     fill: FillRule,
     output: &Polygons,
 ) -> Result<f64, String> {
-    check_polygon_op(subject, clip, op, fill, output, &output_rules(entry, fill)).map_err(|f| f.to_string())
+    check_polygon_result(subject, clip, op, fill, output, &output_rules(entry, fill)).map_err(|f| f.to_string())
 }
 
 /// The area identities on the four operations' results; `operands` are |A| and |B| under `fill`
-/// (`clip_testkit::polygon_oracle::operand_areas`), measured once per case.
+/// (`clip_oracle::polygon::operand_areas`), measured once per case.
 pub fn area_identities(
     entry: &PolygonEntry,
     subject: &Polygons,

@@ -1,6 +1,9 @@
 //! clipbench: verify clipping algorithms against exact oracles, peer libraries and external
-//! suites, and run one clipping operation on files by hand. One module per command; the
-//! clippers are in `registry`.
+//! suites, reproduce the papers' performance tables (Vatti 1992, Table 3; Wang, Lu, Peng and Wu
+//! 2005, Table 4; full citations in `papers` and the README), benchmark every polygon clipper
+//! against geo and Clipper2, and run one clipping operation on files by hand. One module per
+//! command; the clippers are in `registry`. The conventions every check relies on are set out in
+//! the repository's `docs/DESIGN.md`.
 
 mod bench;
 mod checks;

@@ -1,8 +1,14 @@
 //! The papers' own numbers, transcribed once, printed beside ours and marked on the plots.
+//!
+//! - Table 3 of B. R. Vatti, *A generic solution to polygon clipping*, Communications of the ACM
+//!   35(7):56-63, 1992.
+//! - Table 4 of J. Wang, G. Lu, Q. Peng and X. Wu, *Line clipping against polygonal window
+//!   algorithm based on the multiple virtual boxes rejecting*, Journal of Zhejiang University
+//!   SCIENCE A 6(Suppl. I):100-107, 2005.
 
-/// One row of Vatti's Table 3 (`../shared/papers/000_5a7b0415a36e9151.txt`, "Results"):
-/// timings in the paper's units (averaged machine cycles on a MIPS R2000) and the improvement
-/// factors Method 2 / Method 1, averaged over the paper's cases.
+/// One row of Vatti's Table 3 (Vatti 1992, section "Results"): timings in the paper's units
+/// (averaged machine cycles on a MIPS R2000) and the improvement factors Method 2 / Method 1,
+/// averaged over the paper's cases.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VattiRow {
     /// Subject polygon edges.
@@ -50,9 +56,9 @@ pub fn vatti_row(edges: usize) -> Option<&'static VattiRow> {
     VATTI_TABLE3.iter().find(|r| r.edges == edges)
 }
 
-/// One row of Wang et al.'s Table 4 (`../shared/papers/002_361fafb3cdd30874.txt`): seconds for
-/// clipping 10000 random segments 1000 times, which is numerically milliseconds per batch of
-/// 10000 segments.
+/// One row of Wang et al.'s Table 4 (Wang, Lu, Peng and Wu 2005, "Experiment conditions"):
+/// seconds for clipping 10000 random segments 1000 times, which is numerically milliseconds per
+/// batch of 10000 segments.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WangRow {
     /// Window edges.

@@ -9,10 +9,10 @@
 
 use clip_core::{LineClipper, PolygonClipper};
 use clip_cyrus_beck::{CyrusBeck, Liu};
+use clip_oracle::polygon::{GEO_TOLERANCE, REGION_TOLERANCE};
+use clip_peers::{Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, GeoClipper, GeoLineClipper};
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
-use clip_testkit::peers::{Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, GeoClipper, GeoLineClipper};
-use clip_testkit::polygon_oracle::{GEO_TOLERANCE, REGION_TOLERANCE};
 use clip_vatti::Vatti;
 use clip_virtual_box::VirtualBox;
 
@@ -53,7 +53,7 @@ pub struct PolygonEntry {
     pub clipper: Box<dyn PolygonClipper>,
     /// Ours or a peer.
     pub origin: Origin,
-    /// Relative area tolerance its output is checked with (see `clip_testkit::polygon_oracle`).
+    /// Relative area tolerance its output is checked with (see `clip_oracle::polygon`).
     pub tolerance: f64,
 }
 

@@ -2,8 +2,8 @@
 
 use clip_clipper2_rect::Clipper2RectLines;
 use clip_core::{ClipError, LineClipper, Point, Polygons, Rect, Ring, Segment, VisiblePiece, WindowKind};
-use clip_testkit::line_oracle::check_line_batch;
-use clip_testkit::polygon_oracle::GEO_TOLERANCE;
+use clip_oracle::line::check_line_batch;
+use clip_oracle::polygon::GEO_TOLERANCE;
 use clip_testkit::workload::line_case;
 
 fn clip(window: Rect, segments: &[Segment]) -> Vec<VisiblePiece> {

@@ -2,7 +2,7 @@
 
 use clip_clipper2_rect::Clipper2RectClipper;
 use clip_core::{BoolOp, FillRule, PolygonClipper, WindowKind};
-use clip_testkit::polygon_oracle::{GEO_TOLERANCE, OutputRules, check_polygon_op};
+use clip_oracle::polygon::{GEO_TOLERANCE, OutputRules, check_polygon_result};
 use clip_testkit::workload::polygon_case;
 
 #[test]
@@ -14,7 +14,8 @@ fn matches_the_oracle_by_region() {
             let fill = FillRule::ALL[index % 4];
             let out = Clipper2RectClipper.clip(&case.subject, &case.clip, BoolOp::Intersection, fill).unwrap();
             let rules = OutputRules::bridged(fill, GEO_TOLERANCE);
-            if let Err(failure) = check_polygon_op(&case.subject, &case.clip, BoolOp::Intersection, fill, &out, &rules)
+            if let Err(failure) =
+                check_polygon_result(&case.subject, &case.clip, BoolOp::Intersection, fill, &out, &rules)
             {
                 panic!("{} (seed 11, index {index}, {fill}): {failure}", case.description);
             }

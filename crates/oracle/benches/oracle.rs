@@ -1,8 +1,8 @@
 //! How long the polygon oracle takes per output, at the sizes `verify` runs it on.
 
 use clip_core::{BoolOp, FillRule, WindowKind};
-use clip_testkit::line_oracle::visible_intervals;
-use clip_testkit::polygon_oracle::{OutputRules, REGION_TOLERANCE, check_polygon_op, region_area};
+use clip_oracle::line::visible_intervals;
+use clip_oracle::polygon::{OutputRules, REGION_TOLERANCE, check_polygon_result, region_area};
 use clip_testkit::workload::{WangSize, polygon_case_sized, wang_segments, wang_window};
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
@@ -13,8 +13,10 @@ fn oracle(c: &mut Criterion) {
         // A ∩ A = A: a right answer of the subject's size, so every check runs to the end.
         let case = polygon_case_sized("star", 1, 0, edges, WindowKind::Any).unwrap();
         let a = &case.subject;
-        c.bench_function(&format!("check_polygon_op star {edges} edges"), |b| {
-            b.iter(|| check_polygon_op(black_box(a), a, BoolOp::Intersection, FillRule::NonZero, a, &rules).unwrap())
+        c.bench_function(&format!("check_polygon_result star {edges} edges"), |b| {
+            b.iter(|| {
+                check_polygon_result(black_box(a), a, BoolOp::Intersection, FillRule::NonZero, a, &rules).unwrap()
+            })
         });
         // Three layers of self-intersecting rings: the slab sweep's worst case among the workloads.
         let s = polygon_case_sized("scribble", 1, 0, edges, WindowKind::Any).unwrap();

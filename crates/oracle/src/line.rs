@@ -54,7 +54,7 @@ impl std::error::Error for LineFailure {}
 ///
 /// ```
 /// use clip_core::{Point, Polygons, Rect, Segment};
-/// use clip_testkit::line_oracle::visible_intervals;
+/// use clip_oracle::line::visible_intervals;
 ///
 /// let square = Polygons::from(Rect::new(0.0, 0.0, 10.0, 10.0));
 /// let s = Segment::new(Point::new(-5.0, 5.0), Point::new(15.0, 5.0));

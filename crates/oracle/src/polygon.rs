@@ -118,7 +118,7 @@ impl std::error::Error for PolygonFailure {}
 /// and the area of the symmetric difference within the tolerance. On success, that area: two
 /// outputs that pass differ by at most the sum of theirs (the triangle inequality), which lets a
 /// caller compare them without another sweep.
-pub fn check_polygon_op(
+pub fn check_polygon_result(
     subject: &Polygons,
     clip: &Polygons,
     op: BoolOp,

@@ -1,7 +1,7 @@
 //! The line oracle on hand cases, against Liang-Barsky on rectangles, and catching wrong pieces.
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, VisiblePiece, WindowKind};
-use clip_testkit::line_oracle::*;
+use clip_oracle::line::*;
 use clip_testkit::workload::line_case;
 use proptest::prelude::*;
 

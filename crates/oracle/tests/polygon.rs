@@ -1,7 +1,7 @@
 //! The polygon oracle: exact areas on known shapes, and deliberately wrong answers caught.
 
 use clip_core::{BoolOp, FillRule, Point, Polygons, Rect, Ring, WindowKind};
-use clip_testkit::polygon_oracle::*;
+use clip_oracle::polygon::*;
 use clip_testkit::workload::polygon_case;
 use proptest::prelude::*;
 
@@ -86,8 +86,8 @@ fn region_area_is_exact_on_known_shapes() {
 fn right_answers_pass() {
     let (a, b, answers) = squares();
     for (op, out) in &answers {
-        check_polygon_op(&a, &b, *op, FillRule::NonZero, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
-        check_polygon_op(&a, &b, *op, FillRule::EvenOdd, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
+        check_polygon_result(&a, &b, *op, FillRule::NonZero, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
+        check_polygon_result(&a, &b, *op, FillRule::EvenOdd, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
     }
     let outs: Vec<(BoolOp, &Polygons)> = answers.iter().map(|(o, p)| (*o, p)).collect();
     check_area_identities(&a, &b, FillRule::NonZero, &outs, &EXACT).unwrap();
@@ -98,7 +98,7 @@ fn a_dropped_ring_is_caught() {
     let (a, b, answers) = squares();
     let mut xor = answers[3].1.clone();
     xor.rings.pop();
-    let e = check_polygon_op(&a, &b, BoolOp::Xor, FillRule::NonZero, &xor, &EXACT).unwrap_err();
+    let e = check_polygon_result(&a, &b, BoolOp::Xor, FillRule::NonZero, &xor, &EXACT).unwrap_err();
     assert!(matches!(e, PolygonFailure::WrongPoint { expected: true, got: false, .. }), "{e}");
 }
 
@@ -109,7 +109,7 @@ fn a_flipped_op_is_caught() {
         for (other, _) in &answers {
             if other != op {
                 assert!(
-                    check_polygon_op(&a, &b, *other, FillRule::NonZero, out, &EXACT).is_err(),
+                    check_polygon_result(&a, &b, *other, FillRule::NonZero, out, &EXACT).is_err(),
                     "{op} passed as {other}"
                 );
             }
@@ -128,12 +128,12 @@ fn a_shifted_vertex_is_caught_even_between_sample_points() {
     let (a, b, answers) = squares();
     let mut union = answers[1].1.clone();
     union.rings[0].points[4].x += 1e-3; // (3, 3) -> (3.001, 3): a sliver of area 1e-3
-    let e = check_polygon_op(&a, &b, BoolOp::Union, FillRule::NonZero, &union, &EXACT).unwrap_err();
+    let e = check_polygon_result(&a, &b, BoolOp::Union, FillRule::NonZero, &union, &EXACT).unwrap_err();
     assert!(matches!(e, PolygonFailure::WrongRegion { .. }), "{e}");
     // Within the tolerance it passes: 1e-12 of an ulp-sized shift.
     let mut close = answers[1].1.clone();
     close.rings[0].points[4].x += 1e-12;
-    check_polygon_op(&a, &b, BoolOp::Union, FillRule::NonZero, &close, &EXACT).unwrap();
+    check_polygon_result(&a, &b, BoolOp::Union, FillRule::NonZero, &close, &EXACT).unwrap();
 }
 
 #[test]
@@ -143,14 +143,14 @@ fn a_reversed_hole_is_caught() {
         Rect::new(3.0, 3.0, 7.0, 7.0).to_ring().reversed(),
     ]);
     let big = rect(-1.0, -1.0, 11.0, 11.0);
-    check_polygon_op(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &holed, &EXACT).unwrap();
+    check_polygon_result(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &holed, &EXACT).unwrap();
     let mut wrong = holed.clone();
     wrong.rings[1] = wrong.rings[1].reversed();
-    let e = check_polygon_op(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &wrong, &EXACT).unwrap_err();
+    let e = check_polygon_result(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &wrong, &EXACT).unwrap_err();
     assert!(matches!(&e, PolygonFailure::Invalid(m) if m.contains("hole")), "{e}");
     // Read as bridged output (no form check), the region is wrong.
     let loose = OutputRules::bridged(FillRule::NonZero, REGION_TOLERANCE);
-    assert!(check_polygon_op(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &wrong, &loose).is_err());
+    assert!(check_polygon_result(&holed, &big, BoolOp::Intersection, FillRule::NonZero, &wrong, &loose).is_err());
 }
 
 #[test]
@@ -226,9 +226,9 @@ fn identity_on_generated_cases() {
         for (op, out) in
             [(BoolOp::Intersection, a), (BoolOp::Union, a), (BoolOp::Difference, &empty), (BoolOp::Xor, &empty)]
         {
-            check_polygon_op(a, a, op, FillRule::NonZero, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
+            check_polygon_result(a, a, op, FillRule::NonZero, out, &EXACT).unwrap_or_else(|e| panic!("{op}: {e}"));
         }
-        assert!(check_polygon_op(a, a, BoolOp::Intersection, FillRule::NonZero, &empty, &EXACT).is_err());
+        assert!(check_polygon_result(a, a, BoolOp::Intersection, FillRule::NonZero, &empty, &EXACT).is_err());
         let shoelace = a.signed_area();
         assert!((area(a, FillRule::NonZero) - shoelace).abs() < 1e-9 * shoelace);
     }
@@ -248,11 +248,11 @@ proptest! {
         let b = rect(f(x1), f(y1), f(x1 + w1), f(y1 + h1));
         let (lx, ly, hx, hy) = (x0.max(x1), y0.max(y1), (x0 + w0).min(x1 + w1), (y0 + h0).min(y1 + h1));
         let out = if lx < hx && ly < hy { rect(f(lx), f(ly), f(hx), f(hy)) } else { Polygons::empty() };
-        prop_assert!(check_polygon_op(&a, &b, BoolOp::Intersection, FillRule::NonZero, &out, &EXACT).is_ok());
-        prop_assert!(check_polygon_op(&a, &b, BoolOp::Intersection, FillRule::EvenOdd, &out, &EXACT).is_ok());
+        prop_assert!(check_polygon_result(&a, &b, BoolOp::Intersection, FillRule::NonZero, &out, &EXACT).is_ok());
+        prop_assert!(check_polygon_result(&a, &b, BoolOp::Intersection, FillRule::EvenOdd, &out, &EXACT).is_ok());
         if lx < hx && ly < hy {
             let moved = rect(f(lx) + scale * 0.5, f(ly), f(hx) + scale * 0.5, f(hy));
-            prop_assert!(check_polygon_op(&a, &b, BoolOp::Intersection, FillRule::NonZero, &moved, &EXACT).is_err());
+            prop_assert!(check_polygon_result(&a, &b, BoolOp::Intersection, FillRule::NonZero, &moved, &EXACT).is_err());
         }
     }
 

@@ -3,8 +3,8 @@
 //! rectangle clipper (`RectClip`) side by side.
 
 use clip_core::{BoolOp, FillRule, PolygonClipper, WindowKind};
+use clip_peers::{Clipper2Clipper, Clipper2RectClipper};
 use clip_rect_four_state::FourState;
-use clip_testkit::peers::{Clipper2Clipper, Clipper2RectClipper};
 use clip_testkit::workload::{VATTI_EDGES, polygon_case_sized};
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;

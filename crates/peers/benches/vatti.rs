@@ -2,7 +2,7 @@
 //! all four operations, measured side by side in one run.
 
 use clip_core::{BoolOp, FillRule, PolygonClipper, WindowKind};
-use clip_testkit::peers::{Clipper2Clipper, GeoClipper};
+use clip_peers::{Clipper2Clipper, GeoClipper};
 use clip_testkit::workload::polygon_case_sized;
 use clip_vatti::Vatti;
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};

@@ -8,7 +8,7 @@
 
 use clip_core::{LineClipper, Segment, VisiblePiece};
 use clip_cyrus_beck::Liu;
-use clip_testkit::peers::GeoLineClipper;
+use clip_peers::GeoLineClipper;
 use clip_testkit::workload::{WANG_EDGES, WangSize, wang_segments, wang_window};
 use clip_virtual_box::VirtualBox;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};

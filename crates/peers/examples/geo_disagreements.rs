@@ -4,8 +4,8 @@
 //! `cargo run --release -p clip-virtual-box --example geo_disagreements [cases]`
 
 use clip_core::{LineClipper, Polygons, Segment, WindowKind};
-use clip_testkit::line_oracle::{pieces_to_intervals, visible_intervals};
-use clip_testkit::peers::GeoLineClipper;
+use clip_oracle::line::{pieces_to_intervals, visible_intervals};
+use clip_peers::GeoLineClipper;
 use clip_testkit::workload::line_case;
 use clip_virtual_box::VirtualBox;
 

@@ -1,8 +1,15 @@
-//! The peer libraries (`geo`, Clipper2) behind clip-core's traits, as differential references.
+//! The peer libraries (`geo`, Clipper2) behind clip-core's traits, as differential references
+//! and performance baselines.
+//!
+//! This is the one place (with `clip-clipper2-rect`) that builds Clipper2's C++ and links `geo`:
+//! the algorithm crates, the oracles and the testkit stay free of both. Its tests and benches are
+//! the cross-library ones: our clippers beside geo and Clipper2 on the same inputs
+//! (`cargo bench -p clip-peers --bench vatti`), and Clipper2's `Polygons.txt` graded with
+//! Clipper2's live ring counts ([`normalised_counts_agree`]).
 //!
 //! - [`GeoClipper`] and [`GeoLineClipper`]: `geo` 0.33's `BooleanOps` (i_overlay underneath). It
 //!   snaps coordinates to an integer grid of about extent x 1e-9, so compare its output with a
-//!   loose tolerance (the testkit's `GEO_TOLERANCE`).
+//!   loose tolerance (`clip_oracle::GEO_TOLERANCE`).
 //! - [`Clipper2Clipper`]: the C++ Clipper2 through the `clipper2` crate, on an integer grid scaled
 //!   per call to the inputs' extent (see [`Clipper2Clipper`]), so it too is compared loosely.
 //! - [`Clipper2RectClipper`] and [`Clipper2RectLines`]: Clipper2's dedicated rectangle clippers
@@ -17,9 +24,15 @@
 //! orientation) and converts the result to DESIGN.md's conventions; what each normalises is said
 //! on its type.
 
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
+
 mod clipper2;
 mod geo;
+mod ring_counts;
 
 pub use self::clipper2::Clipper2Clipper;
 pub use self::geo::{GeoClipper, GeoLineClipper};
+pub use self::ring_counts::{FINE_GRID_OVERLAPS, PEER_CRACKS, normalised_counts_agree, thin_rings};
 pub use clip_clipper2_rect::{Clipper2RectClipper, Clipper2RectLines};

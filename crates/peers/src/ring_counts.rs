@@ -2,9 +2,9 @@
 //! correct clippers can return the same region in different numbers of rings.
 
 use clip_core::{PolygonClipper, Polygons, Ring};
+use clip_testkit::clipper2_suite::{Record, count_tolerance};
 
-use super::{Record, count_tolerance};
-use crate::peers::Clipper2Clipper;
+use crate::Clipper2Clipper;
 
 /// Cases where Clipper2 has more rings than the exact region, examined and recorded as the
 /// peer's doing: `(case, extra rings)`. Case 62 is one ring with a zero-area spike whose line

@@ -1,4 +1,4 @@
-//! Clipper2's `Lines.txt` (`../shared/testdata/clipper2/`): every segment of every open subject
+//! Clipper2's `Lines.txt` (`testdata/clipper2/`): every segment of every open subject
 //! path clipped by every line clipper here and by geo, checked against the exact line oracle.
 //!
 //! Clipper2's own expected values are not used: they grade Clipper2's open-path output, which
@@ -8,8 +8,8 @@
 
 use clip_core::{LineClipper, Point, Polygons, Ring, Segment};
 use clip_cyrus_beck::{CyrusBeck, Liu};
-use clip_testkit::line_oracle::{LINE_T_TOLERANCE, check_line_batch};
-use clip_testkit::peers::GeoLineClipper;
+use clip_oracle::line::{LINE_T_TOLERANCE, check_line_batch};
+use clip_peers::GeoLineClipper;
 use clip_virtual_box::VirtualBox;
 
 /// geo snaps coordinates to a grid of about extent x 1e-9 (NOTES.md); its pieces are checked
@@ -60,12 +60,8 @@ fn parse(text: &str) -> Vec<Case> {
 
 #[test]
 fn lines_txt_agrees_with_the_oracle() {
-    // The workspace's `../shared/testdata`, or wherever CLIPBENCH_TESTDATA says.
-    let data = std::env::var("CLIPBENCH_TESTDATA")
-        .unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/testdata").to_owned());
-    let path = format!("{data}/clipper2/Lines.txt");
-    let path = path.as_str();
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("reading {path}: {e}"));
+    let path = clip_testkit::testdata_dir().join("clipper2/Lines.txt");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
     let cases = parse(&text);
     assert_eq!(cases.len(), 16, "Lines.txt has 16 records");
     let geo = GeoLineClipper::new();

@@ -2,8 +2,8 @@
 //! the `vatti-t3`, `star` and `grid` workloads with rectangle windows, all fill rules.
 
 use clip_core::{BoolOp, FillRule, PolygonClipper, WindowKind};
+use clip_oracle::polygon::{OutputRules, REGION_TOLERANCE, check_polygon_result};
 use clip_rect_four_state::FourState;
-use clip_testkit::polygon_oracle::{OutputRules, REGION_TOLERANCE, check_polygon_op};
 use clip_testkit::workload::polygon_case;
 
 #[test]
@@ -15,7 +15,8 @@ fn matches_the_oracle_by_region() {
             let fill = FillRule::ALL[index % 4];
             let out = FourState.clip(&case.subject, &case.clip, BoolOp::Intersection, fill).unwrap();
             let rules = OutputRules::bridged(fill, REGION_TOLERANCE);
-            if let Err(failure) = check_polygon_op(&case.subject, &case.clip, BoolOp::Intersection, fill, &out, &rules)
+            if let Err(failure) =
+                check_polygon_result(&case.subject, &case.clip, BoolOp::Intersection, fill, &out, &rules)
             {
                 panic!("{} (seed 11, index {index}, {fill}): {failure}", case.description);
             }

@@ -2,11 +2,11 @@
 //! `vatti-t3`, `star` and `grid` workloads with rectangle and convex windows, all fill rules.
 
 use clip_core::{BoolOp, FillRule, PolygonClipper, WindowKind};
-use clip_sutherland_hodgman::{ConvexWindow, Form, SutherlandHodgman, bridge_count};
-use clip_testkit::polygon_oracle::{
+use clip_oracle::polygon::{
     OutputRules, REGION_TOLERANCE, bridge_count as output_bridges, bridge_count_within as output_bridges_within,
-    check_polygon_op,
+    check_polygon_result,
 };
+use clip_sutherland_hodgman::{ConvexWindow, Form, SutherlandHodgman, bridge_count};
 use clip_testkit::workload::polygon_case;
 
 #[test]
@@ -23,7 +23,7 @@ fn both_forms_match_the_oracle_by_region() {
                         .clip(&case.subject, &case.clip, BoolOp::Intersection, fill)
                         .unwrap();
                     if let Err(failure) =
-                        check_polygon_op(&case.subject, &case.clip, BoolOp::Intersection, fill, &out, &rules)
+                        check_polygon_result(&case.subject, &case.clip, BoolOp::Intersection, fill, &out, &rules)
                     {
                         panic!("{} (seed 7, index {index}, {fill}, {form:?}): {failure}", case.description);
                     }

@@ -5,8 +5,8 @@
 //! which compares the clipper, the hand-computed intervals and [`visible_intervals`] with each
 //! other, for both window orientations and both segment directions.
 
-use crate::line_oracle::{LINE_T_TOLERANCE, check_line_batch, pieces_to_intervals, visible_intervals};
 use clip_core::{ClipError, LineClipper, Point, Polygons, Ring, Segment};
+use clip_oracle::line::{LINE_T_TOLERANCE, check_line_batch, pieces_to_intervals, visible_intervals};
 
 /// The parameter tolerance of the hand-computed cases: their answers are exact fractions.
 pub const PROBE_T_TOLERANCE: f64 = 1e-12;

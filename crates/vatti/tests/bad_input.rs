@@ -2,7 +2,7 @@
 //! operation defines.
 
 use clip_core::{BoolOp, ClipError, FillRule, Operand, PolygonClipper, Polygons, Rect, Ring};
-use clip_testkit::polygon_oracle::same_region;
+use clip_oracle::polygon::same_region;
 use clip_testkit::workload::invalid_inputs;
 use clip_vatti::Vatti;
 

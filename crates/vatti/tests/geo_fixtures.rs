@@ -1,14 +1,13 @@
 //! geo's boolean-op fixtures (from rust-geo-booleanop / martinez): every case and every stored
 //! operation gives the expected region, compared by the area of the symmetric difference.
 
-mod common;
-
 use std::path::Path;
 
 use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Ring};
-use clip_testkit::polygon_oracle::{
-    OutputRules, REGION_TOLERANCE, check_polygon_op, check_valid_output, same_region, tolerance,
+use clip_oracle::polygon::{
+    OutputRules, REGION_TOLERANCE, check_polygon_result, check_valid_output, same_region, tolerance,
 };
+use clip_testkit::testdata_dir;
 use clip_vatti::Vatti;
 use serde_json::Value;
 
@@ -64,7 +63,7 @@ fn check_file(path: &Path) -> Vec<String> {
             // The benchmark files store an empty result (a placeholder, not an answer): judge
             // those by the exact oracle instead.
             let rules = OutputRules::conventional(REGION_TOLERANCE);
-            if let Err(e) = check_polygon_op(subject, clip, op, FillRule::EvenOdd, &out, &rules) {
+            if let Err(e) = check_polygon_result(subject, clip, op, FillRule::EvenOdd, &out, &rules) {
                 failures.push(format!("{name} {op_name} (oracle): {e}"));
             }
             continue;
@@ -79,7 +78,7 @@ fn check_file(path: &Path) -> Vec<String> {
 
 #[test]
 fn generic_test_cases() {
-    let dir = common::testdata().join("geo/booleanop-geojson/generic_test_cases");
+    let dir = testdata_dir().join("geo/booleanop-geojson/generic_test_cases");
     let mut files: Vec<_> = std::fs::read_dir(&dir).expect("fixtures").map(|e| e.unwrap().path()).collect();
     files.sort();
     assert_eq!(files.len(), 45);
@@ -89,7 +88,7 @@ fn generic_test_cases() {
 
 #[test]
 fn benchmark_cases() {
-    let dir = common::testdata().join("geo/booleanop-geojson/benchmarks");
+    let dir = testdata_dir().join("geo/booleanop-geojson/benchmarks");
     let failures: Vec<String> = ["asia", "hole_hole", "states_source"]
         .iter()
         .flat_map(|n| check_file(&dir.join(format!("{n}.geojson"))))
@@ -113,7 +112,7 @@ fn parse_multipolygon(wkt: &str) -> Polygons {
 
 #[test]
 fn recorded_union_cases() {
-    let text = std::fs::read_to_string(common::testdata().join("geo/booleanop-geojson/tcases.json")).expect("tcases");
+    let text = std::fs::read_to_string(testdata_dir().join("geo/booleanop-geojson/tcases.json")).expect("tcases");
     let cases: Value = serde_json::from_str(&text).expect("json");
     let mut failures = Vec::new();
     for (i, c) in cases.as_array().expect("cases").iter().enumerate() {

@@ -2,7 +2,7 @@
 //! regression tests: each runs the recorded operation and the exact oracle on conventional output.
 
 use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Ring, WindowKind};
-use clip_testkit::polygon_oracle::{OutputRules, REGION_TOLERANCE, check_polygon_op};
+use clip_oracle::polygon::{OutputRules, REGION_TOLERANCE, check_polygon_result};
 use clip_testkit::workload::polygon_case;
 use clip_vatti::Vatti;
 
@@ -14,7 +14,7 @@ fn polygons(rings: &[&[(f64, f64)]]) -> Polygons {
 /// Runs `op` under `fill` and checks the output with the exact oracle.
 fn assert_oracle(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) {
     let out = Vatti.clip(subject, clip, op, fill).expect("valid input");
-    let verdict = check_polygon_op(subject, clip, op, fill, &out, &OutputRules::conventional(REGION_TOLERANCE));
+    let verdict = check_polygon_result(subject, clip, op, fill, &out, &OutputRules::conventional(REGION_TOLERANCE));
     assert!(verdict.is_ok(), "{op} {fill}: {}\noutput: {:?}", verdict.unwrap_err(), out.rings);
 }
 

@@ -3,8 +3,8 @@
 //! area, the area identities, and the same for the trapezoid output.
 
 use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons, Ring, Trapezoid, WindowKind};
-use clip_testkit::polygon_oracle::{
-    OutputRules, PolygonFailure, REGION_TOLERANCE, check_area_identities, check_polygon_op, same_region, tolerance,
+use clip_oracle::polygon::{
+    OutputRules, PolygonFailure, REGION_TOLERANCE, check_area_identities, check_polygon_result, same_region, tolerance,
 };
 use clip_testkit::workload::{hard_cases, polygon_case_sized};
 use clip_vatti::Vatti;
@@ -22,7 +22,7 @@ fn check_case(label: &str, subject: &Polygons, clip: &Polygons, fill: FillRule) 
     let mut outputs = Vec::new();
     for op in BoolOp::ALL {
         let out = Vatti.clip(subject, clip, op, fill).expect("valid input");
-        if let Err(e) = check_polygon_op(subject, clip, op, fill, &out, &rules) {
+        if let Err(e) = check_polygon_result(subject, clip, op, fill, &out, &rules) {
             failures.push(format!("{label} {op} {fill}: {e}"));
         }
         let traps = Vatti.clip_trapezoids(subject, clip, op, fill).expect("valid input");
@@ -87,7 +87,7 @@ fn large_cases_pass_the_oracle() {
         let case = polygon_case_sized("large", 2026, index, 1000, WindowKind::Any).unwrap();
         let out = Vatti.clip(&case.subject, &case.clip, BoolOp::Intersection, FillRule::NonZero).unwrap();
         let verdict =
-            check_polygon_op(&case.subject, &case.clip, BoolOp::Intersection, FillRule::NonZero, &out, &rules);
+            check_polygon_result(&case.subject, &case.clip, BoolOp::Intersection, FillRule::NonZero, &out, &rules);
         assert!(verdict.is_ok(), "{}: {}", case.description, verdict.unwrap_err());
     }
 }

@@ -3,8 +3,8 @@
 //! operations, and the trapezoid output against the polygon output.
 
 use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Ring, Trapezoid};
-use clip_testkit::polygon_oracle::{
-    OutputRules, REGION_TOLERANCE, check_area_identities, check_polygon_op, same_region, tolerance,
+use clip_oracle::polygon::{
+    OutputRules, REGION_TOLERANCE, check_area_identities, check_polygon_result, same_region, tolerance,
 };
 use clip_testkit::workload::mirrored;
 use clip_vatti::Vatti;
@@ -54,7 +54,7 @@ proptest! {
     #[test]
     fn output_passes_the_oracle(s in any_polygons(), c in any_polygons(), op in op(), fill in fill()) {
         let out = Vatti.clip(&s, &c, op, fill).unwrap();
-        let verdict = check_polygon_op(&s, &c, op, fill, &out, &OutputRules::conventional(REGION_TOLERANCE));
+        let verdict = check_polygon_result(&s, &c, op, fill, &out, &OutputRules::conventional(REGION_TOLERANCE));
         prop_assert!(verdict.is_ok(), "{}", verdict.unwrap_err());
     }
 
@@ -108,7 +108,7 @@ proptest! {
         let total: f64 = traps.iter().map(Trapezoid::area).sum();
         prop_assert!((total - out.signed_area()).abs() <= tol, "{total} vs {}", out.signed_area());
         let rings = Polygons::new(traps.iter().map(Trapezoid::to_ring).filter(|r| r.distinct_points() >= 3).collect());
-        let verdict = check_polygon_op(&s, &c, op, fill, &rings, &OutputRules::bridged(FillRule::NonZero, REGION_TOLERANCE));
+        let verdict = check_polygon_result(&s, &c, op, fill, &rings, &OutputRules::bridged(FillRule::NonZero, REGION_TOLERANCE));
         prop_assert!(verdict.is_ok(), "{}", verdict.unwrap_err());
     }
 }

@@ -8,7 +8,7 @@ use std::path::Path;
 
 use clip_core::{LineClipper, Polygons, PreparedWindow, Segment, VisiblePiece};
 use clip_cyrus_beck::{CyrusBeck, Liu, PreparedCyrusBeck, PreparedLiu};
-use clip_testkit::peers::GeoLineClipper;
+use clip_peers::GeoLineClipper;
 use clip_testkit::workload::{WANG_EDGES, WangSize, wang_measure, wang_segments, wang_window};
 use clip_virtual_box::{PreparedVirtualBox, VirtualBox};
 use serde::{Deserialize, Serialize};

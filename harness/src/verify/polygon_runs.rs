@@ -2,7 +2,7 @@
 //! each operation and fill rule it supports; checks each result and compares the clippers.
 
 use clip_core::{BoolOp, FillRule, Polygons, WindowKind};
-use clip_testkit::polygon_oracle::{bridge_count_within, operand_areas};
+use clip_oracle::polygon::{bridge_count_within, operand_areas};
 use clip_testkit::workload::polygon_case;
 
 use super::finding::{CaseOutcome, Finding, Kind};

@@ -2,7 +2,7 @@
 //! heart of `--replay`.
 
 use clip_core::{BoolOp, FillRule, Operand, Polygons, Segment, validate_polygons, validate_segments, validate_window};
-use clip_testkit::polygon_oracle::operand_areas;
+use clip_oracle::polygon::operand_areas;
 
 use crate::checks::{
     Check, area_identities, line_oracle, lines_agree, polygon_oracle, polygons_agree, run_line, run_polygon,

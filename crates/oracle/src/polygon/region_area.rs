@@ -41,7 +41,7 @@ impl SlabEdge {
 ///
 /// ```
 /// use clip_core::{FillRule, Polygons, Rect};
-/// use clip_testkit::polygon_oracle::region_area;
+/// use clip_oracle::polygon::region_area;
 ///
 /// let a = Polygons::from(Rect::new(0.0, 0.0, 2.0, 2.0));
 /// let b = Polygons::from(Rect::new(1.0, 1.0, 3.0, 3.0));

@@ -2,8 +2,6 @@
 
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{Point, Polygons, Rect};
-use rand::{Rng, SeedableRng};
-use rand_pcg::Pcg64;
 
 /// Sample points per side of the regular grid.
 const GRID_SIDE: usize = 12;
@@ -21,11 +19,26 @@ pub(crate) fn sample_points(b: &Rect) -> Vec<Point> {
             points.push(Point::new(b.min.x + fx * w, b.min.y + fy * h));
         }
     }
-    let mut rng = Pcg64::seed_from_u64(0x005e_ed0f_0c1e);
+    let mut rng = SplitMix64(0x005e_ed0f_0c1e);
     for _ in 0..RANDOM_POINTS {
-        points.push(Point::new(b.min.x + rng.random::<f64>() * w, b.min.y + rng.random::<f64>() * h));
+        points.push(Point::new(b.min.x + rng.unit() * w, b.min.y + rng.unit() * h));
     }
     points
+}
+
+/// Vigna's SplitMix64: enough randomness to scatter sample points, and no dependency for a crate
+/// that should need only clip-core.
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    /// A uniform f64 in [0, 1) from the top 53 bits of the next output.
+    fn unit(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
 }
 
 /// One polygon set's edges, bucketed by y so a point meets only the edges near its height.

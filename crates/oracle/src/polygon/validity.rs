@@ -142,7 +142,7 @@ pub fn check_valid_output(output: &Polygons) -> Result<(), PolygonFailure> {
 
 /// [`check_valid_output`], except that two edges crossing within `snap` of an end point of
 /// either count as touching there: a vertex rounded (or snapped to a peer's integer grid) onto
-/// the wrong side of an edge it should touch. [`super::check_polygon_op`] uses the case's
+/// the wrong side of an edge it should touch. [`super::check_polygon_result`] uses the case's
 /// relative tolerance times its extent.
 pub fn check_valid_output_within(output: &Polygons, snap: f64) -> Result<(), PolygonFailure> {
     for (r, ring) in output.rings.iter().enumerate() {

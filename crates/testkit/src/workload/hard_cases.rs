@@ -1,5 +1,5 @@
-//! Named fixtures for the inputs the mature clippers' bug trackers found hard (NOTES.md, last
-//! section), and inputs every clipper must refuse with a typed error.
+//! Named fixtures for the inputs the mature clippers' bug trackers found hard (docs/DESIGN.md,
+//! "Hard inputs"), and inputs every clipper must refuse with a typed error.
 
 use clip_core::{Point, Polygons, Rect, Ring};
 

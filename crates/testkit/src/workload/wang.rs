@@ -3,7 +3,7 @@
 //!
 //! # How the sizes are read
 //!
-//! The paper (../shared/papers/002, "Experiment conditions") describes a window's size by
+//! The paper (Wang et al. 2005, "Experiment conditions") describes a window's size by
 //! `W1 = 600 / L`, "L the perimeter of the MEB", and `W2 = 600 x 800 / MEB area`, and Table 4 lists
 //! two size rows per edge count: the test polygon as drawn (6 edges: W1 = 2.76, W2 = 40; ...) and
 //! the polygon scaled to W1 = 4, W2 = 80. Read with L the full perimeter 2(w + h), no rectangle

@@ -1,17 +1,8 @@
-//! Shared test support: test data paths, a point-sampling oracle and an output validity check
-//! built on clip-core's exact predicates.
-
-#![allow(dead_code)]
-
-use std::path::PathBuf;
+//! Vatti's own output validity check, stricter than the oracle's: rings never visit a point twice,
+//! since vatti splits them at pinches.
 
 use clip_core::predicates::{SegmentIntersection, segment_intersection};
-use clip_core::{BoolOp, FillRule, Location, Point, Polygons, Segment, locate};
-
-/// `/work/shared/testdata`, found from the crate's manifest directory.
-pub fn testdata() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/testdata")
-}
+use clip_core::{Point, Polygons, Segment};
 
 /// Checks DESIGN.md's output convention: no repeated consecutive vertices, at least three
 /// vertices and non-zero area per ring, no two edges crossing or overlapping (touching at a
@@ -78,38 +69,4 @@ pub fn check_valid(out: &Polygons) -> Result<(), String> {
 /// and a ring touching another does so at vertices).
 fn probe_point(pts: &[Point]) -> Option<Point> {
     Some(pts.first()?.lerp(*pts.get(1)?, 0.5))
-}
-
-/// Region check by sampling: on a grid over the inputs' box, every point off all edges must be
-/// in the output (read non-zero) exactly when `op` holds for it.
-pub fn check_region(
-    subject: &Polygons,
-    clip: &Polygons,
-    op: BoolOp,
-    fill: FillRule,
-    out: &Polygons,
-    n: usize,
-) -> Result<(), String> {
-    let b = subject.bounds().union(clip.bounds());
-    if b.is_empty() {
-        return Ok(());
-    }
-    for i in 0..n {
-        for j in 0..n {
-            // Offsets chosen off the integer grid so points rarely sit on edges.
-            let p = Point::new(
-                b.min.x + b.width() * (i as f64 + 0.3125) / n as f64,
-                b.min.y + b.height() * (j as f64 + 0.4142) / n as f64,
-            );
-            let (ls, lc, lo) = (locate(p, subject, fill), locate(p, clip, fill), locate(p, out, FillRule::NonZero));
-            if ls == Location::Boundary || lc == Location::Boundary || lo == Location::Boundary {
-                continue;
-            }
-            let want = op.apply(ls == Location::Inside, lc == Location::Inside);
-            if want != (lo == Location::Inside) {
-                return Err(format!("point {p:?}: expected inside={want}"));
-            }
-        }
-    }
-    Ok(())
 }
