@@ -192,7 +192,7 @@ mod tests {
 
     #[test]
     fn clipper2_drops_a_line_along_a_side_that_leaves_the_rectangle() {
-        // The part on the bottom side is visible by DESIGN.md's closed-set rule; RectClipLines
+        // The part on the bottom side is visible by docs/DESIGN.md's closed-set rule; RectClipLines
         // keeps a line lying wholly on a side but not this one (a peer difference, not rounding:
         // these are Clipper2's own integers).
         assert_eq!(rect_clip_lines(RECT, &[vec![[2, 0], [8, 0]]]).unwrap(), vec![vec![[2, 0], [8, 0]]]);

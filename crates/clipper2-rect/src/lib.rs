@@ -1,7 +1,8 @@
 //! clip-clipper2-rect: Clipper2's dedicated rectangle clipper (`RectClip`) as a peer.
 //!
-//! Sutherland-Hodgman (`../shared/papers/003_40d47b82321f04f0.txt`) and the four-state clipper
-//! (`../shared/papers/004_7c7020c5f4d30de8.txt`) clip polygons to a rectangle; the modern
+//! Sutherland-Hodgman (I. E. Sutherland and G. W. Hodgman, *Reentrant polygon clipping*,
+//! Communications of the ACM 17(1):32-42, 1974) and the four-state clipper (*Polygon Clipping
+//! Algorithm*, a text that names no author) clip polygons to a rectangle; the modern
 //! library routine for the same job is Angus Johnson's `RectClip` in Clipper2
 //! (`clipper.rectclip.cpp`), much faster than Clipper2's general boolean engine. The `clipper2`
 //! 0.6 crate does not bind it; its C layer `clipper2c-sys` compiles and links it. This crate
@@ -41,9 +42,9 @@
 //!   `GEO_TOLERANCE`). Cut points on the rectangle's sides get the sides' exact coordinates back.
 //!   Line pieces are rebuilt on the input segment from their parameters; each segment gets a
 //!   grid of its own (see [`Clipper2RectLines`]).
-//! - `RectClipLines` breaks DESIGN.md's closed-set rule for a segment along a side that goes on
-//!   beyond the rectangle: it drops the part on the side (a segment wholly on a side is kept),
-//!   so `verify` reports oracle failures for this peer on the `lines-degenerate` workload.
+//! - `RectClipLines` breaks the closed-set rule of `docs/DESIGN.md` for a segment along a side that
+//!   goes on beyond the rectangle: it drops the part on the side (a segment wholly on a side is
+//!   kept), so `verify` reports oracle failures for this peer on the `lines-degenerate` workload.
 //!
 //! # Example
 //!
@@ -57,6 +58,10 @@
 //! assert_eq!(out.rings.len(), 1);
 //! assert_eq!(out.signed_area(), 1.0);
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod clipper;
 #[allow(unsafe_code)]

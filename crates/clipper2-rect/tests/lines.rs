@@ -63,7 +63,7 @@ fn matches_the_line_oracle_on_rectangle_windows() {
     }
 }
 
-/// Clipper2 does not follow DESIGN.md's closed-set rule for a segment along a side that goes on
+/// Clipper2 does not follow docs/DESIGN.md's closed-set rule for a segment along a side that goes on
 /// beyond the rectangle: it drops the part on the side (a segment lying wholly on a side is
 /// kept). On the degenerate workload every disagreement with the oracle is such a segment.
 #[test]

@@ -91,7 +91,7 @@ pub trait PolygonClipper: Send + Sync {
     /// What it can do.
     fn capabilities(&self) -> PolygonCapabilities;
 
-    /// `subject op clip`, both read under `fill`. Output follows DESIGN.md's convention unless
+    /// `subject op clip`, both read under `fill`. Output follows docs/DESIGN.md's convention unless
     /// [`PolygonCapabilities::bridges`] says otherwise.
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError>;
 
@@ -140,7 +140,7 @@ pub trait LineClipper: Send + Sync {
 /// A window ready to clip segments against.
 pub trait PreparedWindow: Send + Sync {
     /// Clips every segment of the batch, appending the visible pieces to `out`: by segment in
-    /// input order, and within a segment by increasing parameter. Follows DESIGN.md's closed-set
+    /// input order, and within a segment by increasing parameter. Follows docs/DESIGN.md's closed-set
     /// rule: maximal closed intervals of positive length, merged, isolated touch points dropped.
     /// A non-finite endpoint fails the whole batch with [`ClipError::NonFinite`].
     fn clip_batch(&self, segments: &[Segment], out: &mut Vec<VisiblePiece>) -> Result<(), ClipError>;

@@ -4,11 +4,18 @@
 //! of exact predicates (Shewchuk's adaptive arithmetic through the `robust` crate) through which
 //! every orientation and in/out decision goes; typed errors for bad input; and the
 //! [`PolygonClipper`], [`LineClipper`] and [`PreparedWindow`] traits the harness registers
-//! clippers behind. Conventions (output orientation, the closed-set rule for lines) are in the
-//! workspace's DESIGN.md and are restated where each applies.
+//! clippers behind. Conventions (output orientation, the closed-set rule for lines) are set out
+//! in the repository's `docs/DESIGN.md` and are restated where each applies.
 //!
 //! Coordinates are f64 with `y` up; counter-clockwise is positive. Magnitudes up to
 //! [`MAX_COORDINATE`] are accepted.
+//!
+//! # Limits
+//!
+//! The predicates are exact, but points this crate computes (segment crossings, points along a
+//! segment) are rounded to f64. Coordinates beyond [`MAX_COORDINATE`], NaN and infinities are
+//! refused by the `validate_*` functions with a [`ClipError`]. No clipping algorithm lives here:
+//! the clippers are in their own crates.
 //!
 //! ```
 //! use clip_core::{FillRule, Location, Point, Polygons, Rect, locate, orient, Orientation};
@@ -23,6 +30,10 @@
 //! let c = Point::new(24.0, 24.0 + 2f64.powi(-48));
 //! assert_eq!(orient(a, b, c), Orientation::CounterClockwise);
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod area;
 mod clipper;

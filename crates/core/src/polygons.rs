@@ -3,7 +3,7 @@
 use crate::{Point, Rect, Ring};
 
 /// A region given by rings read under a [`crate::FillRule`]: any mix of outers, holes, several
-/// parts, overlapping or self-intersecting rings. Clipper output follows DESIGN.md's convention
+/// parts, overlapping or self-intersecting rings. Clipper output follows docs/DESIGN.md's convention
 /// instead: simple, non-crossing rings, outers counter-clockwise and holes clockwise.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Polygons {

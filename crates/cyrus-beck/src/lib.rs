@@ -1,22 +1,25 @@
 //! clip-cyrus-beck: Cyrus-Beck parametric line clipping (convex windows) and a Liu-style line clipper (any window).
 //!
-//! Two [`LineClipper`](clip_core::LineClipper)s, both following DESIGN.md's closed-set rule: the
-//! visible part of a segment is the set of maximal closed parameter intervals of positive length
-//! whose points all lie in the closed window (interior or boundary, even-odd interior), adjacent
-//! intervals merged, isolated touch points dropped, pieces in the input's direction and order.
+//! Two [`LineClipper`](clip_core::LineClipper)s, both following the closed-set rule of the
+//! repository's `docs/DESIGN.md`: the visible part of a segment is the set of maximal closed
+//! parameter intervals of positive length whose points all lie in the closed window (interior or
+//! boundary, even-odd interior), adjacent intervals merged, isolated touch points dropped, pieces
+//! in the input's direction and order.
 //!
-//! - [`CyrusBeck`] (`cyrus-beck`): Cyrus & Beck 1978, parametric clipping against one convex ring.
+//! - [`CyrusBeck`] (`cyrus-beck`): M. Cyrus and J. Beck, *Generalized two- and three-dimensional
+//!   clipping*, Computers & Graphics 3(1):23-28, 1978; parametric clipping against one convex ring.
 //!   For each edge the edge function `g(t) = n · (P(t) - v)` (inner normal `n`) at the two ends
 //!   decides: both outside (a zero counts as outside unless both are zero) rejects the segment;
 //!   outside-to-inside gives an entering parameter, inside-to-outside a leaving one; the piece is
 //!   `[max entering, min leaving]`. A segment on an edge's line keeps its overlap with that edge.
-//! - [`Liu`] (`liu`): Liu Yong-Kui et al. 1999, the baseline of Table 4 of Wang, Lu, Peng & Wu,
-//!   "Line clipping against polygonal window algorithm based on the multiple virtual boxes
-//!   rejecting", J. Zhejiang Univ. SCIENCE A 6 (2005) (`../shared/papers/002_361fafb3cdd30874.txt`).
-//!   Any window. Each vertex is classified by the sign of the segment's line function
-//!   `f(v) = (b - a) × (v - a)`; only edges whose end signs differ are intersected; the
-//!   intersections are sorted by `t` and the segment is cut into alternately inside and outside
-//!   intervals by even-odd parity.
+//! - [`Liu`] (`liu`): the line clipper for concave polygonal windows of Liu Yong-Kui et al. (1999),
+//!   as described and used as the baseline ("LIU") of Table 4 in J. Wang, G. Lu, Q. Peng and X. Wu,
+//!   *Line clipping against polygonal window algorithm based on the multiple virtual boxes
+//!   rejecting*, Journal of Zhejiang University SCIENCE A 6(Suppl. I):100-107, 2005. It follows
+//!   that description, not Liu et al.'s own paper. Any window. Each vertex is classified by the
+//!   sign of the segment's line function `f(v) = (b - a) × (v - a)`; only edges whose end signs
+//!   differ are intersected; the intersections are sorted by `t` and the segment is cut into
+//!   alternately inside and outside intervals by even-odd parity.
 //!
 //! # What the Liu baseline includes
 //!
@@ -72,6 +75,10 @@
 //! assert!(CyrusBeck.prepare(&u).is_err());
 //! # Ok::<(), clip_core::ClipError>(())
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod cyrus_beck;
 mod liu;

@@ -1,6 +1,6 @@
 //! The exact oracle for line clipping: closed-set visible intervals of a segment in a window.
 //!
-//! DESIGN.md's rule: the visible part of `P(t) = a + t (b - a)`, `t` in `[0, 1]`, is the set of
+//! docs/DESIGN.md's rule: the visible part of `P(t) = a + t (b - a)`, `t` in `[0, 1]`, is the set of
 //! maximal intervals `[ta, tb]`, `tb > ta`, on which every point lies in the closed window
 //! (interior under even-odd, or boundary). Adjacent intervals are merged and isolated touch
 //! points dropped.

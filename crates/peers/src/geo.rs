@@ -68,7 +68,7 @@ impl PolygonClipper for GeoClipper {
 /// `geo`'s `BooleanOps::clip` (boundary included) as a line clipper, one segment per call.
 ///
 /// One call per segment because i_overlay clips all the lines of a call together, which is very
-/// slow for large batches. The window's rings are read under even-odd, as DESIGN.md asks.
+/// slow for large batches. The window's rings are read under even-odd, as docs/DESIGN.md asks.
 ///
 /// geo's pieces are normalised into our [`VisiblePiece`] form: each output line string is cut
 /// into its edges, each edge is re-expressed by the parameters `t` of its end points projected

@@ -21,7 +21,7 @@
 //! returns only the closed output of an operation and drops the open (line) output.
 //!
 //! Each adapter passes our ring list to its library faithfully (every ring, in order, with its own
-//! orientation) and converts the result to DESIGN.md's conventions; what each normalises is said
+//! orientation) and converts the result to docs/DESIGN.md's conventions; what each normalises is said
 //! on its type.
 
 #[cfg(doctest)]

@@ -33,7 +33,7 @@ pub fn thin_rings(out: &Polygons) -> i64 {
 /// Whether `output`'s ring count agrees with Clipper2's on the same input, run live, once both
 /// are normalised to one convention by `normalise` (clipbench passes each through Vatti as a
 /// union with nothing under non-zero, which splits rings at pinch points and merges rings that
-/// share edges, as DESIGN.md's simple rings ask).
+/// share edges, as docs/DESIGN.md's simple rings ask).
 ///
 /// Two differences are not conventions and are allowed for explicitly:
 ///

@@ -2,7 +2,7 @@
 //! path clipped by every line clipper here and by geo, checked against the exact line oracle.
 //!
 //! Clipper2's own expected values are not used: they grade Clipper2's open-path output, which
-//! keeps or drops a segment on the window boundary by the window's orientation (NOTES.md), while
+//! keeps or drops a segment on the window boundary by the window's orientation (docs/DESIGN.md, Peers), while
 //! the closed-set rule always keeps it. The `DIFFERENCE` cases are clipped as intersections (the
 //! line clippers compute the part inside the window). Windows are read under even-odd.
 
@@ -12,7 +12,7 @@ use clip_oracle::line::{LINE_T_TOLERANCE, check_line_batch};
 use clip_peers::GeoLineClipper;
 use clip_virtual_box::VirtualBox;
 
-/// geo snaps coordinates to a grid of about extent x 1e-9 (NOTES.md); its pieces are checked
+/// geo snaps coordinates to a grid of about extent x 1e-9 (docs/DESIGN.md, Peers); its pieces are checked
 /// with this looser parameter tolerance.
 const GEO_T_TOLERANCE: f64 = 1e-6;
 

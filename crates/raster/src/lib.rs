@@ -1,11 +1,11 @@
 //! clip-raster: scanline polygon fill and Vatti trapezoid fill into a frame buffer.
 //!
-//! The fill stage of Vatti's Table 3 (`../shared/papers/000_5a7b0415a36e9151.txt`, "Results"
-//! and "Trapezoid Generation"): Method 1 fills the clipper's trapezoids
-//! `(Xleft, Xright, Ybot, DXleft, DXright, Ytop)` with the paper's incremental loop
-//! ([`fill_trapezoids`]); Method 2 fills the clipped polygon with a scanline fill
-//! ([`fill_polygons`]: edge table, active edge table, even-odd or non-zero). Both draw into a
-//! [`FrameBuffer`], by default the paper's 1280 x 1024, one byte per pixel.
+//! The fill stage of Table 3 of B. R. Vatti, *A generic solution to polygon clipping*,
+//! Communications of the ACM 35(7):56-63, 1992 (sections "Results" and "Trapezoid Generation"):
+//! Method 1 fills the clipper's trapezoids `(Xleft, Xright, Ybot, DXleft, DXright, Ytop)` with the
+//! paper's incremental loop ([`fill_trapezoids`]); Method 2 fills the clipped polygon with a
+//! scanline fill ([`fill_polygons`]: edge table, active edge table, even-odd or non-zero). Both
+//! draw into a [`FrameBuffer`], by default the paper's 1280 x 1024, one byte per pixel.
 //!
 //! # The sampling rule (shared)
 //!
@@ -58,6 +58,10 @@
 //! fill_trapezoids(&mut by_trapezoid, &[trapezoid], 1).unwrap();
 //! assert_eq!(by_trapezoid, by_scanline);
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod frame;
 pub mod sampling;

@@ -1,14 +1,14 @@
 //! clip-rect-four-state: the four-state point-splitting polygon clipper for rectangle windows.
 //!
-//! The algorithm of "Polygon Clipping Algorithm" (`../shared/papers/004_7c7020c5f4d30de8.txt`),
-//! as written: one walk over a cyclic point list; each point is checked against four states
-//! (MinY, MaxY, MinX, MaxX), one clip condition each. A point outside the current condition is
-//! divided into two points at the same place; each is removed when its next point (the previous
-//! list point for the first, the following one for the second) is outside too, and otherwise
-//! moved along the line towards that next point onto the boundary. After a move the walk goes on
-//! with the other pair of states (horizontal after vertical and vice versa); after two removals it
-//! restarts at state one with the point that is now current; a point inside all four states is
-//! done and the walk takes the next one.
+//! The algorithm of *Polygon Clipping Algorithm* (a short undated text that names no author or
+//! institution), as written: one walk over a cyclic point list; each point is checked against four
+//! states (MinY, MaxY, MinX, MaxX), one clip condition each. A point outside the current condition
+//! is divided into two points at the same place; each is removed when its next point (the previous
+//! list point for the first, the following one for the second) is outside too, and otherwise moved
+//! along the line towards that next point onto the boundary. After a move the walk goes on with the
+//! other pair of states (horizontal after vertical and vice versa); after two removals it restarts
+//! at state one with the point that is now current; a point inside all four states is done and the
+//! walk takes the next one.
 //!
 //! # Vocabulary
 //!
@@ -41,9 +41,9 @@
 //!   ([`ClipError::WindowNotRectangle`](clip_core::ClipError::WindowNotRectangle) otherwise).
 //! - Each subject ring gives at most one output ring, in its input orientation. When the part of a
 //!   concave ring inside the rectangle falls apart, the pieces stay connected by zero-width
-//!   **bridges** along the rectangle's sides, exactly like Sutherland-Hodgman's: the output
-//!   covers the right region (read under the input's fill rule, any of the four, since winding
-//!   numbers inside the rectangle are unchanged) but is not DESIGN.md's conventional output, so
+//!   **bridges** along the rectangle's sides, exactly like Sutherland-Hodgman's: the output covers
+//!   the right region (read under the input's fill rule, any of the four, since winding numbers
+//!   inside the rectangle are unchanged) but is not the conventional output of `docs/DESIGN.md`, so
 //!   it is compared by region. An edge that cuts across a corner outside the rectangle becomes a
 //!   path through that corner, as it should. The rectangle is read under the same rule: under
 //!   positive a clockwise rectangle covers nothing (under negative a counter-clockwise one).
@@ -70,6 +70,10 @@
 //!     clip_core::Point::new(2.0, 3.0),
 //! ]);
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod clipper;
 mod point_list;

@@ -1,9 +1,11 @@
 //! clip-sutherland-hodgman: Sutherland-Hodgman reentrant polygon clipping against a convex window.
 //!
-//! The algorithm of the lecture notes on polygon clipping
-//! (`../shared/papers/003_40d47b82321f04f0.txt`, "Sutherland-Hodgeman Polygon Clipping"): the
-//! subject's vertex list is clipped against each window boundary in turn, by the four vertex
-//! cases. Both forms the notes describe are here and give identical vertices:
+//! I. E. Sutherland and G. W. Hodgman, *Reentrant polygon clipping*, Communications of the ACM
+//! 17(1):32-42, 1974, as described in the lecture notes *Computer Graphics, Lecture 17: Polygon
+//! Clipping* (section "Sutherland-Hodgeman Polygon Clipping"; the notes name no author,
+//! institution or date): the subject's vertex list is clipped against each window boundary in
+//! turn, by the four vertex cases. Both forms the notes describe are here and give identical
+//! vertices:
 //!
 //! - the **list form** ([`Form::List`], [`clip_list`]): a whole new vertex list per boundary;
 //! - the **pipeline form** ([`Form::Pipeline`], [`Pipeline`]): each vertex goes through the
@@ -30,7 +32,8 @@
 //!   to a half-plane replaces each excursion outside by a segment of the boundary line, which
 //!   does not change the winding number of any point inside the window. So the output, read under
 //!   the *input's* fill rule, is the intersection under that rule, for all four rules (even-odd,
-//!   non-zero, positive, negative). It is not DESIGN.md's conventional output: rings may overlap.
+//!   non-zero, positive, negative). It is not the conventional output of `docs/DESIGN.md`: rings
+//!   may overlap.
 //!   The window is read under the same rule: under positive a clockwise window covers nothing
 //!   (and under negative a counter-clockwise one), so the result is then empty.
 //! - The known defect is kept, not hidden: when a concave subject's part inside the window falls
@@ -62,6 +65,10 @@
 //! let piped = SutherlandHodgman::new(Form::Pipeline).clip(&subject, &window, BoolOp::Intersection, FillRule::NonZero);
 //! assert_eq!(piped.unwrap(), out);
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod boundary;
 mod bridges;

@@ -1,9 +1,9 @@
 //! clip-vatti: Vatti's generic polygon clipper (1992): intersection, union, difference and xor,
 //! polygon and trapezoid output.
 //!
-//! Implements B. R. Vatti, "A Generic Solution to Polygon Clipping", CACM 35(7), 1992
-//! (`../shared/papers/000_5a7b0415a36e9151.txt`). Subject and clip may be any polygons:
-//! concave, self-intersecting, with holes, in several parts, read under any [`FillRule`].
+//! Implements B. R. Vatti, *A generic solution to polygon clipping*, Communications of the ACM
+//! 35(7):56-63, 1992. Subject and clip may be any polygons: concave, self-intersecting, with
+//! holes, in several parts, read under any [`FillRule`].
 //!
 //! # The paper's vocabulary in the code
 //!
@@ -43,13 +43,14 @@
 //! - Clean-up (`cleanup`) rebuilds only rings that touch: opposite coincident edges cancel,
 //!   vertices inside horizontal output edges split them, and rings are re-walked corner by
 //!   corner, then split where they still visit a vertex twice.
-//! - Output follows DESIGN.md: simple rings, outers counter-clockwise, holes clockwise, no
-//!   repeated or collinear vertices, no zero-area rings. Where the result pinches at a point the
-//!   rings are split there (two rings touching at a vertex, never one ring visiting it twice);
-//!   `clip_core::nest` groups the holes with their outers. No area threshold is applied, so
-//!   slivers a unit wide survive where Clipper2, rounding to its integer grid, drops them: ring
-//!   counts differ from Clipper2's on many of its `Polygons.txt` cases (the test runs Clipper2
-//!   on each, normalises its output to these conventions and checks the counts agree).
+//! - Output follows the workspace's conventions (`docs/DESIGN.md`): simple rings, outers
+//!   counter-clockwise, holes clockwise, no repeated or collinear vertices, no zero-area rings.
+//!   Where the result pinches at a point the rings are split there (two rings touching at a
+//!   vertex, never one ring visiting it twice); `clip_core::nest` groups the holes with their
+//!   outers. No area threshold is applied, so slivers a unit wide survive where Clipper2,
+//!   rounding to its integer grid, drops them: ring counts differ from Clipper2's on many of its
+//!   `Polygons.txt` cases (the cross-library test in `clip-peers` runs Clipper2 on each,
+//!   normalises its output to these conventions and checks the counts agree).
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE`, rings with
 //!   fewer than three distinct points) gives a [`ClipError`]; nothing panics or loops.
 //!
@@ -71,6 +72,10 @@
 //! let traps = Vatti.clip_trapezoids(&a, &b, BoolOp::Intersection, FillRule::NonZero).unwrap();
 //! assert_eq!(traps.iter().map(|t| t.area()).sum::<f64>(), 1.0);
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod active;
 mod bounds;

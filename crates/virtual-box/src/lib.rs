@@ -1,15 +1,16 @@
 //! clip-virtual-box: Line clipping against polygons by multiple virtual boxes (MEB, 45-degree box, slope-adaptive box), after Wang et al. 2005.
 //!
-//! Wang J., Lu G., Peng Q., Wu X., "Line clipping against polygonal window algorithm based on
-//! the multiple virtual boxes rejecting", J. Zhejiang Univ. SCIENCE A 6 (Suppl. I):100-107, 2005
-//! (`../shared/papers/002_361fafb3cdd30874.txt`). One [`LineClipper`](clip_core::LineClipper),
-//! [`VirtualBox`], in two registered variants: `virtual-box` (the paper's New2, with the 45°
-//! rotated box) and `virtual-box-no45` (New1, without it). Any window: rings are read under
-//! even-odd, so concave rings, holes, several parts and self-intersecting rings all work.
+//! J. Wang, G. Lu, Q. Peng and X. Wu, *Line clipping against polygonal window algorithm based on
+//! the multiple virtual boxes rejecting*, Journal of Zhejiang University SCIENCE A
+//! 6(Suppl. I):100-107, 2005. One [`LineClipper`](clip_core::LineClipper), [`VirtualBox`], in two
+//! registered variants: `virtual-box` (the paper's New2, with the 45° rotated box) and
+//! `virtual-box-no45` (New1, without it). Any window: rings are read under even-odd, so concave
+//! rings, holes, several parts and self-intersecting rings all work.
 //!
-//! Output follows DESIGN.md's closed-set rule: the maximal closed parameter intervals of positive
-//! length whose points all lie in the closed window (interior or boundary), touching intervals
-//! merged, isolated touch points dropped, pieces in the input's direction, ordered by `t`.
+//! Output follows the closed-set rule of the repository's `docs/DESIGN.md`: the maximal closed
+//! parameter intervals of positive length whose points all lie in the closed window (interior or
+//! boundary), touching intervals merged, isolated touch points dropped, pieces in the input's
+//! direction, ordered by `t`.
 //!
 //! # The paper's steps and where they live
 //!
@@ -98,6 +99,10 @@
 //! assert_eq!((new1.code_sum, new2.rotated_box), (1, 1));
 //! # Ok::<(), clip_core::ClipError>(())
 //! ```
+
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 mod adaptive_box;
 mod clipper;

@@ -172,7 +172,7 @@ fn judge_polygon(entry: &PolygonEntry, case: &SuiteCase) -> Verdict {
     }
 }
 
-/// One ring convention for counting rings of any library's output: ours (DESIGN.md's simple
+/// One ring convention for counting rings of any library's output: ours (docs/DESIGN.md's simple
 /// rings, split at pinch points), by a union with nothing under non-zero.
 fn normalise_rings(rings: &Polygons) -> Result<Polygons, String> {
     Vatti.clip(rings, &Polygons::empty(), BoolOp::Union, FillRule::NonZero).map_err(|e| e.to_string())

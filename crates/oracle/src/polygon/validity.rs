@@ -1,4 +1,4 @@
-//! The form conventional output must have (DESIGN.md): finite, no repeated consecutive vertex,
+//! The form conventional output must have (docs/DESIGN.md): finite, no repeated consecutive vertex,
 //! no zero-area ring, no crossings, outers counter-clockwise and holes clockwise by nesting
 //! depth; and the count of zero-width bridges in bridged output.
 

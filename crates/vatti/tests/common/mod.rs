@@ -4,7 +4,7 @@
 use clip_core::predicates::{SegmentIntersection, segment_intersection};
 use clip_core::{Point, Polygons, Segment};
 
-/// Checks DESIGN.md's output convention: no repeated consecutive vertices, at least three
+/// Checks docs/DESIGN.md's output convention: no repeated consecutive vertices, at least three
 /// vertices and non-zero area per ring, no two edges crossing or overlapping (touching at a
 /// point is allowed), each ring simple, and orientation by nesting depth (outers CCW, holes CW).
 pub fn check_valid(out: &Polygons) -> Result<(), String> {
