@@ -213,7 +213,8 @@ fn bridges_are_counted_and_compared_by_region() {
 #[test]
 fn tolerance_scales_with_the_inputs_box() {
     let (a, b, _) = squares();
-    assert!((tolerance(&a, &b, 1e-9) - 9e-9).abs() < 1e-20);
+    // 1e-9 of the [0,3]² box, on top of the rounding term (tested below).
+    assert!((tolerance(&a, &b, 1e-9) - tolerance(&a, &b, 0.0) - 9e-9).abs() < 1e-20);
 }
 
 #[test]
@@ -407,4 +408,66 @@ fn a_hole_running_along_its_outer_from_a_rounded_shared_point_does_not_cross_it(
     assert!(check_valid_output_within(&output, snap).is_ok(), "{:?}", check_valid_output_within(&output, snap));
     let exact = check_valid_output(&output).unwrap_err();
     assert!(exact.to_string().contains("shared point"), "{exact}");
+}
+
+/// `star-far` case 0's subject: a star of a few hundred units' extent at (1e9, 1e9).
+fn far_star() -> Polygons {
+    let case = polygon_case("star-far", 1, 0, WindowKind::Any).unwrap();
+    assert!(case.subject.bounds().min.x > 9e8, "star-far lies far from the origin");
+    case.subject
+}
+
+/// `p` with every vertex moved by `units` f64 steps at its magnitude, in alternating directions:
+/// what rounding every vertex of a correct answer looks like far from the origin.
+fn rounded_by(p: &Polygons, units: i32) -> Polygons {
+    let step = |v: f64, k: usize| {
+        let mut v = v;
+        for _ in 0..units {
+            v = if k % 2 == 0 { v.next_up() } else { v.next_down() };
+        }
+        v
+    };
+    let rings = p.rings.iter().map(|r| {
+        Ring::new(r.points.iter().enumerate().map(|(k, q)| Point::new(step(q.x, k), step(q.y, k + 1))).collect())
+    });
+    Polygons::new(rings.collect())
+}
+
+#[test]
+fn far_from_the_origin_rounding_to_f64_is_no_failure() {
+    let a = far_star();
+    let rounded = rounded_by(&a, 2);
+    assert_ne!(rounded, a);
+    // The bounding-box term alone (the tolerance before the rounding term) calls it wrong...
+    let xor = region_area(&[(&a, FillRule::NonZero), (&rounded, FillRule::NonZero)], |i| i[0] != i[1]);
+    let box_term = REGION_TOLERANCE * a.bounds().area();
+    assert!(xor > box_term, "the rounding moved {xor:e}, within the box term {box_term:e}: no test");
+    // ...the tolerance that knows the coordinates' magnitude does not.
+    let verdict = check_polygon_result(&a, &a, BoolOp::Intersection, FillRule::NonZero, &rounded, &EXACT);
+    assert!(verdict.is_ok(), "{verdict:?}");
+}
+
+#[test]
+fn far_from_the_origin_a_vertex_moved_by_a_millionth_of_the_box_is_caught() {
+    let a = far_star();
+    let moved_by = 1e-6 * a.bounds().extent();
+    // Move the tip of the longest spike outward along its own direction.
+    let pts = &a.rings[0].points;
+    let b = a.bounds();
+    let c = Point::new(0.5 * (b.min.x + b.max.x), 0.5 * (b.min.y + b.max.y));
+    let tip = (0..pts.len()).max_by(|&i, &j| pts[i].distance(c).total_cmp(&pts[j].distance(c))).unwrap();
+    let mut moved = pts.clone();
+    let out = (pts[tip] - c) * (moved_by / pts[tip].distance(c));
+    moved[tip] = pts[tip] + out;
+    let wrong = Polygons::from(Ring::new(moved));
+    let verdict = check_polygon_result(&a, &a, BoolOp::Intersection, FillRule::NonZero, &wrong, &EXACT);
+    assert!(matches!(verdict, Err(PolygonFailure::WrongRegion { .. })), "{verdict:?}");
+}
+
+#[test]
+fn the_rounding_term_is_negligible_near_the_origin() {
+    let (a, b, _) = squares();
+    // [0,3]² near the origin: rounding allows about 1e-14 beside the box term's 9e-9.
+    let rounding = tolerance(&a, &b, 0.0);
+    assert!(rounding > 0.0 && rounding < 1e-13, "{rounding:e}");
 }

@@ -16,7 +16,11 @@ use rand_pcg::Pcg64;
 use shapes::{checkerboard, edge_count, grid_ring, scribble, smooth, star};
 
 /// The polygon workloads, by name.
-pub const POLYGON_WORKLOADS: &[&str] = &["vatti-t3", "star", "scribble", "holes", "multi", "grid", "large"];
+pub const POLYGON_WORKLOADS: &[&str] = &["vatti-t3", "star", "star-far", "scribble", "holes", "multi", "grid", "large"];
+
+/// How far `star-far` moves `star`'s cases: UTM-like magnitudes, where one ulp of a coordinate
+/// (about 1.2e-7) is no longer small beside the 1e-9 relative area tolerance of a 1000-unit box.
+pub const FAR_OFFSET: Point = Point::new(1.0e9, 1.0e9);
 
 /// The line workloads, by name.
 pub const LINE_WORKLOADS: &[&str] = &["wang-t4", "lines-degenerate"];
@@ -159,12 +163,13 @@ fn make_polygon_case(
             let what = format!("vatti-t3 star subject {n} edges vs fixed {} window", window_word(window));
             return Ok(PolygonCase { workload: name, seed, index, subject, clip, description: what });
         }
-        "star" => {
+        "star" | "star-far" => {
             let (n, m) = (size(&mut rng), size(&mut rng));
-            let s = star(&mut rng, n, Point::new(500.0, 500.0), 400.0, 400.0, 0.2);
+            let far = if name == "star-far" { FAR_OFFSET } else { Point::ZERO };
+            let s = star(&mut rng, n, Point::new(500.0, 500.0) + far, 400.0, 400.0, 0.2);
             let o = offset_center(&mut rng);
-            let c = star(&mut rng, m, o, 350.0, 350.0, 0.2);
-            (s.into(), c.into(), format!("star subject {n} edges vs star clip {m} edges"))
+            let c = star(&mut rng, m, o + far, 350.0, 350.0, 0.2);
+            (s.into(), c.into(), format!("{name} subject {n} edges vs star clip {m} edges"))
         }
         "scribble" => {
             let (n, m) = (size(&mut rng), size(&mut rng));

@@ -2,7 +2,7 @@
 //! each operation and fill rule it supports; checks each result and compares the clippers.
 
 use clip_core::{BoolOp, FillRule, Polygons, WindowKind};
-use clip_oracle::polygon::{bridge_count_within, operand_areas};
+use clip_oracle::polygon::{bridge_count_within, operand_areas, snap_distance};
 use clip_testkit::workload::polygon_case;
 
 use super::finding::{CaseOutcome, Finding, Kind};
@@ -90,7 +90,7 @@ impl PolygonPlan<'_> {
                             row.runs += 1;
                             if let (Ok(out), true) = (&result, e.clipper.capabilities().bridges) {
                                 // Bridge ends on slanted sides are rounded separately: snap as the oracle does.
-                                let snap = subject.bounds().union(clip.bounds()).extent() * e.tolerance;
+                                let snap = snap_distance(&subject.bounds().union(clip.bounds()), e.tolerance);
                                 row.bridges = Some(row.bridges.unwrap_or(0) + bridge_count_within(out, snap));
                             }
                             if let Err(message) = &verdict {
