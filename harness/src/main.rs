@@ -14,6 +14,7 @@ mod read;
 mod registry;
 mod report;
 mod reproduce;
+mod results_files;
 mod verify;
 mod write;
 

@@ -17,17 +17,7 @@ use crate::measure::provenance::Provenance;
 use crate::measure::raw::write_csv;
 use crate::registry::Registry;
 use crate::report;
-
-pub use rounds::MemoryRecord;
-
-/// The raw timings.
-pub const CSV: &str = "bench.csv";
-/// Peak memory of the large cases.
-pub const MEMORY_CSV: &str = "bench-memory.csv";
-/// The sidecar of [`CSV`].
-pub const META: &str = "bench.meta.json";
-/// The baseline every ratio is taken against.
-pub const BASELINE: &str = "clipper2";
+use crate::results_files::bench::{BASELINE, CSV, META, write_memory};
 
 /// Arguments of `clipbench bench`.
 #[derive(Debug, clap::Args)]
@@ -76,7 +66,7 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> 
     let measured = rounds::run(&groups, registry, &settings)?;
 
     write_csv(&out.join(CSV), &measured.rows)?;
-    write_csv(&out.join(MEMORY_CSV), &measured.memory)?;
+    write_memory(&out, &measured.memory)?;
     let parameters = json!({
         "quick": args.quick,
         "rounds": rounds,

@@ -12,7 +12,7 @@ use crate::measure::timing::{mean, median};
 use crate::papers::{VATTI_TABLE3, vatti_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::FACTORS;
-use crate::reproduce::table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV};
+use crate::results_files::vatti_table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV};
 use crate::write::write_file;
 
 /// The markdown table file.

@@ -12,7 +12,7 @@ use crate::measure::timing::median;
 use crate::papers::{WANG_TABLE4, wang_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::SIZE_ROWS;
-use crate::reproduce::table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
+use crate::results_files::wang_table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
 use crate::write::write_file;
 
 /// The markdown table file.
