@@ -1,6 +1,7 @@
 //! clipbench: verify clipping algorithms against exact oracles, peer libraries and external
 //! suites, and run one clipping operation on files by hand. One module per command; the
-//! clippers are in `registry`.
+//! clippers are in `registry`. Results flow one way: `bench` and `reproduce` measure and write
+//! the raw files (`results_files`), then this dispatcher has `report` turn them into REPORT.md.
 
 mod bench;
 mod checks;
@@ -21,6 +22,9 @@ mod write;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+
+use crate::cli_error::CliError;
+use crate::registry::Registry;
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
 /// Clipper2), and one-off clipping of WKT/GeoJSON files.
@@ -59,8 +63,8 @@ fn main() -> ExitCode {
         Command::Verify(args) => verify::run(args, registry),
         Command::Conformance(args) => conformance::run(args, registry),
         Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
-        Command::Reproduce(args) => reproduce::run(args),
-        Command::Bench(args) => bench::run(args, &registry),
+        Command::Reproduce(args) => reproduce_then_report(args),
+        Command::Bench(args) => bench_then_report(args, &registry),
         Command::Report(args) => report::run(args),
     };
     match result {
@@ -70,4 +74,31 @@ fn main() -> ExitCode {
             ExitCode::from(e.code)
         }
     }
+}
+
+/// `clipbench reproduce`: each asked table measured, then its markdown and plot, then REPORT.md.
+/// A table's markdown is written before the next table is measured, so a failure later keeps it.
+fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, CliError> {
+    let plan = reproduce::plan(args)?;
+    for &table in &plan.tables {
+        reproduce::measure(table, args, &plan.out)?;
+        match table {
+            reproduce::Table::VattiTable3 => report::table3::write(&plan.out)?,
+            reproduce::Table::WangTable4 => report::table4::write(&plan.out)?,
+        }
+    }
+    report::write_report(&plan.out)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `clipbench bench`: the raw files measured, then the bench tables and plots, then REPORT.md.
+/// The hidden memory-probe mode only measures and prints, and writes no files.
+fn bench_then_report(args: &bench::BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> {
+    if let Some(spec) = &args.memory_probe {
+        return bench::run_memory_probe(spec, args.seed, registry);
+    }
+    let out = bench::run(args, registry)?;
+    report::bench_tables::write(&out)?;
+    report::write_report(&out)?;
+    Ok(ExitCode::SUCCESS)
 }

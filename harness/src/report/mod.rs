@@ -34,9 +34,15 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     table3::write(&out)?;
     table4::write(&out)?;
     bench_tables::write(&out)?;
-    document::write(&out)?;
-    eprintln!("clipbench: wrote {}", out.join(document::REPORT_FILE).display());
+    write_report(&out)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// Writes REPORT.md from every result in `out` and says where it is.
+pub fn write_report(out: &Path) -> Result<(), CliError> {
+    document::write(out)?;
+    eprintln!("clipbench: wrote {}", out.join(document::REPORT_FILE).display());
+    Ok(())
 }
 
 /// A result file's sidecar, and a markdown paragraph giving its provenance and notes.
