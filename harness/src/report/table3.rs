@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use super::markdown::{header, num, table};
-use super::provenance_line;
+use super::provenance_line::provenance_line;
 use crate::cli_error::CliError;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::{mean, median};
