@@ -2,8 +2,10 @@
 //! suites, reproduce the papers' performance tables (Vatti 1992, Table 3; Wang, Lu, Peng and Wu
 //! 2005, Table 4; full citations in `papers` and the README), benchmark every polygon clipper
 //! against geo and Clipper2, and run one clipping operation on files by hand. One module per
-//! command; the clippers are in `registry`. The conventions every check relies on are set out in
-//! the repository's `docs/DESIGN.md`.
+//! command; the clippers are in `registry`. Results flow one way: `bench` and `reproduce` measure
+//! and write the raw files (`results_files`), then this dispatcher has `report` turn them into
+//! REPORT.md. The conventions every check relies on are set out in the repository's
+//! `docs/DESIGN.md`.
 
 mod bench;
 mod checks;
@@ -17,12 +19,16 @@ mod read;
 mod registry;
 mod report;
 mod reproduce;
+mod results_files;
 mod verify;
 mod write;
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+
+use crate::cli_error::CliError;
+use crate::registry::Registry;
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
 /// Clipper2), and one-off clipping of WKT/GeoJSON files.
@@ -61,8 +67,8 @@ fn main() -> ExitCode {
         Command::Verify(args) => verify::run(args, registry),
         Command::Conformance(args) => conformance::run(args, registry),
         Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
-        Command::Reproduce(args) => reproduce::run(args),
-        Command::Bench(args) => bench::run(args, &registry),
+        Command::Reproduce(args) => reproduce_then_report(args),
+        Command::Bench(args) => bench_then_report(args, &registry),
         Command::Report(args) => report::run(args),
     };
     match result {
@@ -72,4 +78,31 @@ fn main() -> ExitCode {
             ExitCode::from(e.code)
         }
     }
+}
+
+/// `clipbench reproduce`: each asked table measured, then its markdown and plot, then REPORT.md.
+/// A table's markdown is written before the next table is measured, so a failure later keeps it.
+fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, CliError> {
+    let plan = reproduce::plan(args)?;
+    for &table in &plan.tables {
+        reproduce::measure(table, args, &plan.out)?;
+        match table {
+            reproduce::Table::VattiTable3 => report::table3::write(&plan.out)?,
+            reproduce::Table::WangTable4 => report::table4::write(&plan.out)?,
+        }
+    }
+    report::write_report(&plan.out)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `clipbench bench`: the raw files measured, then the bench tables and plots, then REPORT.md.
+/// The hidden memory-probe mode only measures and prints, and writes no files.
+fn bench_then_report(args: &bench::BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> {
+    if let Some(spec) = &args.memory_probe {
+        return bench::run_memory_probe(spec, args.seed, registry);
+    }
+    let out = bench::run(args, registry)?;
+    report::bench_tables::write(&out)?;
+    report::write_report(&out)?;
+    Ok(ExitCode::SUCCESS)
 }

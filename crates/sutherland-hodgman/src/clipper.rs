@@ -1,10 +1,14 @@
-//! `SutherlandHodgman` behind clip-core's `PolygonClipper` trait.
+//! `SutherlandHodgman` behind clip-core's `PolygonClipper` trait: runs the chosen form on each ring.
 
+use clip_core::predicates::{Orientation, orient};
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, WindowKind, validate_polygons,
-    window_covers,
+    BoolOp, ClipError, FillRule, Operand, Point, PolygonCapabilities, PolygonClipper, Polygons, Ring, WindowKind,
+    validate_polygons, window_covers,
 };
 
+use crate::bridges::bridge_count;
+use crate::list_form::clip_list;
+use crate::pipeline::Pipeline;
 use crate::window::ConvexWindow;
 use crate::{Form, NAME};
 
@@ -27,7 +31,15 @@ impl SutherlandHodgman {
     pub fn clip_counting_bridges(&self, subject: &Polygons, clip: &Polygons) -> Result<(Polygons, usize), ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         let window = ConvexWindow::new(clip)?;
-        Ok((window.clip(subject, self.form), crate::bridge_count(subject, &window)))
+        Ok((self.clip_rings(subject, &window), bridge_count(subject, &window)))
+    }
+
+    /// Clips every ring of `subject` separately and keeps the rings that still enclose area,
+    /// each in its input orientation (so winding numbers inside the window are unchanged).
+    fn clip_rings(&self, subject: &Polygons, window: &ConvexWindow) -> Polygons {
+        let rings =
+            subject.rings.iter().filter_map(|r| encloses_area(Ring::new(clip_ring(r, window, self.form)))).collect();
+        Polygons::new(rings)
     }
 }
 
@@ -49,6 +61,27 @@ impl PolygonClipper for SutherlandHodgman {
         if !window_covers(clip, fill) {
             return Ok(Polygons::empty());
         }
-        Ok(window.clip(subject, self.form))
+        Ok(self.clip_rings(subject, &window))
     }
+}
+
+/// Clips one ring's vertices with `form`; the result may be empty and may hold bridges.
+fn clip_ring(ring: &Ring, window: &ConvexWindow, form: Form) -> Vec<Point> {
+    match form {
+        Form::List => clip_list(&ring.points, window),
+        Form::Pipeline => {
+            let mut pipeline = Pipeline::new(window);
+            ring.points.iter().for_each(|&p| pipeline.push(p));
+            pipeline.finish()
+        }
+    }
+}
+
+/// The ring without repeated vertices, or `None` when what is left is a point or a line.
+fn encloses_area(ring: Ring) -> Option<Ring> {
+    let ring = ring.without_repeats();
+    let pts = &ring.points;
+    let &first = pts.first()?;
+    let second = pts.iter().copied().find(|&p| p != first)?;
+    pts.iter().any(|&p| orient(first, second, p) != Orientation::Collinear).then_some(ring)
 }

@@ -1,5 +1,4 @@
-//! The pipeline form: each vertex passes through the boundary stages one by one, with no
-//! intermediate lists; a point reaches the output only once every stage has found it inside.
+//! The pipeline form: each vertex passes through the boundary stages one by one, with no intermediate lists.
 
 use clip_core::Point;
 

@@ -1,5 +1,4 @@
-//! What travels through the boundary stages: a plain point, or a point that remembers which
-//! window boundaries it lies on (to find the edges the algorithm lays along the window).
+//! What travels through the boundary stages: a plain point, or one that remembers the boundaries it lies on.
 
 use clip_core::Point;
 

@@ -1,12 +1,10 @@
-//! The convex window prepared as a list of boundaries, and the clipping of whole polygon sets.
+//! The convex window, validated and prepared as one boundary per edge; it describes the window and clips nothing.
 
 use clip_core::predicates::{Orientation, orient};
-use clip_core::{ClipError, Point, Polygons, Ring, convex_window};
+use clip_core::{ClipError, Point, Polygons, convex_window};
 
+use crate::NAME;
 use crate::boundary::Boundary;
-use crate::list_form::clip_list;
-use crate::pipeline::Pipeline;
-use crate::{Form, NAME};
 
 /// A convex window, walked counter-clockwise, one [`Boundary`] per edge (collinear vertices
 /// dropped, so no two boundaries share a line).
@@ -36,32 +34,4 @@ impl ConvexWindow {
     pub fn boundaries(&self) -> &[Boundary] {
         &self.boundaries
     }
-
-    /// Clips one ring's vertices; the result may be empty and may hold bridges.
-    pub fn clip_ring(&self, ring: &Ring, form: Form) -> Vec<Point> {
-        match form {
-            Form::List => clip_list(&ring.points, self),
-            Form::Pipeline => {
-                let mut pipeline = Pipeline::new(self);
-                ring.points.iter().for_each(|&p| pipeline.push(p));
-                pipeline.finish()
-            }
-        }
-    }
-
-    /// Clips every ring of `subject` separately and keeps the rings that still enclose area,
-    /// each in its input orientation (so winding numbers inside the window are unchanged).
-    pub fn clip(&self, subject: &Polygons, form: Form) -> Polygons {
-        let rings = subject.rings.iter().filter_map(|r| encloses_area(Ring::new(self.clip_ring(r, form)))).collect();
-        Polygons::new(rings)
-    }
-}
-
-/// The ring without repeated vertices, or `None` when what is left is a point or a line.
-pub(crate) fn encloses_area(ring: Ring) -> Option<Ring> {
-    let ring = ring.without_repeats();
-    let pts = &ring.points;
-    let &first = pts.first()?;
-    let second = pts.iter().copied().find(|&p| p != first)?;
-    pts.iter().any(|&p| orient(first, second, p) != Orientation::Collinear).then_some(ring)
 }

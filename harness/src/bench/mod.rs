@@ -1,6 +1,7 @@
 //! `clipbench bench`: every registered polygon clipper against geo and Clipper2 on the seeded
 //! workloads, all four operations, timed in interleaved rounds; ratios to Clipper2 come from the
 //! same run. Rectangle windows add the rectangle-only clippers; large cases also get peak memory.
+//! Writes the raw files only; `report` turns them into tables and plots.
 
 mod memory_probe;
 mod plan;
@@ -16,18 +17,7 @@ use crate::measure::out_dir::ready_out_dir;
 use crate::measure::provenance::Provenance;
 use crate::measure::raw::write_csv;
 use crate::registry::Registry;
-use crate::report;
-
-pub use rounds::MemoryRecord;
-
-/// The raw timings.
-pub const CSV: &str = "bench.csv";
-/// Peak memory of the large cases.
-pub const MEMORY_CSV: &str = "bench-memory.csv";
-/// The sidecar of [`CSV`].
-pub const META: &str = "bench.meta.json";
-/// The baseline every ratio is taken against.
-pub const BASELINE: &str = "clipper2";
+use crate::results_files::bench::{BASELINE, CSV, META, write_memory};
 
 /// Arguments of `clipbench bench`.
 #[derive(Debug, clap::Args)]
@@ -54,11 +44,14 @@ pub struct BenchArgs {
     pub memory_probe: Option<String>,
 }
 
-/// Runs the command: measures, writes the raw files, then the tables, plots and REPORT.md.
-pub fn run(args: &BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> {
-    if let Some(spec) = &args.memory_probe {
-        return memory_probe::child(spec, args.seed, registry);
-    }
+/// The hidden `--memory-probe` mode: one call's peak memory, measured in this fresh process.
+pub fn run_memory_probe(spec: &str, seed: u64, registry: &Registry) -> Result<ExitCode, CliError> {
+    memory_probe::child(spec, seed, registry)
+}
+
+/// Measures and writes the raw files (timings, peak memory, sidecar) into the output folder,
+/// which it returns.
+pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
     let cap = args.cap.unwrap_or(if args.quick { 0.5 } else { 2.0 });
     if !(cap.is_finite() && cap > 0.0) {
         return Err(CliError::usage("--cap must be a positive number of seconds"));
@@ -76,7 +69,7 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> 
     let measured = rounds::run(&groups, registry, &settings)?;
 
     write_csv(&out.join(CSV), &measured.rows)?;
-    write_csv(&out.join(MEMORY_CSV), &measured.memory)?;
+    write_memory(&out, &measured.memory)?;
     let parameters = json!({
         "quick": args.quick,
         "rounds": rounds,
@@ -95,8 +88,5 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> 
     );
     provenance.notes.extend(measured.notes);
     provenance.write(&out.join(META))?;
-    report::bench_tables::write(&out)?;
-    report::document::write(&out)?;
-    eprintln!("clipbench: wrote {}", out.join(report::document::REPORT_FILE).display());
-    Ok(ExitCode::SUCCESS)
+    Ok(out)
 }

@@ -7,7 +7,6 @@ use std::time::Duration;
 
 use clip_core::{BoolOp, FillRule, PolygonClipper};
 use clip_testkit::workload::{PolygonCase, polygon_case_sized};
-use serde::{Deserialize, Serialize};
 
 use super::memory_probe::Probe;
 use super::plan::Group;
@@ -16,6 +15,7 @@ use crate::measure::progress::bar;
 use crate::measure::raw::Measurement;
 use crate::measure::timing::{iterations_for, per_call_ns, timed};
 use crate::registry::Registry;
+use crate::results_files::bench::MemoryRecord;
 
 /// Every case is read under this rule (the papers' parity rule, and every clipper supports it).
 const FILL: FillRule = FillRule::EvenOdd;
@@ -35,25 +35,6 @@ pub struct Settings {
     pub cap_seconds: f64,
     /// Shorter measurements.
     pub quick: bool,
-}
-
-/// One row of `bench-memory.csv`.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct MemoryRecord {
-    /// Group label.
-    pub workload: String,
-    /// Case index.
-    pub case: String,
-    /// The clipper.
-    pub clipper: String,
-    /// Subject edges.
-    pub size: usize,
-    /// The operation.
-    pub op: String,
-    /// Resident memory before the call, KiB.
-    pub rss_before_kib: u64,
-    /// Peak resident memory above that during the call, KiB.
-    pub peak_extra_kib: u64,
 }
 
 /// What a bench run measured.

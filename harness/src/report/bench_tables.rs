@@ -5,13 +5,13 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 use super::markdown::{duration_ns, header, num, table};
-use super::provenance_line;
-use crate::bench::{BASELINE, CSV, MEMORY_CSV, META, MemoryRecord};
+use super::provenance_line::provenance_line;
 use crate::cli_error::CliError;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::{geometric_mean, mean, median};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
+use crate::results_files::bench::{BASELINE, CSV, META, MemoryRecord, read_memory};
 use crate::write::write_file;
 
 /// The markdown file.
@@ -232,8 +232,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         return Ok(None);
     }
     let rows: Vec<Measurement> = read_csv(&csv)?;
-    let memory: Vec<MemoryRecord> =
-        if out.join(MEMORY_CSV).exists() { read_csv(&out.join(MEMORY_CSV))? } else { Vec::new() };
+    let memory = read_memory(out)?;
     let points = points(&rows);
     let groups = order(&rows, |r| r.workload.as_str());
     let clippers = order(&rows, |r| r.clipper.as_str());

@@ -4,6 +4,7 @@
 pub mod bench_tables;
 pub mod document;
 pub mod markdown;
+mod provenance_line;
 pub mod table3;
 pub mod table4;
 
@@ -12,7 +13,6 @@ use std::process::ExitCode;
 
 use crate::cli_error::CliError;
 use crate::measure::out_dir::ready_out_dir;
-use crate::measure::provenance::Provenance;
 
 /// Arguments of `clipbench report`.
 #[derive(Debug, clap::Args)]
@@ -34,18 +34,13 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     table3::write(&out)?;
     table4::write(&out)?;
     bench_tables::write(&out)?;
-    document::write(&out)?;
-    eprintln!("clipbench: wrote {}", out.join(document::REPORT_FILE).display());
+    write_report(&out)?;
     Ok(ExitCode::SUCCESS)
 }
 
-/// A result file's sidecar, and a markdown paragraph giving its provenance and notes.
-pub fn provenance_line(meta: &Path) -> Result<(Provenance, String), CliError> {
-    let p = Provenance::read(meta)?;
-    let file = meta.file_name().map_or_else(String::new, |f| f.to_string_lossy().into_owned());
-    let mut text = format!("Run: `clipbench {}`, {} (`{file}`).\n\n", p.command, p.summary());
-    for note in &p.notes {
-        text.push_str(&format!("- Note: {note}\n"));
-    }
-    Ok((p, text))
+/// Writes REPORT.md from every result in `out` and says where it is.
+pub fn write_report(out: &Path) -> Result<(), CliError> {
+    document::write(out)?;
+    eprintln!("clipbench: wrote {}", out.join(document::REPORT_FILE).display());
+    Ok(())
 }

@@ -5,14 +5,14 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use super::markdown::{header, num, table};
-use super::provenance_line;
+use super::provenance_line::provenance_line;
 use crate::cli_error::CliError;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::{mean, median};
 use crate::papers::{VATTI_TABLE3, vatti_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::FACTORS;
-use crate::reproduce::table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV};
+use crate::results_files::vatti_table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV};
 use crate::write::write_file;
 
 /// The markdown table file.

@@ -5,14 +5,14 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use super::markdown::{header, num, table};
-use super::provenance_line;
+use super::provenance_line::provenance_line;
 use crate::cli_error::CliError;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::median;
 use crate::papers::{WANG_TABLE4, wang_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::SIZE_ROWS;
-use crate::reproduce::table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
+use crate::results_files::wang_table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
 use crate::write::write_file;
 
 /// The markdown table file.

@@ -1,16 +1,14 @@
-//! `clipbench reproduce`: the papers' performance tables measured here, written as raw CSV, then
-//! as markdown tables and plots beside the papers' own numbers.
+//! `clipbench reproduce`: the papers' performance tables measured here, written as raw CSV (and
+//! sidecars); `report` turns them into markdown tables and plots beside the papers' own numbers.
 
 mod pixel_check;
-pub mod table3;
-pub mod table4;
+mod table3;
+mod table4;
 
-use std::path::PathBuf;
-use std::process::ExitCode;
+use std::path::{Path, PathBuf};
 
 use crate::cli_error::CliError;
 use crate::measure::out_dir::ready_out_dir;
-use crate::report;
 
 /// The tables `reproduce` knows, by name.
 pub const TABLES: [&str; 3] = ["vatti-table3", "wang-table4", "all"];
@@ -36,12 +34,30 @@ pub struct ReproduceArgs {
     pub seed: u64,
 }
 
-/// Runs the command: measures the asked tables, then rewrites their markdown, plots and REPORT.md.
-pub fn run(args: &ReproduceArgs) -> Result<ExitCode, CliError> {
-    let (vatti, wang) = match args.table.as_str() {
-        "vatti-table3" => (true, false),
-        "wang-table4" => (false, true),
-        "all" => (true, true),
+/// One of the papers' tables.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Table {
+    /// Vatti 1992, Table 3.
+    VattiTable3,
+    /// Wang et al. 2005, Table 4.
+    WangTable4,
+}
+
+/// What a run is asked to do: its tables in measuring order, and the output folder, made ready.
+#[derive(Debug)]
+pub struct Plan {
+    /// The tables to measure.
+    pub tables: Vec<Table>,
+    /// The ready output folder.
+    pub out: PathBuf,
+}
+
+/// Checks the arguments and readies the output folder, before anything is measured.
+pub fn plan(args: &ReproduceArgs) -> Result<Plan, CliError> {
+    let tables = match args.table.as_str() {
+        "vatti-table3" => vec![Table::VattiTable3],
+        "wang-table4" => vec![Table::WangTable4],
+        "all" => vec![Table::VattiTable3, Table::WangTable4],
         other => {
             return Err(CliError::usage(format!("unknown table '{other}' (valid: {})", TABLES.join(", "))));
         }
@@ -50,17 +66,13 @@ pub fn run(args: &ReproduceArgs) -> Result<ExitCode, CliError> {
         return Err(CliError::usage("--repetitions must be at least 1"));
     }
     let out = ready_out_dir(&args.out)?;
-    if vatti {
-        let settings = table3::Settings::new(args.seed, args.full, args.repetitions);
-        table3::measure(&settings, &out)?;
-        report::table3::write(&out)?;
+    Ok(Plan { tables, out })
+}
+
+/// Measures one table and writes its raw files into `out`.
+pub fn measure(table: Table, args: &ReproduceArgs, out: &Path) -> Result<(), CliError> {
+    match table {
+        Table::VattiTable3 => table3::measure(&table3::Settings::new(args.seed, args.full, args.repetitions), out),
+        Table::WangTable4 => table4::measure(&table4::Settings::new(args.seed, args.full, args.repetitions), out),
     }
-    if wang {
-        let settings = table4::Settings::new(args.seed, args.full, args.repetitions);
-        table4::measure(&settings, &out)?;
-        report::table4::write(&out)?;
-    }
-    report::document::write(&out)?;
-    eprintln!("clipbench: wrote {}", out.join(report::document::REPORT_FILE).display());
-    Ok(ExitCode::SUCCESS)
 }

@@ -5,9 +5,9 @@ use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons, Trapezoid};
 use clip_raster::{FrameBuffer, fill_polygons, fill_trapezoids};
 use clip_sutherland_hodgman::SutherlandHodgman;
 use clip_vatti::Vatti;
-use serde::{Deserialize, Serialize};
 
 use crate::cli_error::CliError;
+use crate::results_files::vatti_table3::PixelRecord;
 
 /// The fill rule both methods read the subject and their output under (the paper's parity).
 pub const FILL: FillRule = FillRule::EvenOdd;
@@ -22,23 +22,6 @@ pub struct Agreed {
     pub checksum: u64,
     /// What was checked, for the pixel-check CSV.
     pub record: PixelRecord,
-}
-
-/// One row of `vatti-table3-pixels.csv`: the agreed rendering of one case.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct PixelRecord {
-    /// Subject edges.
-    pub size: usize,
-    /// Case index.
-    pub case: usize,
-    /// Trapezoids Method 1 filled.
-    pub trapezoids: usize,
-    /// Vertices of Method 2's clipped polygon.
-    pub polygon_vertices: usize,
-    /// Pixels both methods lit.
-    pub lit_pixels: usize,
-    /// Checksum of the frame (FNV-1a, hexadecimal).
-    pub checksum: String,
 }
 
 /// Clips `subject` by `window` with both methods, fills both into cleared frames and compares

@@ -12,26 +12,16 @@ use clip_testkit::workload::{VATTI_EDGES, polygon_case_sized, vatti_window};
 use clip_vatti::Vatti;
 use serde_json::json;
 
-use super::pixel_check::{FILL, PixelRecord, agree};
+use super::pixel_check::{FILL, agree};
 use crate::cli_error::CliError;
 use crate::measure::progress::bar;
 use crate::measure::provenance::Provenance;
 use crate::measure::raw::{Measurement, write_csv};
 use crate::measure::timing::{iterations_for, per_call_ns, timed};
-
-/// File names of this table's raw results, in the output folder.
-pub const CSV: &str = "vatti-table3.csv";
-/// The pixel check's record.
-pub const PIXELS_CSV: &str = "vatti-table3-pixels.csv";
-/// The sidecar of [`CSV`].
-pub const META: &str = "vatti-table3.meta.json";
+use crate::results_files::vatti_table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV, PixelRecord};
 
 /// The workload name in the raw rows.
 const WORKLOAD: &str = "vatti-t3";
-/// Method 1's and Method 2's clipper names in the raw rows.
-pub const METHOD1: &str = "vatti";
-/// See [`METHOD1`].
-pub const METHOD2: &str = "sutherland-hodgman";
 /// A clip measurement repeats short clips back to back until it lasts about this long.
 const CLIP_TARGET: Duration = Duration::from_micros(50);
 

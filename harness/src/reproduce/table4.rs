@@ -11,7 +11,6 @@ use clip_cyrus_beck::{CyrusBeck, Liu, PreparedCyrusBeck, PreparedLiu};
 use clip_peers::GeoLineClipper;
 use clip_testkit::workload::{WANG_EDGES, WangSize, wang_measure, wang_segments, wang_window};
 use clip_virtual_box::{PreparedVirtualBox, VirtualBox};
-use serde::{Deserialize, Serialize};
 use serde_json::json;
 
 use crate::cli_error::CliError;
@@ -19,15 +18,8 @@ use crate::measure::progress::bar;
 use crate::measure::provenance::Provenance;
 use crate::measure::raw::{Measurement, write_csv};
 use crate::measure::timing::timed;
+use crate::results_files::wang_table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
 
-/// The raw timings.
-pub const CSV: &str = "wang-table4.csv";
-/// Each window's measured W1 and W2.
-pub const WINDOWS_CSV: &str = "wang-table4-windows.csv";
-/// Segments settled by each stage of each clipper.
-pub const STAGES_CSV: &str = "wang-table4-stages.csv";
-/// The sidecar of [`CSV`].
-pub const META: &str = "wang-table4.meta.json";
 /// The workload name in the raw rows.
 const WORKLOAD: &str = "wang-t4";
 /// The peer, which is far slower per batch and gets fewer rounds.
@@ -65,44 +57,6 @@ fn clippers() -> Vec<Box<dyn LineClipper>> {
         Box::new(CyrusBeck),
         Box::new(GeoLineClipper),
     ]
-}
-
-/// One row of [`WINDOWS_CSV`].
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct WindowRecord {
-    /// `concave` (the table) or `convex` (the extra table with Cyrus-Beck).
-    pub shape: String,
-    /// `W1` for the paper's first size row (its own polygon), `W2` for the second (W1 = 4, W2 = 80).
-    pub size_row: String,
-    /// Window edges.
-    pub edges: usize,
-    /// 600 / (MEB width + height), measured on our window.
-    pub w1: f64,
-    /// 600 x 800 / MEB area, measured on our window.
-    pub w2: f64,
-    /// The paper's W1 for this row.
-    pub paper_w1: f64,
-    /// The paper's W2 for this row.
-    pub paper_w2: f64,
-}
-
-/// One row of [`STAGES_CSV`].
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct StageRecord {
-    /// Window shape, as in [`WindowRecord::shape`].
-    pub shape: String,
-    /// Size row, as in [`WindowRecord::size_row`].
-    pub size_row: String,
-    /// Window edges.
-    pub edges: usize,
-    /// The clipper.
-    pub clipper: String,
-    /// The stage (`meb`, `rotated-box`, `virtual-box`, `code-sum`, `intersected`, `visible`, ...).
-    pub stage: String,
-    /// Segments that stage settled.
-    pub segments: usize,
-    /// Segments in the batch.
-    pub of: usize,
 }
 
 /// One window with every clipper that takes it, prepared.

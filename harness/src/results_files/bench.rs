@@ -1,0 +1,47 @@
+//! The files of `clipbench bench`: timings, peak memory, the sidecar, and the baseline ratios are taken against.
+
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+
+use crate::cli_error::CliError;
+use crate::measure::raw::{read_csv, write_csv};
+
+/// The raw timings, one [`Measurement`](crate::measure::raw::Measurement) per row.
+pub const CSV: &str = "bench.csv";
+/// Peak memory of the large cases, one [`MemoryRecord`] per row.
+pub const MEMORY_CSV: &str = "bench-memory.csv";
+/// The sidecar of [`CSV`].
+pub const META: &str = "bench.meta.json";
+/// The baseline every ratio is taken against.
+pub const BASELINE: &str = "clipper2";
+
+/// One row of [`MEMORY_CSV`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MemoryRecord {
+    /// Group label.
+    pub workload: String,
+    /// Case index.
+    pub case: String,
+    /// The clipper.
+    pub clipper: String,
+    /// Subject edges.
+    pub size: usize,
+    /// The operation.
+    pub op: String,
+    /// Resident memory before the call, KiB.
+    pub rss_before_kib: u64,
+    /// Peak resident memory above that during the call, KiB.
+    pub peak_extra_kib: u64,
+}
+
+/// Writes [`MEMORY_CSV`] into `out`.
+pub fn write_memory(out: &Path, records: &[MemoryRecord]) -> Result<(), CliError> {
+    write_csv(&out.join(MEMORY_CSV), records)
+}
+
+/// Reads [`MEMORY_CSV`] from `out`; no file means no memory was measured.
+pub fn read_memory(out: &Path) -> Result<Vec<MemoryRecord>, CliError> {
+    let path = out.join(MEMORY_CSV);
+    if path.exists() { read_csv(&path) } else { Ok(Vec::new()) }
+}

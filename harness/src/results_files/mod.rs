@@ -1,0 +1,6 @@
+//! The files a run leaves in the results folder, by name and row type: written by `bench` and
+//! `reproduce`, read by `report`, so neither side imports the other.
+
+pub mod bench;
+pub mod vatti_table3;
+pub mod wang_table4;
