@@ -423,7 +423,7 @@ fn rounded_by(p: &Polygons, units: i32) -> Polygons {
     let step = |v: f64, k: usize| {
         let mut v = v;
         for _ in 0..units {
-            v = if k % 2 == 0 { v.next_up() } else { v.next_down() };
+            v = if k.is_multiple_of(2) { v.next_up() } else { v.next_down() };
         }
         v
     };
