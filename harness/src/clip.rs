@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use clip_core::{BoolOp, FillRule, Operand, validate_polygons, validate_segments};
 
 use crate::cli_error::{CliError, InputError};
+use crate::console;
 use crate::read::{read_polygons, read_shapes};
 use crate::registry::{Registry, unknown_clipper};
 use crate::write::{OutputFormat, line_result, polygon_result, write_file};
@@ -64,10 +65,7 @@ pub fn run(args: &ClipArgs, registry: &Registry) -> Result<(), CliError> {
     };
     match &args.out {
         Some(path) => write_file(path, &text),
-        None => {
-            print!("{text}");
-            Ok(())
-        }
+        None => console::print(&text),
     }
 }
 

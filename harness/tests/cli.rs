@@ -1,8 +1,9 @@
 //! The clipbench binary end to end: `clip` on files, bad input, `verify` and its JSON summary,
 //! determinism across thread counts, and `--replay`.
 
+use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Command, Output, Stdio};
 use std::str::FromStr;
 
 fn clipbench(args: &[&str]) -> Output {
@@ -96,6 +97,53 @@ fn clip_reads_geojson_and_clips_line_strings_with_geo() {
     let o = clipbench(&["clip", "--clipper", "clipper2", &lines, &window]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("line clippers:") && stderr(&o).contains("geo"), "{}", stderr(&o));
+}
+
+/// A polygon of `n` vertices on a circle of radius 100: clipped by a larger square it comes back
+/// whole, so the result printed is far larger than a pipe's buffer.
+fn circle_wkt(n: usize) -> String {
+    let points: Vec<String> = (0..=n)
+        .map(|i| {
+            let a = std::f64::consts::TAU * (i % n) as f64 / n as f64;
+            format!("{} {}", 100.0 * a.cos(), 100.0 * a.sin())
+        })
+        .collect();
+    format!("POLYGON(({}))", points.join(","))
+}
+
+#[test]
+fn stdout_closed_early_ends_quietly_with_exit_0() {
+    let dir = scratch("closed-pipe");
+    let subject = write(&dir, "circle.wkt", &circle_wkt(5000));
+    let clip = write(&dir, "square.wkt", "POLYGON((-200 -200,200 -200,200 200,-200 200,-200 -200))");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_clipbench"))
+        .args(["clip", "--clipper", "geo", &subject, &clip])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the clipbench binary runs");
+    // Like `| head -c 10`: read a little, then close the pipe while clipbench is still writing.
+    let mut start = [0u8; 10];
+    child.stdout.take().unwrap().read_exact(&mut start).unwrap();
+    assert_eq!(&start, b"MULTIPOLYG");
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stderr(&o), "", "a reader that stops early is not an error");
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn stdout_that_cannot_be_written_is_an_error_exit_not_a_panic() {
+    let dir = scratch("full");
+    let square = write(&dir, "square.wkt", "POLYGON((0 0,1 0,1 1,0 1,0 0))");
+    let o = Command::new(env!("CARGO_BIN_EXE_clipbench"))
+        .args(["clip", "--clipper", "geo", &square, &square])
+        .stdout(std::fs::File::create("/dev/full").unwrap())
+        .output()
+        .expect("the clipbench binary runs");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert_eq!(err.trim_end(), "clipbench: cannot write to standard output: No space left on device (os error 28)");
 }
 
 #[test]

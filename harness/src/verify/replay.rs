@@ -9,6 +9,7 @@ use super::recheck::{Target, line_failure, polygon_failure};
 use super::record::CaseFile;
 use crate::checks::Check;
 use crate::cli_error::{CliError, InputError};
+use crate::console;
 use crate::read::{read_polygons, read_segments};
 use crate::registry::{Registry, unknown_clipper};
 
@@ -60,11 +61,11 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
     );
     match failure {
         Some(message) => {
-            println!("still fails: {what}: {message}");
+            console::print_line(format_args!("still fails: {what}: {message}"))?;
             Ok(ExitCode::FAILURE)
         }
         None => {
-            println!("passes now: {what}");
+            console::print_line(format_args!("passes now: {what}"))?;
             Ok(ExitCode::SUCCESS)
         }
     }
