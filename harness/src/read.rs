@@ -1,5 +1,8 @@
 //! Reads WKT and GeoJSON files into polygon sets (every ring kept, orientation kept) and segments.
 
+mod geojson_checks;
+
+use std::fmt;
 use std::path::Path;
 use std::str::FromStr;
 
@@ -21,6 +24,40 @@ impl Shapes {
     /// The rings as one polygon operand.
     pub fn polygons(&self) -> Polygons {
         Polygons::new(self.rings.clone())
+    }
+}
+
+/// Where something is in its file, for messages: `feature 2, polygon 0, ring 1` (every index
+/// counts from 0); nothing for the file's one geometry.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Place(String);
+
+impl Place {
+    /// The part `part` of what is here: `feature 2` then `ring 1` is `feature 2, ring 1`.
+    pub fn then(&self, part: impl fmt::Display) -> Place {
+        if self.0.is_empty() { Place(part.to_string()) } else { Place(format!("{}, {part}", self.0)) }
+    }
+}
+
+impl fmt::Display for Place {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(if self.0.is_empty() { "the geometry" } else { &self.0 })
+    }
+}
+
+/// A geometry and where it is in its file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Placed {
+    /// Where: `feature 2` in a FeatureCollection, nothing for a file's one geometry.
+    pub place: Place,
+    /// The geometry.
+    pub geometry: Geometry<f64>,
+}
+
+impl Placed {
+    /// A geometry that is the whole of what is read.
+    pub fn whole(geometry: Geometry<f64>) -> Placed {
+        Placed { place: Place::default(), geometry }
     }
 }
 
@@ -59,27 +96,46 @@ fn is_geojson(path: &Path) -> bool {
 }
 
 /// Parses WKT text into a geometry.
-pub fn parse_wkt(text: &str) -> Result<Vec<Geometry<f64>>, String> {
+pub fn parse_wkt(text: &str) -> Result<Vec<Placed>, String> {
     let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
     let geometry = Geometry::try_from(wkt).map_err(|e| format!("unusable WKT: {e}"))?;
-    Ok(vec![geometry])
+    Ok(vec![Placed::whole(geometry)])
 }
 
-fn parse_geojson(text: &str) -> Result<Vec<Geometry<f64>>, String> {
+/// Parses GeoJSON text into its geometries: a FeatureCollection's one per feature with a
+/// geometry (a feature whose geometry is null holds nothing), else the one.
+fn parse_geojson(text: &str) -> Result<Vec<Placed>, String> {
     let json = geojson::GeoJson::from_str(text).map_err(|e| format!("not valid GeoJSON: {e}"))?;
-    let collection = geo::GeometryCollection::<f64>::try_from(&json).map_err(|e| format!("unusable GeoJSON: {e}"))?;
-    Ok(collection.0)
+    let found: Vec<(Place, Option<&geojson::Geometry>)> = match &json {
+        geojson::GeoJson::FeatureCollection(fc) => fc
+            .features
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (Place::default().then(format_args!("feature {i}")), f.geometry.as_ref()))
+            .collect(),
+        geojson::GeoJson::Feature(f) => vec![(Place::default(), f.geometry.as_ref())],
+        geojson::GeoJson::Geometry(g) => vec![(Place::default(), Some(g))],
+    };
+    let mut geometries = Vec::new();
+    for (place, g) in found {
+        let Some(g) = g else { continue };
+        // The conversion indexes positions unchecked: a position `[0]` would panic in it.
+        geojson_checks::check_geometry(&g.value, &place)?;
+        let geometry = Geometry::try_from(&g.value).map_err(|e| format!("{place}: unusable GeoJSON: {e}"))?;
+        geometries.push(Placed { place, geometry });
+    }
+    Ok(geometries)
 }
 
 /// The rings and segments of some geometries, in order.
-pub fn shapes_of(geometries: &[Geometry<f64>]) -> Result<Shapes, String> {
+pub fn shapes_of(geometries: &[Placed]) -> Result<Shapes, String> {
     let mut shapes = Shapes::default();
-    geometries.iter().try_for_each(|g| collect(g, &mut shapes))?;
+    geometries.iter().try_for_each(|g| collect(&g.geometry, &g.place, &mut shapes))?;
     Ok(shapes)
 }
 
 /// Adds a geometry's rings and segments; points are refused (they have no area and no length).
-fn collect(g: &Geometry<f64>, shapes: &mut Shapes) -> Result<(), String> {
+fn collect(g: &Geometry<f64>, place: &Place, shapes: &mut Shapes) -> Result<(), String> {
     match g {
         Geometry::Polygon(p) => shapes.rings.extend(Polygons::from(p).rings),
         Geometry::MultiPolygon(mp) => shapes.rings.extend(Polygons::from(mp).rings),
@@ -90,9 +146,11 @@ fn collect(g: &Geometry<f64>, shapes: &mut Shapes) -> Result<(), String> {
             shapes.segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from))
         }
         Geometry::Line(l) => shapes.segments.push(Segment::from(*l)),
-        Geometry::GeometryCollection(c) => c.0.iter().try_for_each(|g| collect(g, shapes))?,
+        Geometry::GeometryCollection(c) => {
+            c.0.iter().enumerate().try_for_each(|(i, g)| collect(g, &place.then(format_args!("member {i}")), shapes))?
+        }
         Geometry::Point(_) | Geometry::MultiPoint(_) => {
-            return Err("it holds points; expected polygons or line strings".into());
+            return Err(format!("{place} holds points: expected polygons or line strings"));
         }
     }
     Ok(())
@@ -106,7 +164,7 @@ mod tests {
     fn wkt_rings_keep_their_orientation_and_order() {
         let g = parse_wkt("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap();
         let mut shapes = Shapes::default();
-        collect(&g[0], &mut shapes).unwrap();
+        collect(&g[0].geometry, &Place::default(), &mut shapes).unwrap();
         assert_eq!(shapes.rings.len(), 2);
         assert!(shapes.rings[0].signed_area() < 0.0, "clockwise ring read as clockwise");
         assert!(shapes.rings[1].signed_area() > 0.0);
@@ -120,7 +178,7 @@ mod tests {
             {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2],[3,0]]}}]}"#;
         let mut shapes = Shapes::default();
         for g in parse_geojson(text).unwrap() {
-            collect(&g, &mut shapes).unwrap();
+            collect(&g.geometry, &g.place, &mut shapes).unwrap();
         }
         assert_eq!(shapes.rings.len(), 1);
         assert_eq!(shapes.segments.len(), 2);
@@ -132,6 +190,6 @@ mod tests {
         assert!(parse_wkt("").is_err());
         assert!(parse_geojson("{\"type\": \"Polygon\"").is_err());
         let mut shapes = Shapes::default();
-        assert!(collect(&parse_wkt("POINT(1 2)").unwrap()[0], &mut shapes).is_err());
+        assert!(collect(&parse_wkt("POINT(1 2)").unwrap()[0].geometry, &Place::default(), &mut shapes).is_err());
     }
 }

@@ -167,6 +167,37 @@ fn broken_or_missing_files_exit_2_with_a_one_line_message_naming_the_file() {
     }
 }
 
+/// Runs `clip` on `subject` against a unit square and returns the output; the square is `clip.wkt` in `dir`.
+fn clip_on(dir: &Path, subject: &str) -> Output {
+    let square = write(dir, "clip.wkt", "POLYGON((0 0,1 0,1 1,0 1,0 0))");
+    clipbench(&["clip", "--clipper", "geo", subject, &square])
+}
+
+/// Exit 2 and one line on standard error, which says `problem`.
+fn assert_input_error(o: &Output, problem: &str) {
+    assert_eq!(o.status.code(), Some(2), "{}{}", stdout(o), stderr(o));
+    let err = stderr(o);
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains(problem), "expected '{problem}' in: {err}");
+}
+
+#[test]
+fn clip_with_a_geojson_position_of_one_number_exits_2_naming_it() {
+    let dir = scratch("geojson-position");
+    let subject = write(
+        &dir,
+        "subject.geojson",
+        r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,0]]]}},
+            {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1],[1,1],[0,0]]]}}]}"#,
+    );
+    let o = clip_on(&dir, &subject);
+    assert_input_error(
+        &o,
+        "subject.geojson: feature 1, ring 0, position 1 is [1]: a position needs two numbers, x and y",
+    );
+}
+
 #[test]
 fn unknown_names_list_the_valid_ones() {
     let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);

@@ -1,0 +1,86 @@
+//! Checks of GeoJSON geometries that must come before the geojson crate's conversion to geo
+//! types: it indexes a position's x and y without looking, so a position `[0]` panics there.
+
+use geojson::{GeometryValue, Position};
+
+use super::Place;
+
+/// Checks every position of a geometry at `place`: two numbers or more, all finite.
+pub fn check_geometry(value: &GeometryValue, place: &Place) -> Result<(), String> {
+    let numbered = |part: &str, i: usize| place.then(format_args!("{part} {i}"));
+    match value {
+        GeometryValue::Point { coordinates } => check_position(coordinates, place),
+        GeometryValue::MultiPoint { coordinates } | GeometryValue::LineString { coordinates } => {
+            check_positions(coordinates, place)
+        }
+        GeometryValue::MultiLineString { coordinates } => {
+            coordinates.iter().enumerate().try_for_each(|(i, line)| check_positions(line, &numbered("line string", i)))
+        }
+        GeometryValue::Polygon { coordinates } => check_rings(coordinates, place),
+        GeometryValue::MultiPolygon { coordinates } => {
+            coordinates.iter().enumerate().try_for_each(|(i, rings)| check_rings(rings, &numbered("polygon", i)))
+        }
+        GeometryValue::GeometryCollection { geometries } => {
+            geometries.iter().enumerate().try_for_each(|(i, g)| check_geometry(&g.value, &numbered("member", i)))
+        }
+    }
+}
+
+fn check_rings(rings: &[Vec<Position>], place: &Place) -> Result<(), String> {
+    rings.iter().enumerate().try_for_each(|(i, ring)| check_positions(ring, &place.then(format_args!("ring {i}"))))
+}
+
+fn check_positions(positions: &[Position], place: &Place) -> Result<(), String> {
+    positions.iter().enumerate().try_for_each(|(i, p)| check_position(p, &place.then(format_args!("position {i}"))))
+}
+
+fn check_position(position: &Position, place: &Place) -> Result<(), String> {
+    let numbers = position.as_slice();
+    if numbers.len() < 2 {
+        return Err(format!("{place} is {}: a position needs two numbers, x and y", show(numbers)));
+    }
+    if numbers.iter().any(|v| !v.is_finite()) {
+        return Err(format!("{place} is {}: its numbers must be finite", show(numbers)));
+    }
+    Ok(())
+}
+
+/// A position as it is written in GeoJSON: `[1, 2.5]`.
+fn show(numbers: &[f64]) -> String {
+    let numbers: Vec<String> = numbers.iter().map(f64::to_string).collect();
+    format!("[{}]", numbers.join(", "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Checks a geometry read the way `read` reads it (`Geometry`'s own parser refuses short
+    /// positions, `GeoJson`'s does not).
+    fn check(json: &str) -> Result<(), String> {
+        let Ok(geojson::GeoJson::Geometry(g)) = json.parse() else { panic!("not a GeoJSON geometry: {json}") };
+        check_geometry(&g.value, &Place::default().then("feature 3"))
+    }
+
+    #[test]
+    fn geojson_position_of_one_number_is_an_error() {
+        let problem = check(r#"{"type":"Polygon","coordinates":[[[0,0],[1,0],[0],[0,0]]]}"#).unwrap_err();
+        assert_eq!(problem, "feature 3, ring 0, position 2 is [0]: a position needs two numbers, x and y");
+        let problem = check(r#"{"type":"MultiLineString","coordinates":[[[0,0],[1,1]],[[2,2],[]]]}"#).unwrap_err();
+        assert_eq!(problem, "feature 3, line string 1, position 1 is []: a position needs two numbers, x and y");
+        // Inside a collection the parser refuses it itself; a value built in code gets here.
+        let point = geojson::Geometry::new(GeometryValue::Point { coordinates: vec![7.0].into() });
+        let collection = GeometryValue::GeometryCollection { geometries: vec![point] };
+        let problem = check_geometry(&collection, &Place::default()).unwrap_err();
+        assert_eq!(problem, "member 0 is [7]: a position needs two numbers, x and y");
+        assert!(check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1,5],[0,0]]]]}"#).is_ok());
+    }
+
+    #[test]
+    fn geojson_position_that_is_not_finite_is_an_error() {
+        // JSON has no NaN or infinity, but a GeoJSON value built in code can hold them.
+        let value = GeometryValue::LineString { coordinates: vec![vec![0.0, 0.0].into(), vec![f64::NAN, 1.0].into()] };
+        let problem = check_geometry(&value, &Place::default()).unwrap_err();
+        assert_eq!(problem, "position 1 is [NaN, 1]: its numbers must be finite");
+    }
+}
