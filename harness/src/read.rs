@@ -1,6 +1,7 @@
 //! Reads WKT and GeoJSON files into polygon sets (every ring kept, orientation kept) and segments.
 
 mod geojson_checks;
+mod wkt_text;
 
 use std::fmt;
 use std::path::Path;
@@ -97,6 +98,7 @@ fn is_geojson(path: &Path) -> bool {
 
 /// Parses WKT text into a geometry.
 pub fn parse_wkt(text: &str) -> Result<Vec<Placed>, String> {
+    wkt_text::check(text)?;
     let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
     let geometry = Geometry::try_from(wkt).map_err(|e| format!("unusable WKT: {e}"))?;
     Ok(vec![Placed::whole(geometry)])
@@ -105,7 +107,13 @@ pub fn parse_wkt(text: &str) -> Result<Vec<Placed>, String> {
 /// Parses GeoJSON text into its geometries: a FeatureCollection's one per feature with a
 /// geometry (a feature whose geometry is null holds nothing), else the one.
 fn parse_geojson(text: &str) -> Result<Vec<Placed>, String> {
-    let json = geojson::GeoJson::from_str(text).map_err(|e| format!("not valid GeoJSON: {e}"))?;
+    let json = geojson::GeoJson::from_str(text).map_err(|e| match e.to_string() {
+        // serde_json stops at 128 levels rather than overflow the stack: say what the limit is.
+        e if e.contains("recursion limit exceeded") => {
+            format!("not valid GeoJSON: nested deeper than 128 levels ({e})")
+        }
+        e => format!("not valid GeoJSON: {e}"),
+    })?;
     let found: Vec<(Place, Option<&geojson::Geometry>)> = match &json {
         geojson::GeoJson::FeatureCollection(fc) => fc
             .features

@@ -199,6 +199,33 @@ fn clip_with_a_geojson_position_of_one_number_exits_2_naming_it() {
 }
 
 #[test]
+fn wkt_nested_thousands_deep_exits_2_instead_of_overflowing_the_stack() {
+    let dir = scratch("wkt-deep");
+    let nested = |n: usize| format!("{}POLYGON((0 0,1 0,1 1,0 0)){}", "GEOMETRYCOLLECTION(".repeat(n), ")".repeat(n));
+    let deep = write(&dir, "deep.wkt", &nested(8000));
+    assert_input_error(&clip_on(&dir, &deep), "deep.wkt: parentheses nested deeper than 256 levels (line 1, column");
+    // At the limit (254 collections around a polygon's 2 levels) it still reads, stack and all.
+    let at_limit = write(&dir, "at-limit.wkt", &nested(254));
+    let o = clip_on(&dir, &at_limit);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!((wkt_area(&stdout(&o)) - 0.5).abs() < 1e-9, "{}", stdout(&o));
+    assert_input_error(&clip_on(&dir, &write(&dir, "over.wkt", &nested(255))), "nested deeper than 256 levels");
+}
+
+#[test]
+fn geojson_nested_thousands_deep_exits_2_at_serde_json_s_limit() {
+    let dir = scratch("geojson-deep");
+    let n = 10_000;
+    let text = format!(
+        "{}{{\"type\":\"Point\",\"coordinates\":[0,0]}}{}",
+        r#"{"type":"GeometryCollection","geometries":["#.repeat(n),
+        "]}".repeat(n)
+    );
+    let deep = write(&dir, "deep.geojson", &text);
+    assert_input_error(&clip_on(&dir, &deep), "deep.geojson: not valid GeoJSON: nested deeper than 128 levels");
+}
+
+#[test]
 fn unknown_names_list_the_valid_ones() {
     let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);
     assert_eq!(o.status.code(), Some(2));

@@ -1,0 +1,105 @@
+//! Checks of WKT text before the wkt crate parses it. Its parser calls itself once per level of
+//! parentheses, so a GEOMETRYCOLLECTION nested some thousands deep overflows the stack (an abort,
+//! not an error): the nesting is bounded here first.
+
+/// The deepest nesting of parentheses read: a MULTIPOLYGON's coordinates are 3 deep and each
+/// GEOMETRYCOLLECTION around it adds one, so this leaves room for any real file while staying
+/// far from the depth (some thousands) at which the parser's recursion overflows the stack.
+pub const MAX_DEPTH: usize = 256;
+
+/// A token of WKT text (a parenthesis, a comma, or a word or number) and where it starts.
+struct Token<'a> {
+    text: &'a str,
+    line: usize,
+    column: usize,
+}
+
+/// Checks `text` for what the wkt crate would crash on.
+pub fn check(text: &str) -> Result<(), String> {
+    let mut depth = 0usize;
+    for token in tokens(text) {
+        match token.text {
+            "(" => {
+                depth += 1;
+                if depth > MAX_DEPTH {
+                    return Err(format!(
+                        "parentheses nested deeper than {MAX_DEPTH} levels (line {}, column {})",
+                        token.line, token.column
+                    ));
+                }
+            }
+            ")" => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// The tokens of `text` as the wkt crate splits it: at spaces, tabs and line ends, and around `(`,
+/// `)` and `,`.
+fn tokens(text: &str) -> impl Iterator<Item = Token<'_>> {
+    let mut chars = text.char_indices().peekable();
+    // Where the next character is; counted as we go (files of 10^6 vertices are one line).
+    let (mut line, mut column) = (1, 1);
+    let is_mark = |c: char| matches!(c, '(' | ')' | ',');
+    let is_space = |c: char| matches!(c, ' ' | '\n' | '\r' | '\t');
+    std::iter::from_fn(move || {
+        loop {
+            let (start, c) = chars.next()?;
+            let at = (line, column);
+            (line, column) = if c == '\n' { (line + 1, 1) } else { (line, column + 1) };
+            if is_space(c) {
+                continue;
+            }
+            let mut end = start + c.len_utf8();
+            if !is_mark(c) {
+                while let Some(&(i, next)) = chars.peek() {
+                    if is_space(next) || is_mark(next) {
+                        break;
+                    }
+                    (end, column) = (i + next.len_utf8(), column + 1);
+                    chars.next();
+                }
+            }
+            return Some(Token { text: &text[start..end], line: at.0, column: at.1 });
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wkt_nested_deeper_than_the_limit_is_an_error_not_a_stack_overflow() {
+        let nested = |n: usize| format!("{}POINT(1 2){}", "GEOMETRYCOLLECTION(".repeat(n), ")".repeat(n));
+        assert!(check(&nested(MAX_DEPTH - 1)).is_ok());
+        let problem = check(&nested(8000)).unwrap_err();
+        // The 257th `(`, each the 19th character of `GEOMETRYCOLLECTION(`.
+        assert_eq!(problem, "parentheses nested deeper than 256 levels (line 1, column 4883)");
+    }
+
+    #[test]
+    fn tokens_split_like_the_wkt_crate_and_know_their_line_and_column() {
+        let found: Vec<(&str, usize, usize)> =
+            tokens("POLYGON Z((0 0 1,\n  1e3 -2 NaN))").map(|t| (t.text, t.line, t.column)).collect();
+        assert_eq!(
+            found,
+            [
+                ("POLYGON", 1, 1),
+                ("Z", 1, 9),
+                ("(", 1, 10),
+                ("(", 1, 11),
+                ("0", 1, 12),
+                ("0", 1, 14),
+                ("1", 1, 16),
+                (",", 1, 17),
+                ("1e3", 2, 3),
+                ("-2", 2, 7),
+                ("NaN", 2, 10),
+                (")", 2, 13),
+                (")", 2, 14),
+            ]
+        );
+    }
+}
