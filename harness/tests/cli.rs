@@ -226,6 +226,13 @@ fn geojson_nested_thousands_deep_exits_2_at_serde_json_s_limit() {
 }
 
 #[test]
+fn wkt_nan_coordinate_exits_2_naming_the_number_and_where_it_is() {
+    let dir = scratch("wkt-nan");
+    let subject = write(&dir, "nan.wkt", "MULTIPOLYGON(((0 0,4 0,4 4,0 0)),\n((5 5,NaN 5,6 6,5 5)))");
+    assert_input_error(&clip_on(&dir, &subject), "nan.wkt: coordinate 'NaN' (line 2, column 7) is not finite");
+}
+
+#[test]
 fn unknown_names_list_the_valid_ones() {
     let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);
     assert_eq!(o.status.code(), Some(2));

@@ -1,6 +1,8 @@
 //! Checks of WKT text before the wkt crate parses it. Its parser calls itself once per level of
 //! parentheses, so a GEOMETRYCOLLECTION nested some thousands deep overflows the stack (an abort,
-//! not an error): the nesting is bounded here first.
+//! not an error): the nesting is bounded here first. And it reads `NaN` or `inf` as a word and
+//! then reports a missing parenthesis: every coordinate is checked here to be a finite number,
+//! and the error names it and where it is.
 
 /// The deepest nesting of parentheses read: a MULTIPOLYGON's coordinates are 3 deep and each
 /// GEOMETRYCOLLECTION around it adds one, so this leaves room for any real file while staying
@@ -14,7 +16,14 @@ struct Token<'a> {
     column: usize,
 }
 
-/// Checks `text` for what the wkt crate would crash on.
+impl Token<'_> {
+    /// Where the token is: `line 2, column 14`.
+    fn at(&self) -> String {
+        format!("line {}, column {}", self.line, self.column)
+    }
+}
+
+/// Checks `text` for what the wkt crate would crash on or misreport.
 pub fn check(text: &str) -> Result<(), String> {
     let mut depth = 0usize;
     for token in tokens(text) {
@@ -22,17 +31,28 @@ pub fn check(text: &str) -> Result<(), String> {
             "(" => {
                 depth += 1;
                 if depth > MAX_DEPTH {
-                    return Err(format!(
-                        "parentheses nested deeper than {MAX_DEPTH} levels (line {}, column {})",
-                        token.line, token.column
-                    ));
+                    return Err(format!("parentheses nested deeper than {MAX_DEPTH} levels ({})", token.at()));
                 }
             }
             ")" => depth = depth.saturating_sub(1),
+            "," => {}
+            word if depth > 0 && is_number_like(word) => match word.parse::<f64>() {
+                Ok(v) if v.is_finite() => {}
+                Ok(_) => return Err(format!("coordinate '{word}' ({}) is not finite", token.at())),
+                Err(_) => return Err(format!("coordinate '{word}' ({}) is not a number", token.at())),
+            },
             _ => {}
         }
     }
     Ok(())
+}
+
+/// A word meant as a number: one the wkt crate reads as a number (it starts with a digit, `.`,
+/// `+` or `-`) or a name of a value that is not finite (`NaN`, `inf`, `infinity`, signed or not).
+fn is_number_like(word: &str) -> bool {
+    let unsigned = word.trim_start_matches(['+', '-']);
+    word.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '.' | '+' | '-'))
+        || ["nan", "inf", "infinity"].iter().any(|name| unsigned.eq_ignore_ascii_case(name))
 }
 
 /// The tokens of `text` as the wkt crate splits it: at spaces, tabs and line ends, and around `(`,
@@ -77,6 +97,25 @@ mod tests {
         let problem = check(&nested(8000)).unwrap_err();
         // The 257th `(`, each the 19th character of `GEOMETRYCOLLECTION(`.
         assert_eq!(problem, "parentheses nested deeper than 256 levels (line 1, column 4883)");
+    }
+
+    #[test]
+    fn wkt_nan_coordinate_is_named_with_its_line_and_column() {
+        assert_eq!(
+            check("POLYGON((0 0,NaN 0,1 1,0 0))").unwrap_err(),
+            "coordinate 'NaN' (line 1, column 14) is not finite"
+        );
+        assert_eq!(
+            check("POLYGON((0 0,\n1 -inf,1 1,0 0))").unwrap_err(),
+            "coordinate '-inf' (line 2, column 3) is not finite"
+        );
+        assert_eq!(
+            check("LINESTRING(0 0,1e999 1)").unwrap_err(),
+            "coordinate '1e999' (line 1, column 16) is not finite"
+        );
+        assert_eq!(check("LINESTRING(0 0,1x 1)").unwrap_err(), "coordinate '1x' (line 1, column 16) is not a number");
+        // Words that are not numbers (types, Z, EMPTY) are the parser's to judge.
+        assert!(check("GEOMETRYCOLLECTION(POLYGON Z((0 0 1,1 0 1,1 1 1,0 0 1)),POINT EMPTY)").is_ok());
     }
 
     #[test]
