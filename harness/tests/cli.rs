@@ -233,6 +233,16 @@ fn wkt_nan_coordinate_exits_2_naming_the_number_and_where_it_is() {
 }
 
 #[test]
+fn wkt_text_after_the_geometry_exits_2_instead_of_being_ignored() {
+    let dir = scratch("wkt-trailing");
+    let subject = write(&dir, "two.wkt", "POLYGON((0 0,1 0,1 1,0 0))\nPOLYGON((5 5,6 5,6 6,5 5))\n");
+    assert_input_error(
+        &clip_on(&dir, &subject),
+        "two.wkt: text after the end of the geometry (line 2, column 1): 'POLYGON'",
+    );
+}
+
+#[test]
 fn unknown_names_list_the_valid_ones() {
     let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);
     assert_eq!(o.status.code(), Some(2));

@@ -2,7 +2,8 @@
 //! parentheses, so a GEOMETRYCOLLECTION nested some thousands deep overflows the stack (an abort,
 //! not an error): the nesting is bounded here first. And it reads `NaN` or `inf` as a word and
 //! then reports a missing parenthesis: every coordinate is checked here to be a finite number,
-//! and the error names it and where it is.
+//! and the error names it and where it is. Nor does it look past the end of the first geometry:
+//! text after it is refused here rather than ignored.
 
 /// The deepest nesting of parentheses read: a MULTIPOLYGON's coordinates are 3 deep and each
 /// GEOMETRYCOLLECTION around it adds one, so this leaves room for any real file while staying
@@ -26,7 +27,17 @@ impl Token<'_> {
 /// Checks `text` for what the wkt crate would crash on or misreport.
 pub fn check(text: &str) -> Result<(), String> {
     let mut depth = 0usize;
+    // Set when the geometry's outer parentheses close, or at `EMPTY` outside them.
+    let mut ended = false;
     for token in tokens(text) {
+        if ended {
+            return Err(format!(
+                "text after the end of the geometry ({}): '{}' (a WKT file holds one geometry; put several in a \
+                 GEOMETRYCOLLECTION)",
+                token.at(),
+                token.text
+            ));
+        }
         match token.text {
             "(" => {
                 depth += 1;
@@ -34,7 +45,11 @@ pub fn check(text: &str) -> Result<(), String> {
                     return Err(format!("parentheses nested deeper than {MAX_DEPTH} levels ({})", token.at()));
                 }
             }
-            ")" => depth = depth.saturating_sub(1),
+            ")" => {
+                depth = depth.saturating_sub(1);
+                ended = depth == 0;
+            }
+            word if depth == 0 && word.eq_ignore_ascii_case("EMPTY") => ended = true,
             "," => {}
             word if depth > 0 && is_number_like(word) => match word.parse::<f64>() {
                 Ok(v) if v.is_finite() => {}
@@ -116,6 +131,29 @@ mod tests {
         assert_eq!(check("LINESTRING(0 0,1x 1)").unwrap_err(), "coordinate '1x' (line 1, column 16) is not a number");
         // Words that are not numbers (types, Z, EMPTY) are the parser's to judge.
         assert!(check("GEOMETRYCOLLECTION(POLYGON Z((0 0 1,1 0 1,1 1 1,0 0 1)),POINT EMPTY)").is_ok());
+    }
+
+    #[test]
+    fn wkt_text_after_the_geometry_is_an_error() {
+        let after = |text| check(text).unwrap_err();
+        assert_eq!(
+            after("POLYGON((0 0,1 0,1 1,0 0)) garbage"),
+            "text after the end of the geometry (line 1, column 28): 'garbage' (a WKT file holds one geometry; \
+             put several in a GEOMETRYCOLLECTION)"
+        );
+        assert!(
+            after("POLYGON((0 0,1 0,1 1,0 0)))")
+                .starts_with("text after the end of the geometry (line 1, column 27): ')'")
+        );
+        assert!(
+            after("POINT(1 2)\nPOINT(3 4)")
+                .starts_with("text after the end of the geometry (line 2, column 1): 'POINT'")
+        );
+        assert!(
+            after("MULTIPOLYGON EMPTY, 5").starts_with("text after the end of the geometry (line 1, column 19): ','")
+        );
+        // White space after the end is fine, and so is EMPTY inside a collection.
+        assert!(check("GEOMETRYCOLLECTION(POINT EMPTY, POLYGON EMPTY)\n\n").is_ok());
     }
 
     #[test]
