@@ -1,6 +1,7 @@
 //! Reads WKT and GeoJSON files into polygon sets (every ring kept, orientation kept) and segments.
 
 mod geojson_checks;
+mod wkt_geometry;
 mod wkt_text;
 
 use std::fmt;
@@ -100,6 +101,7 @@ fn is_geojson(path: &Path) -> bool {
 pub fn parse_wkt(text: &str) -> Result<Vec<Placed>, String> {
     wkt_text::check(text)?;
     let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
+    wkt_geometry::check_rings(&wkt, &Place::default())?;
     let geometry = Geometry::try_from(wkt).map_err(|e| format!("unusable WKT: {e}"))?;
     Ok(vec![Placed::whole(geometry)])
 }

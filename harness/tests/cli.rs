@@ -243,6 +243,21 @@ fn wkt_text_after_the_geometry_exits_2_instead_of_being_ignored() {
 }
 
 #[test]
+fn unclosed_ring_exits_2_naming_the_ring_instead_of_being_closed() {
+    let dir = scratch("unclosed");
+    let wkt = write(&dir, "open.wkt", "MULTIPOLYGON(((0 0,4 0,4 4,0 0)),((5 5,6 5,6 6)))");
+    assert_input_error(
+        &clip_on(&dir, &wkt),
+        "open.wkt: polygon 1, ring 0 is not closed: it starts at 5 5 and ends at 6 6 (a WKT ring ends where it starts)",
+    );
+    let geojson = write(&dir, "open.geojson", r#"{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4]]]}"#);
+    assert_input_error(
+        &clip_on(&dir, &geojson),
+        "open.geojson: ring 0 is not closed: it starts at [0, 0] and ends at [4, 4]",
+    );
+}
+
+#[test]
 fn unknown_names_list_the_valid_ones() {
     let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);
     assert_eq!(o.status.code(), Some(2));

@@ -1,11 +1,13 @@
 //! Checks of GeoJSON geometries that must come before the geojson crate's conversion to geo
-//! types: it indexes a position's x and y without looking, so a position `[0]` panics there.
+//! types: it indexes a position's x and y without looking, so a position `[0]` panics there, and
+//! it closes every ring without a word, where GeoJSON requires a ring to end where it starts.
 
 use geojson::{GeometryValue, Position};
 
 use super::Place;
 
-/// Checks every position of a geometry at `place`: two numbers or more, all finite.
+/// Checks every position of a geometry at `place` (two numbers or more, all finite) and that
+/// every ring is closed.
 pub fn check_geometry(value: &GeometryValue, place: &Place) -> Result<(), String> {
     let numbered = |part: &str, i: usize| place.then(format_args!("{part} {i}"));
     match value {
@@ -27,7 +29,21 @@ pub fn check_geometry(value: &GeometryValue, place: &Place) -> Result<(), String
 }
 
 fn check_rings(rings: &[Vec<Position>], place: &Place) -> Result<(), String> {
-    rings.iter().enumerate().try_for_each(|(i, ring)| check_positions(ring, &place.then(format_args!("ring {i}"))))
+    for (i, ring) in rings.iter().enumerate() {
+        let place = place.then(format_args!("ring {i}"));
+        check_positions(ring, &place)?;
+        let (Some(first), Some(last)) = (ring.first(), ring.last()) else {
+            return Err(format!("{place} has no positions: a ring needs four or more, the last the same as the first"));
+        };
+        if first.as_slice()[..2] != last.as_slice()[..2] {
+            return Err(format!(
+                "{place} is not closed: it starts at {} and ends at {} (a GeoJSON ring ends where it starts)",
+                show(first.as_slice()),
+                show(last.as_slice())
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn check_positions(positions: &[Position], place: &Place) -> Result<(), String> {
@@ -74,6 +90,22 @@ mod tests {
         let problem = check_geometry(&collection, &Place::default()).unwrap_err();
         assert_eq!(problem, "member 0 is [7]: a position needs two numbers, x and y");
         assert!(check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1,5],[0,0]]]]}"#).is_ok());
+    }
+
+    #[test]
+    fn geojson_unclosed_or_empty_ring_is_an_error_naming_the_ring() {
+        let problem =
+            check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1],[0,0]]],[[[0,0],[1,0],[1,1]]]]}"#);
+        assert_eq!(
+            problem.unwrap_err(),
+            "feature 3, polygon 1, ring 0 is not closed: it starts at [0, 0] and ends at [1, 1] (a GeoJSON ring ends \
+             where it starts)"
+        );
+        let problem = check(r#"{"type":"Polygon","coordinates":[[]]}"#).unwrap_err();
+        assert!(problem.starts_with("feature 3, ring 0 has no positions"), "{problem}");
+        // A z that differs does not open a ring: only x and y are read.
+        assert!(check(r#"{"type":"Polygon","coordinates":[[[0,0,1],[1,0,1],[1,1,1],[0,0,2]]]}"#).is_ok());
+        assert!(check(r#"{"type":"Polygon","coordinates":[]}"#).is_ok(), "the empty polygon");
     }
 
     #[test]
