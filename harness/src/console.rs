@@ -1,7 +1,7 @@
-//! Results printed on standard output. A reader that stops early (`clipbench clip ... | head`)
-//! closes the pipe: the rest of the output is dropped quietly and the command ends as it would
-//! have (files still written, same exit code). Any other write error (`> /dev/full`) ends the
-//! command with a message instead of a panic.
+//! What the commands print: results on standard output, notes on standard error. A reader that
+//! stops early (`clipbench clip ... | head`) closes the pipe: the rest of the output is dropped
+//! quietly and the command ends as it would have (files still written, same exit code). Any
+//! other write error (`> /dev/full`) ends the command with a message instead of a panic.
 
 use std::fmt;
 use std::io::{self, Write};
@@ -32,4 +32,10 @@ pub fn print(text: &str) -> Result<(), CliError> {
 /// Prints `line` and a newline on standard output.
 pub fn print_line(line: impl fmt::Display) -> Result<(), CliError> {
     print(&format!("{line}\n"))
+}
+
+/// Tells the user on standard error what reading changed (`clipbench: note: ...`); a note that
+/// cannot be written is not worth failing for.
+pub fn note(message: impl fmt::Display) {
+    let _ = writeln!(io::stderr().lock(), "clipbench: note: {message}");
 }

@@ -12,6 +12,7 @@ use clip_core::{Operand, Polygons, Ring, Segment, validate_polygons, validate_se
 use geo::Geometry;
 
 use crate::cli_error::InputError;
+use crate::console;
 
 /// What a file holds: its rings (from polygons) and its segments (from line strings).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -63,13 +64,27 @@ impl Placed {
     }
 }
 
-/// Reads a file: GeoJSON when its name ends in `.geojson` or `.json`, WKT otherwise.
+/// A file's geometries, and what reading them left out.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Parsed {
+    /// The geometries, in file order.
+    pub geometries: Vec<Placed>,
+    /// What the file held that clipping in the plane drops (z, m), one note each.
+    pub dropped: Vec<String>,
+}
+
+/// Reads a file: GeoJSON when its name ends in `.geojson` or `.json`, WKT otherwise. What is
+/// dropped in reading is said on standard error.
 pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
-    let geometries = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
+    let parsed = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
         .map_err(|problem| InputError::new(path, problem))?;
     // An empty geometry (`MULTIPOLYGON EMPTY`) is the empty region, a valid operand.
-    shapes_of(&geometries).map_err(|problem| InputError::new(path, problem))
+    let shapes = shapes_of(&parsed.geometries).map_err(|problem| InputError::new(path, problem))?;
+    for note in &parsed.dropped {
+        console::note(format_args!("{}: {note}", path.display()));
+    }
+    Ok(shapes)
 }
 
 /// Reads a polygon operand and validates it (finite, in range, rings of at least 3 points).
@@ -98,17 +113,18 @@ fn is_geojson(path: &Path) -> bool {
 }
 
 /// Parses WKT text into a geometry.
-pub fn parse_wkt(text: &str) -> Result<Vec<Placed>, String> {
+pub fn parse_wkt(text: &str) -> Result<Parsed, String> {
     wkt_text::check(text)?;
     let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
     wkt_geometry::check_rings(&wkt, &Place::default())?;
+    let dropped = wkt_geometry::dropped(&wkt).into_iter().collect();
     let geometry = Geometry::try_from(wkt).map_err(|e| format!("unusable WKT: {e}"))?;
-    Ok(vec![Placed::whole(geometry)])
+    Ok(Parsed { geometries: vec![Placed::whole(geometry)], dropped })
 }
 
 /// Parses GeoJSON text into its geometries: a FeatureCollection's one per feature with a
 /// geometry (a feature whose geometry is null holds nothing), else the one.
-fn parse_geojson(text: &str) -> Result<Vec<Placed>, String> {
+fn parse_geojson(text: &str) -> Result<Parsed, String> {
     let json = geojson::GeoJson::from_str(text).map_err(|e| match e.to_string() {
         // serde_json stops at 128 levels rather than overflow the stack: say what the limit is.
         e if e.contains("recursion limit exceeded") => {
@@ -126,15 +142,19 @@ fn parse_geojson(text: &str) -> Result<Vec<Placed>, String> {
         geojson::GeoJson::Feature(f) => vec![(Place::default(), f.geometry.as_ref())],
         geojson::GeoJson::Geometry(g) => vec![(Place::default(), Some(g))],
     };
-    let mut geometries = Vec::new();
+    let mut parsed = Parsed::default();
+    let mut beyond_xy = false;
     for (place, g) in found {
         let Some(g) = g else { continue };
         // The conversion indexes positions unchecked: a position `[0]` would panic in it.
-        geojson_checks::check_geometry(&g.value, &place)?;
+        geojson_checks::check_geometry(&g.value, &place, &mut beyond_xy)?;
         let geometry = Geometry::try_from(&g.value).map_err(|e| format!("{place}: unusable GeoJSON: {e}"))?;
-        geometries.push(Placed { place, geometry });
+        parsed.geometries.push(Placed { place, geometry });
     }
-    Ok(geometries)
+    if beyond_xy {
+        parsed.dropped.push("positions' numbers after x and y (z) dropped: clipping is in the plane".into());
+    }
+    Ok(parsed)
 }
 
 /// The rings and segments of some geometries, in order.
@@ -172,7 +192,7 @@ mod tests {
 
     #[test]
     fn wkt_rings_keep_their_orientation_and_order() {
-        let g = parse_wkt("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap();
+        let g = parse_wkt("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap().geometries;
         let mut shapes = Shapes::default();
         collect(&g[0].geometry, &Place::default(), &mut shapes).unwrap();
         assert_eq!(shapes.rings.len(), 2);
@@ -187,7 +207,7 @@ mod tests {
             {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]}},
             {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2],[3,0]]}}]}"#;
         let mut shapes = Shapes::default();
-        for g in parse_geojson(text).unwrap() {
+        for g in parse_geojson(text).unwrap().geometries {
             collect(&g.geometry, &g.place, &mut shapes).unwrap();
         }
         assert_eq!(shapes.rings.len(), 1);
@@ -200,6 +220,8 @@ mod tests {
         assert!(parse_wkt("").is_err());
         assert!(parse_geojson("{\"type\": \"Polygon\"").is_err());
         let mut shapes = Shapes::default();
-        assert!(collect(&parse_wkt("POINT(1 2)").unwrap()[0].geometry, &Place::default(), &mut shapes).is_err());
+        assert!(
+            collect(&parse_wkt("POINT(1 2)").unwrap().geometries[0].geometry, &Place::default(), &mut shapes).is_err()
+        );
     }
 }

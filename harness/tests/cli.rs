@@ -258,6 +258,23 @@ fn unclosed_ring_exits_2_naming_the_ring_instead_of_being_closed() {
 }
 
 #[test]
+fn polygon_z_is_clipped_in_the_plane_with_a_note_on_stderr() {
+    let dir = scratch("polygon-z");
+    let wkt = write(&dir, "z.wkt", "POLYGON Z((0 0 5,2 0 5,2 2 7,0 2 7,0 0 5))");
+    let geojson =
+        write(&dir, "z.geojson", r#"{"type":"Polygon","coordinates":[[[0,0,5],[2,0,5],[2,2,7],[0,2,7],[0,0,5]]]}"#);
+    let m = write(&dir, "m.wkt", "POLYGON M((0 0 5,2 0 5,2 2 7,0 2 7,0 0 5))");
+    for (file, dropped) in
+        [(&wkt, "z coordinates"), (&geojson, "positions' numbers after x and y (z)"), (&m, "m values")]
+    {
+        let o = clip_on(&dir, file);
+        assert!(o.status.success(), "{file}: {}", stderr(&o));
+        assert!((wkt_area(&stdout(&o)) - 1.0).abs() < 1e-9, "{file}: {}", stdout(&o));
+        assert_eq!(stderr(&o), format!("clipbench: note: {file}: {dropped} dropped: clipping is in the plane\n"));
+    }
+}
+
+#[test]
 fn unknown_names_list_the_valid_ones() {
     let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);
     assert_eq!(o.status.code(), Some(2));

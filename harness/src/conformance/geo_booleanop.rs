@@ -107,8 +107,8 @@ fn tcases(path: &Path) -> Result<Vec<SuiteCase>, CliError> {
         .map(|(i, r)| {
             let field = |k: &str| r.get(k).and_then(|v| v.as_str()).ok_or_else(|| format!("record {i} has no '{k}'"));
             let wkt = |k: &str| -> Result<Polygons, String> {
-                let geometries = parse_wkt(field(k)?).map_err(|e| format!("record {i} '{k}': {e}"))?;
-                Ok(shapes_of(&geometries)?.polygons())
+                let parsed = parse_wkt(field(k)?).map_err(|e| format!("record {i} '{k}': {e}"))?;
+                Ok(shapes_of(&parsed.geometries)?.polygons())
             };
             let input = (|| case(&wkt("p1")?, &wkt("p2")?, field("op")?, wkt("expected")?))();
             let op = field("op").unwrap_or("?");

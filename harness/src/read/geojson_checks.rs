@@ -7,31 +7,34 @@ use geojson::{GeometryValue, Position};
 use super::Place;
 
 /// Checks every position of a geometry at `place` (two numbers or more, all finite) and that
-/// every ring is closed.
-pub fn check_geometry(value: &GeometryValue, place: &Place) -> Result<(), String> {
+/// every ring is closed; sets `beyond_xy` when a position has more than x and y (a z).
+pub fn check_geometry(value: &GeometryValue, place: &Place, beyond_xy: &mut bool) -> Result<(), String> {
     let numbered = |part: &str, i: usize| place.then(format_args!("{part} {i}"));
     match value {
-        GeometryValue::Point { coordinates } => check_position(coordinates, place),
+        GeometryValue::Point { coordinates } => check_position(coordinates, place, beyond_xy),
         GeometryValue::MultiPoint { coordinates } | GeometryValue::LineString { coordinates } => {
-            check_positions(coordinates, place)
+            check_positions(coordinates, place, beyond_xy)
         }
-        GeometryValue::MultiLineString { coordinates } => {
-            coordinates.iter().enumerate().try_for_each(|(i, line)| check_positions(line, &numbered("line string", i)))
-        }
-        GeometryValue::Polygon { coordinates } => check_rings(coordinates, place),
-        GeometryValue::MultiPolygon { coordinates } => {
-            coordinates.iter().enumerate().try_for_each(|(i, rings)| check_rings(rings, &numbered("polygon", i)))
-        }
-        GeometryValue::GeometryCollection { geometries } => {
-            geometries.iter().enumerate().try_for_each(|(i, g)| check_geometry(&g.value, &numbered("member", i)))
-        }
+        GeometryValue::MultiLineString { coordinates } => coordinates
+            .iter()
+            .enumerate()
+            .try_for_each(|(i, line)| check_positions(line, &numbered("line string", i), beyond_xy)),
+        GeometryValue::Polygon { coordinates } => check_rings(coordinates, place, beyond_xy),
+        GeometryValue::MultiPolygon { coordinates } => coordinates
+            .iter()
+            .enumerate()
+            .try_for_each(|(i, rings)| check_rings(rings, &numbered("polygon", i), beyond_xy)),
+        GeometryValue::GeometryCollection { geometries } => geometries
+            .iter()
+            .enumerate()
+            .try_for_each(|(i, g)| check_geometry(&g.value, &numbered("member", i), beyond_xy)),
     }
 }
 
-fn check_rings(rings: &[Vec<Position>], place: &Place) -> Result<(), String> {
+fn check_rings(rings: &[Vec<Position>], place: &Place, beyond_xy: &mut bool) -> Result<(), String> {
     for (i, ring) in rings.iter().enumerate() {
         let place = place.then(format_args!("ring {i}"));
-        check_positions(ring, &place)?;
+        check_positions(ring, &place, beyond_xy)?;
         let (Some(first), Some(last)) = (ring.first(), ring.last()) else {
             return Err(format!("{place} has no positions: a ring needs four or more, the last the same as the first"));
         };
@@ -46,11 +49,14 @@ fn check_rings(rings: &[Vec<Position>], place: &Place) -> Result<(), String> {
     Ok(())
 }
 
-fn check_positions(positions: &[Position], place: &Place) -> Result<(), String> {
-    positions.iter().enumerate().try_for_each(|(i, p)| check_position(p, &place.then(format_args!("position {i}"))))
+fn check_positions(positions: &[Position], place: &Place, beyond_xy: &mut bool) -> Result<(), String> {
+    positions
+        .iter()
+        .enumerate()
+        .try_for_each(|(i, p)| check_position(p, &place.then(format_args!("position {i}")), beyond_xy))
 }
 
-fn check_position(position: &Position, place: &Place) -> Result<(), String> {
+fn check_position(position: &Position, place: &Place, beyond_xy: &mut bool) -> Result<(), String> {
     let numbers = position.as_slice();
     if numbers.len() < 2 {
         return Err(format!("{place} is {}: a position needs two numbers, x and y", show(numbers)));
@@ -58,6 +64,7 @@ fn check_position(position: &Position, place: &Place) -> Result<(), String> {
     if numbers.iter().any(|v| !v.is_finite()) {
         return Err(format!("{place} is {}: its numbers must be finite", show(numbers)));
     }
+    *beyond_xy |= numbers.len() > 2;
     Ok(())
 }
 
@@ -73,9 +80,11 @@ mod tests {
 
     /// Checks a geometry read the way `read` reads it (`Geometry`'s own parser refuses short
     /// positions, `GeoJson`'s does not).
-    fn check(json: &str) -> Result<(), String> {
+    /// Whether a position had a z, or the problem.
+    fn check(json: &str) -> Result<bool, String> {
         let Ok(geojson::GeoJson::Geometry(g)) = json.parse() else { panic!("not a GeoJSON geometry: {json}") };
-        check_geometry(&g.value, &Place::default().then("feature 3"))
+        let mut beyond_xy = false;
+        check_geometry(&g.value, &Place::default().then("feature 3"), &mut beyond_xy).map(|()| beyond_xy)
     }
 
     #[test]
@@ -87,9 +96,10 @@ mod tests {
         // Inside a collection the parser refuses it itself; a value built in code gets here.
         let point = geojson::Geometry::new(GeometryValue::Point { coordinates: vec![7.0].into() });
         let collection = GeometryValue::GeometryCollection { geometries: vec![point] };
-        let problem = check_geometry(&collection, &Place::default()).unwrap_err();
+        let problem = check_geometry(&collection, &Place::default(), &mut false).unwrap_err();
         assert_eq!(problem, "member 0 is [7]: a position needs two numbers, x and y");
-        assert!(check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1,5],[0,0]]]]}"#).is_ok());
+        assert_eq!(check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1],[0,0]]]]}"#), Ok(false));
+        assert_eq!(check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1,5],[0,0]]]]}"#), Ok(true), "a z");
     }
 
     #[test]
@@ -104,15 +114,15 @@ mod tests {
         let problem = check(r#"{"type":"Polygon","coordinates":[[]]}"#).unwrap_err();
         assert!(problem.starts_with("feature 3, ring 0 has no positions"), "{problem}");
         // A z that differs does not open a ring: only x and y are read.
-        assert!(check(r#"{"type":"Polygon","coordinates":[[[0,0,1],[1,0,1],[1,1,1],[0,0,2]]]}"#).is_ok());
-        assert!(check(r#"{"type":"Polygon","coordinates":[]}"#).is_ok(), "the empty polygon");
+        assert_eq!(check(r#"{"type":"Polygon","coordinates":[[[0,0,1],[1,0,1],[1,1,1],[0,0,2]]]}"#), Ok(true));
+        assert_eq!(check(r#"{"type":"Polygon","coordinates":[]}"#), Ok(false), "the empty polygon");
     }
 
     #[test]
     fn geojson_position_that_is_not_finite_is_an_error() {
         // JSON has no NaN or infinity, but a GeoJSON value built in code can hold them.
         let value = GeometryValue::LineString { coordinates: vec![vec![0.0, 0.0].into(), vec![f64::NAN, 1.0].into()] };
-        let problem = check_geometry(&value, &Place::default()).unwrap_err();
+        let problem = check_geometry(&value, &Place::default(), &mut false).unwrap_err();
         assert_eq!(problem, "position 1 is [NaN, 1]: its numbers must be finite");
     }
 }

@@ -1,9 +1,10 @@
 //! Checks of a parsed WKT geometry before its conversion to geo types, which closes every ring
-//! without a word: WKT requires a ring to end where it starts, and one that does not is refused
-//! rather than closed by a guess at what was meant.
+//! and drops z and m values without a word. WKT requires a ring to end where it starts: one that
+//! does not is refused rather than closed by a guess at what was meant. Z and m are dropped as
+//! before (clipping is in the plane), but said.
 
 use wkt::Wkt;
-use wkt::types::{Coord, Polygon};
+use wkt::types::{Coord, Dimension, Polygon};
 
 use super::Place;
 
@@ -40,6 +41,28 @@ fn check_polygon(polygon: &Polygon<f64>, place: &Place) -> Result<(), String> {
     Ok(())
 }
 
+/// What the conversion drops from `wkt` (`POLYGON Z`, `POLYGON M`, `POLYGON ZM`, anywhere in
+/// a collection), as a note; `None` when it is all x and y.
+pub fn dropped(wkt: &Wkt<f64>) -> Option<String> {
+    let (mut z, mut m) = (false, false);
+    let mut pending = vec![wkt];
+    while let Some(g) = pending.pop() {
+        let dimension = g.dimension();
+        z |= matches!(dimension, Dimension::XYZ | Dimension::XYZM);
+        m |= matches!(dimension, Dimension::XYM | Dimension::XYZM);
+        if let Wkt::GeometryCollection(gc) = g {
+            pending.extend(gc.geometries());
+        }
+    }
+    let what = match (z, m) {
+        (false, false) => return None,
+        (true, false) => "z coordinates",
+        (false, true) => "m values",
+        (true, true) => "z coordinates and m values",
+    };
+    Some(format!("{what} dropped: clipping is in the plane"))
+}
+
 /// A point as WKT writes it: `1 2.5`.
 fn show(c: &Coord<f64>) -> String {
     format!("{} {}", c.x, c.y)
@@ -69,5 +92,20 @@ mod tests {
         );
         assert!(check("MULTIPOLYGON(((0 0,1 0,1 1,0 0)),EMPTY)").is_ok());
         assert!(check("LINESTRING(0 0,1 0,1 1)").is_ok(), "line strings need not close");
+    }
+
+    #[test]
+    fn wkt_z_and_m_are_dropped_with_a_note() {
+        let note = |text| dropped(&Wkt::from_str(text).unwrap());
+        assert_eq!(note("POLYGON((0 0,1 0,1 1,0 0))"), None);
+        assert_eq!(
+            note("POLYGON Z((0 0 5,1 0 5,1 1 5,0 0 5))").unwrap(),
+            "z coordinates dropped: clipping is in the plane"
+        );
+        assert_eq!(note("POLYGONM((0 0 5,1 0 5,1 1 5,0 0 5))").unwrap(), "m values dropped: clipping is in the plane");
+        assert_eq!(
+            note("GEOMETRYCOLLECTION(POLYGON((0 0,1 0,1 1,0 0)),LINESTRING ZM(0 0 1 2,1 1 1 2))").unwrap(),
+            "z coordinates and m values dropped: clipping is in the plane"
+        );
     }
 }
