@@ -13,7 +13,7 @@ use crate::write::{OutputFormat, line_result, polygon_result, write_file};
 /// How `clip` reads its files, for `clipbench clip --help`.
 const READING: &str = "\
 Files: WKT, one geometry per file (several go in a GEOMETRYCOLLECTION), or GeoJSON (a geometry, a \
-Feature or a FeatureCollection). Rings must be closed (the last point the first); coordinates must \
+Feature or a FeatureCollection), holding polygons or line strings, not both. Rings must be closed (the last point the first); coordinates must \
 be finite numbers; WKT nests at most 256 parentheses deep, GeoJSON at most 128 levels. Z and M \
 values are dropped, with a note on standard error. Errors say where: `feature 1, ring 0, position \
 2`, or a WKT line and column (indices count from 0).";

@@ -159,42 +159,113 @@ fn parse_geojson(text: &str) -> Result<Parsed, String> {
 
 /// The rings and segments of some geometries, in order.
 pub fn shapes_of(geometries: &[Placed]) -> Result<Shapes, String> {
-    let mut shapes = Shapes::default();
-    geometries.iter().try_for_each(|g| collect(&g.geometry, &g.place, &mut shapes))?;
-    Ok(shapes)
+    let mut collector = Collector::default();
+    geometries.iter().try_for_each(|g| collector.add(&g.geometry, &g.place))?;
+    Ok(collector.shapes)
 }
 
-/// Adds a geometry's rings and segments; points are refused (they have no area and no length).
-fn collect(g: &Geometry<f64>, place: &Place, shapes: &mut Shapes) -> Result<(), String> {
-    match g {
-        Geometry::Polygon(p) => shapes.rings.extend(Polygons::from(p).rings),
-        Geometry::MultiPolygon(mp) => shapes.rings.extend(Polygons::from(mp).rings),
-        Geometry::Rect(r) => shapes.rings.extend(Polygons::from(&r.to_polygon()).rings),
-        Geometry::Triangle(t) => shapes.rings.extend(Polygons::from(&t.to_polygon()).rings),
-        Geometry::LineString(ls) => shapes.segments.extend(ls.lines().map(Segment::from)),
-        Geometry::MultiLineString(mls) => {
-            shapes.segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from))
+/// Gathers rings and segments. A file holds polygons or line strings, not both: `clip` runs the
+/// one or the other, so the rest would be dropped without a word (a line string among polygons
+/// is more likely a ring written wrong than something to ignore).
+#[derive(Default)]
+struct Collector {
+    shapes: Shapes,
+    /// The first polygon or line string: where it is, and its kind.
+    first: Option<(Place, &'static str)>,
+}
+
+impl Collector {
+    /// Adds a geometry's rings and segments; points are refused (they have no area and no length).
+    fn add(&mut self, g: &Geometry<f64>, place: &Place) -> Result<(), String> {
+        let rings = &mut self.shapes.rings;
+        let segments = &mut self.shapes.segments;
+        match g {
+            Geometry::Polygon(p) => rings.extend(Polygons::from(p).rings),
+            Geometry::MultiPolygon(mp) => rings.extend(Polygons::from(mp).rings),
+            Geometry::Rect(r) => rings.extend(Polygons::from(&r.to_polygon()).rings),
+            Geometry::Triangle(t) => rings.extend(Polygons::from(&t.to_polygon()).rings),
+            Geometry::LineString(ls) => {
+                check_points(ls, place)?;
+                segments.extend(ls.lines().map(Segment::from));
+            }
+            Geometry::MultiLineString(mls) => {
+                for (i, ls) in mls.0.iter().enumerate() {
+                    check_points(ls, &place.then(format_args!("line string {i}")))?;
+                }
+                segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from));
+            }
+            Geometry::Line(l) => segments.push(Segment::from(*l)),
+            Geometry::GeometryCollection(c) => {
+                return c
+                    .0
+                    .iter()
+                    .enumerate()
+                    .try_for_each(|(i, g)| self.add(g, &place.then(format_args!("member {i}"))));
+            }
+            Geometry::Point(_) | Geometry::MultiPoint(_) => {
+                return Err(format!("{place} holds points: expected polygons or line strings"));
+            }
         }
-        Geometry::Line(l) => shapes.segments.push(Segment::from(*l)),
-        Geometry::GeometryCollection(c) => {
-            c.0.iter().enumerate().try_for_each(|(i, g)| collect(g, &place.then(format_args!("member {i}")), shapes))?
+        self.one_kind(g, place)
+    }
+
+    /// Refuses `g` when it is of the other kind (polygons, line strings) than the first one.
+    fn one_kind(&mut self, g: &Geometry<f64>, place: &Place) -> Result<(), String> {
+        let kind = kind_name(g);
+        let polygonal = |kind: &str| matches!(kind, "Polygon" | "MultiPolygon" | "Rect" | "Triangle");
+        match &self.first {
+            None => self.first = Some((place.clone(), kind)),
+            Some((first_place, first_kind)) if polygonal(first_kind) != polygonal(kind) => {
+                return Err(format!(
+                    "{place} is a {kind}, but {first_place} is a {first_kind}: a file holds polygons or line strings, \
+                     not both"
+                ));
+            }
+            Some(_) => {}
         }
-        Geometry::Point(_) | Geometry::MultiPoint(_) => {
-            return Err(format!("{place} holds points: expected polygons or line strings"));
-        }
+        Ok(())
+    }
+}
+
+/// A line string of one point has no segment: refused rather than dropped (none is `EMPTY`).
+fn check_points(ls: &geo::LineString<f64>, place: &Place) -> Result<(), String> {
+    if ls.0.len() == 1 {
+        return Err(format!("{place} has 1 point: a line string needs two or more"));
     }
     Ok(())
+}
+
+/// The geometry's type as GeoJSON names it.
+fn kind_name(g: &Geometry<f64>) -> &'static str {
+    match g {
+        Geometry::Point(_) => "Point",
+        Geometry::Line(_) => "Line",
+        Geometry::LineString(_) => "LineString",
+        Geometry::Polygon(_) => "Polygon",
+        Geometry::MultiPoint(_) => "MultiPoint",
+        Geometry::MultiLineString(_) => "MultiLineString",
+        Geometry::MultiPolygon(_) => "MultiPolygon",
+        Geometry::GeometryCollection(_) => "GeometryCollection",
+        Geometry::Rect(_) => "Rect",
+        Geometry::Triangle(_) => "Triangle",
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn wkt_shapes(text: &str) -> Result<Shapes, String> {
+        shapes_of(&parse_wkt(text)?.geometries)
+    }
+
+    fn geojson_shapes(text: &str) -> Result<Shapes, String> {
+        shapes_of(&parse_geojson(text)?.geometries)
+    }
+
     #[test]
     fn wkt_rings_keep_their_orientation_and_order() {
-        let g = parse_wkt("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap().geometries;
-        let mut shapes = Shapes::default();
-        collect(&g[0].geometry, &Place::default(), &mut shapes).unwrap();
+        let shapes = wkt_shapes("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap();
         assert_eq!(shapes.rings.len(), 2);
         assert!(shapes.rings[0].signed_area() < 0.0, "clockwise ring read as clockwise");
         assert!(shapes.rings[1].signed_area() > 0.0);
@@ -202,16 +273,47 @@ mod tests {
     }
 
     #[test]
-    fn geojson_feature_collection_and_line_strings() {
+    fn geojson_feature_collections_of_polygons_or_of_line_strings() {
+        let polygon = r#"{"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]}}"#;
+        let line =
+            r#"{"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2],[3,0]]}}"#;
+        let nothing = r#"{"type":"Feature","properties":{},"geometry":null}"#;
+        let collection =
+            |features: &[&str]| format!(r#"{{"type":"FeatureCollection","features":[{}]}}"#, features.join(","));
+        let shapes = geojson_shapes(&collection(&[polygon, nothing, polygon])).unwrap();
+        assert_eq!((shapes.rings.len(), shapes.segments.len()), (2, 0));
+        let shapes = geojson_shapes(&collection(&[line, line])).unwrap();
+        assert_eq!((shapes.rings.len(), shapes.segments.len()), (0, 4));
+    }
+
+    #[test]
+    fn geojson_line_string_among_polygons_is_an_error_naming_it() {
         let text = r#"{"type":"FeatureCollection","features":[
             {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]}},
+            {"type":"Feature","properties":{},"geometry":null},
             {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2],[3,0]]}}]}"#;
-        let mut shapes = Shapes::default();
-        for g in parse_geojson(text).unwrap().geometries {
-            collect(&g.geometry, &g.place, &mut shapes).unwrap();
-        }
-        assert_eq!(shapes.rings.len(), 1);
-        assert_eq!(shapes.segments.len(), 2);
+        assert_eq!(
+            geojson_shapes(text).unwrap_err(),
+            "feature 2 is a LineString, but feature 0 is a Polygon: a file holds polygons or line strings, not both"
+        );
+        assert_eq!(
+            wkt_shapes("GEOMETRYCOLLECTION(LINESTRING(0 0,1 1),GEOMETRYCOLLECTION(POLYGON((0 0,1 0,1 1,0 0))))")
+                .unwrap_err(),
+            "member 1, member 0 is a Polygon, but member 0 is a LineString: a file holds polygons or line strings, not both"
+        );
+    }
+
+    #[test]
+    fn line_string_of_one_point_is_an_error() {
+        assert_eq!(
+            wkt_shapes("LINESTRING(0 0)").unwrap_err(),
+            "the geometry has 1 point: a line string needs two or more"
+        );
+        assert_eq!(
+            wkt_shapes("MULTILINESTRING((0 0,1 1),(2 2))").unwrap_err(),
+            "line string 1 has 1 point: a line string needs two or more"
+        );
+        assert_eq!(wkt_shapes("LINESTRING EMPTY").unwrap(), Shapes::default());
     }
 
     #[test]
@@ -219,9 +321,9 @@ mod tests {
         assert!(parse_wkt("POLYGON((0 0, 1 1").is_err());
         assert!(parse_wkt("").is_err());
         assert!(parse_geojson("{\"type\": \"Polygon\"").is_err());
-        let mut shapes = Shapes::default();
-        assert!(
-            collect(&parse_wkt("POINT(1 2)").unwrap().geometries[0].geometry, &Place::default(), &mut shapes).is_err()
+        assert_eq!(
+            wkt_shapes("POINT(1 2)").unwrap_err(),
+            "the geometry holds points: expected polygons or line strings"
         );
     }
 }

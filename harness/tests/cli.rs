@@ -275,6 +275,26 @@ fn polygon_z_is_clipped_in_the_plane_with_a_note_on_stderr() {
 }
 
 #[test]
+fn line_string_among_polygons_exits_2_naming_it_instead_of_being_dropped() {
+    let dir = scratch("mixed");
+    let geojson = write(
+        &dir,
+        "mixed.geojson",
+        r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,0]]]}},
+            {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2]]}}]}"#,
+    );
+    let expected = "mixed.geojson: feature 1 is a LineString, but feature 0 is a Polygon: a file holds polygons or line \
+                    strings, not both";
+    assert_input_error(&clip_on(&dir, &geojson), expected);
+    // As the clip operand too, where it was dropped the same way.
+    let square = write(&dir, "square.wkt", "POLYGON((0 0,1 0,1 1,0 1,0 0))");
+    assert_input_error(&clipbench(&["clip", "--clipper", "geo", &square, &geojson]), expected);
+    let wkt = write(&dir, "mixed.wkt", "GEOMETRYCOLLECTION(POLYGON((0 0,2 0,2 2,0 0)),LINESTRING(0 0,2 2))");
+    assert_input_error(&clip_on(&dir, &wkt), "mixed.wkt: member 1 is a LineString, but member 0 is a Polygon");
+}
+
+#[test]
 fn unknown_names_list_the_valid_ones() {
     let o = clipbench(&["verify", "--clipper", "nope", "--cases", "1"]);
     assert_eq!(o.status.code(), Some(2));
