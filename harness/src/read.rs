@@ -101,6 +101,9 @@ pub fn read_polygons(path: &Path, operand: Operand) -> Result<Polygons, InputErr
 /// Reads segments and validates them (finite, in range).
 pub fn read_segments(path: &Path) -> Result<Vec<Segment>, InputError> {
     let shapes = read_shapes(path)?;
+    if !shapes.rings.is_empty() {
+        return Err(InputError::new(path, "the segments must be line strings, but it holds polygons".into()));
+    }
     validate_segments(&shapes.segments).map_err(|e| InputError::new(path, e.to_string()))?;
     Ok(shapes.segments)
 }

@@ -414,6 +414,90 @@ fn replay_reruns_a_saved_case() {
 }
 
 #[test]
+fn replay_of_a_case_file_that_does_not_hang_together_exits_2_instead_of_passing() {
+    let dir = scratch("replay-checked");
+    write(&dir, "subject.wkt", "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)))");
+    write(&dir, "clip.wkt", "MULTIPOLYGON(((1 1,3 1,3 3,1 3,1 1)))");
+    write(&dir, "segments.wkt", "MULTILINESTRING((0 0,3 3))");
+    write(&dir, "triangle.wkt", "MULTIPOLYGON(((1 1,3 1,3 3,1 1)))");
+    let case = serde_json::json!({
+        "kind": "polygon", "clipper": "clipper2", "check": "disagreement", "other": "geo",
+        "workload": "star", "seed": 1, "index": 0, "window": "any", "op": "union", "fill": "even-odd",
+        "found": "", "shrunk": "", "generated_vertices": [4, 4], "shrunk_vertices": [4, 4],
+        "inputs": ["subject.wkt", "clip.wkt"], "replay": ""
+    });
+    let line = serde_json::json!({"kind": "line", "clipper": "liu", "check": "oracle", "other": null, "op": null, "fill": null});
+    let cases: [(serde_json::Value, &str); 12] = [
+        (
+            serde_json::json!({"kind": "triangle"}),
+            "case.json: unknown kind 'triangle' (a case is a polygon or a line case)",
+        ),
+        (serde_json::json!({"kind": "line"}), "case.json: clipper2 is a polygon clipper, and this is a line case"),
+        (line.clone(), "clip.wkt: the segments must be line strings, but it holds polygons"),
+        (serde_json::json!({"clipper": "liu"}), "case.json: liu is a line clipper, and this is a polygon case"),
+        (
+            serde_json::json!({"other": null}),
+            "case.json: a disagreement case needs 'other', the clipper it disagreed with, and it is missing",
+        ),
+        (
+            serde_json::json!({"check": "oracle"}),
+            "case.json: 'other' (geo) is for a disagreement, and the check here is oracle",
+        ),
+        (
+            serde_json::json!({"check": "triangle"}),
+            "case.json: unknown check 'triangle' (oracle, area-identities or disagreement)",
+        ),
+        (
+            serde_json::json!({"op": null}),
+            "case.json: a polygon disagreement case needs 'op', the operation, and it is missing",
+        ),
+        (serde_json::json!({"fill": null}), "case.json: a polygon case needs 'fill', the fill rule, and it is missing"),
+        (
+            serde_json::json!({"clipper": "rect-four-state", "other": "vatti"}),
+            "case.json: rect-four-state does not do union under even-odd, so verify never ran it",
+        ),
+        (
+            serde_json::json!({
+                "clipper": "rect-four-state", "other": "vatti", "op": "intersection", "window": "rectangle",
+                "inputs": ["subject.wkt", "triangle.wkt"]
+            }),
+            "triangle.wkt: rect-four-state takes rectangle windows only, and this is not one",
+        ),
+        (serde_json::json!({"window": "hexagon"}), "case.json: unknown window 'hexagon' (any, convex or rectangle)"),
+    ];
+    for (changes, problem) in cases {
+        let mut changed = case.clone();
+        for (k, v) in changes.as_object().unwrap() {
+            changed[k] = v.clone();
+        }
+        let file = write(&dir, "case.json", &changed.to_string());
+        let o = clipbench(&["verify", "--replay", &file]);
+        assert_eq!(o.status.code(), Some(2), "{changes}: {}{}", stdout(&o), stderr(&o));
+        assert!(stderr(&o).contains(problem), "{changes}: expected '{problem}' in {}", stderr(&o));
+        assert_eq!(stdout(&o), "", "{changes}");
+    }
+    // A line case on line inputs does run.
+    let mut changed = case.clone();
+    for (k, v) in line.as_object().unwrap() {
+        changed[k] = v.clone();
+    }
+    changed["inputs"] = serde_json::json!(["clip.wkt", "segments.wkt"]);
+    let o = clipbench(&["verify", "--replay", &write(&dir, "line.json", &changed.to_string())]);
+    assert!(
+        o.status.success() && stdout(&o).starts_with("passes now: line liu oracle"),
+        "{}{}",
+        stdout(&o),
+        stderr(&o)
+    );
+    // A missing field is serde's error, naming the field.
+    let mut missing = case.clone();
+    missing.as_object_mut().unwrap().remove("kind");
+    let o = clipbench(&["verify", "--replay", &write(&dir, "missing.json", &missing.to_string())]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("not a verify case file: missing field `kind`"), "{}", stderr(&o));
+}
+
+#[test]
 fn conformance_suites_run_and_print_a_closing_line_per_clipper() {
     let dir = scratch("conformance");
     let o = clipbench(&["conformance", "clipper2-polygons", "--clipper", "vatti", "--clipper", "clipper2"]);

@@ -8,6 +8,7 @@ mod polygon_runs;
 mod recheck;
 mod record;
 mod replay;
+mod replay_case;
 mod summary;
 
 use std::io::IsTerminal;
