@@ -273,6 +273,11 @@ fn validation_errors_are_typed() {
     assert!(matches!(validate_polygons(&inf, Operand::Clip), Err(ClipError::NonFinite { part: 1, .. })));
     let huge = Polygons::from(ring(&[(0.0, 0.0), (1e200, 1.0), (1.0, 0.0)]));
     assert!(matches!(validate_polygons(&huge, Operand::Subject), Err(ClipError::OutOfRange { .. })));
+    // Found by the line_clippers fuzz target: a segment 8e-317 long has a squared length of 0.
+    let tiny = [Segment::new(p(8.2782315e-317, 0.0), p(0.0, 0.0))];
+    assert!(matches!(validate_segments(&tiny), Err(ClipError::OutOfRange { part: 0, vertex: 0, .. })));
+    let small = Polygons::from(ring(&[(0.0, 0.0), (1e-100, 0.0), (0.0, -1e-100)]));
+    assert!(validate_polygons(&small, Operand::Subject).is_ok(), "MIN_COORDINATE itself and zero are accepted");
     let two = Polygons::from(ring(&[(0.0, 0.0), (1.0, 1.0), (0.0, 0.0), (1.0, 1.0)]));
     assert!(matches!(validate_polygons(&two, Operand::Subject), Err(ClipError::TooFewPoints { distinct: 2, .. })));
     // Collinear rings with three distinct points are valid operands (they cover nothing).
