@@ -9,7 +9,9 @@ mod sampling;
 mod validity;
 
 pub use region_area::{region_area, region_area_with_witness};
-pub use validity::{bridge_count, bridge_count_within, check_valid_output, check_valid_output_within};
+pub use validity::{
+    bridge_count, bridge_count_within, check_valid_output, check_valid_output_within, check_valid_result_within,
+};
 
 use clip_core::{BoolOp, FillRule, Point, Polygons, Rect};
 use core::fmt;
@@ -164,7 +166,7 @@ pub fn check_polygon_result(
         return Ok(0.0);
     }
     if rules.conventional {
-        check_valid_output_within(output, snap_distance(&b, rules.relative_tolerance))?;
+        check_valid_result_within(output, snap_distance(&b, rules.relative_tolerance), [subject, clip])?;
     }
     check_sample_points(subject, clip, op, fill, output, rules, &b)?;
     let tol = tolerance(subject, clip, rules.relative_tolerance);
