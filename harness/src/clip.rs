@@ -5,12 +5,22 @@ use std::path::PathBuf;
 use clip_core::{BoolOp, FillRule, Operand, validate_polygons, validate_segments};
 
 use crate::cli_error::{CliError, InputError};
+use crate::console;
 use crate::read::{read_polygons, read_shapes};
 use crate::registry::{Registry, unknown_clipper};
 use crate::write::{OutputFormat, line_result, polygon_result, write_file};
 
+/// How `clip` reads its files, for `clipbench clip --help`.
+const READING: &str = "\
+Files: WKT, one geometry per file (several go in a GEOMETRYCOLLECTION), or GeoJSON (a geometry, a \
+Feature or a FeatureCollection), holding polygons or line strings, not both. Rings must be closed (the last point the first); coordinates must \
+be finite numbers; WKT nests at most 256 parentheses deep, GeoJSON at most 128 levels. Z and M \
+values are dropped, with a note on standard error. Errors say where: `feature 1, ring 0, position \
+2`, or a WKT line and column (indices count from 0).";
+
 /// Arguments of `clipbench clip`.
 #[derive(Debug, clap::Args)]
+#[command(after_help = READING)]
 pub struct ClipArgs {
     /// Registered clipper to run (`clipbench verify --help` lists them).
     #[arg(long)]
@@ -64,10 +74,7 @@ pub fn run(args: &ClipArgs, registry: &Registry) -> Result<(), CliError> {
     };
     match &args.out {
         Some(path) => write_file(path, &text),
-        None => {
-            print!("{text}");
-            Ok(())
-        }
+        None => console::print(&text),
     }
 }
 

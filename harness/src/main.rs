@@ -12,6 +12,7 @@ mod checks;
 mod cli_error;
 mod clip;
 mod conformance;
+mod console;
 mod measure;
 mod papers;
 mod plot;

@@ -1,5 +1,10 @@
 //! Reads WKT and GeoJSON files into polygon sets (every ring kept, orientation kept) and segments.
 
+mod geojson_checks;
+mod wkt_geometry;
+mod wkt_text;
+
+use std::fmt;
 use std::path::Path;
 use std::str::FromStr;
 
@@ -7,6 +12,7 @@ use clip_core::{Operand, Polygons, Ring, Segment, validate_polygons, validate_se
 use geo::Geometry;
 
 use crate::cli_error::InputError;
+use crate::console;
 
 /// What a file holds: its rings (from polygons) and its segments (from line strings).
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -24,13 +30,61 @@ impl Shapes {
     }
 }
 
-/// Reads a file: GeoJSON when its name ends in `.geojson` or `.json`, WKT otherwise.
+/// Where something is in its file, for messages: `feature 2, polygon 0, ring 1` (every index
+/// counts from 0); nothing for the file's one geometry.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Place(String);
+
+impl Place {
+    /// The part `part` of what is here: `feature 2` then `ring 1` is `feature 2, ring 1`.
+    pub fn then(&self, part: impl fmt::Display) -> Place {
+        if self.0.is_empty() { Place(part.to_string()) } else { Place(format!("{}, {part}", self.0)) }
+    }
+}
+
+impl fmt::Display for Place {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(if self.0.is_empty() { "the geometry" } else { &self.0 })
+    }
+}
+
+/// A geometry and where it is in its file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Placed {
+    /// Where: `feature 2` in a FeatureCollection, nothing for a file's one geometry.
+    pub place: Place,
+    /// The geometry.
+    pub geometry: Geometry<f64>,
+}
+
+impl Placed {
+    /// A geometry that is the whole of what is read.
+    pub fn whole(geometry: Geometry<f64>) -> Placed {
+        Placed { place: Place::default(), geometry }
+    }
+}
+
+/// A file's geometries, and what reading them left out.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Parsed {
+    /// The geometries, in file order.
+    pub geometries: Vec<Placed>,
+    /// What the file held that clipping in the plane drops (z, m), one note each.
+    pub dropped: Vec<String>,
+}
+
+/// Reads a file: GeoJSON when its name ends in `.geojson` or `.json`, WKT otherwise. What is
+/// dropped in reading is said on standard error.
 pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
-    let geometries = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
+    let parsed = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
         .map_err(|problem| InputError::new(path, problem))?;
     // An empty geometry (`MULTIPOLYGON EMPTY`) is the empty region, a valid operand.
-    shapes_of(&geometries).map_err(|problem| InputError::new(path, problem))
+    let shapes = shapes_of(&parsed.geometries).map_err(|problem| InputError::new(path, problem))?;
+    for note in &parsed.dropped {
+        console::note(format_args!("{}: {note}", path.display()));
+    }
+    Ok(shapes)
 }
 
 /// Reads a polygon operand and validates it (finite, in range, rings of at least 3 points).
@@ -47,6 +101,9 @@ pub fn read_polygons(path: &Path, operand: Operand) -> Result<Polygons, InputErr
 /// Reads segments and validates them (finite, in range).
 pub fn read_segments(path: &Path) -> Result<Vec<Segment>, InputError> {
     let shapes = read_shapes(path)?;
+    if !shapes.rings.is_empty() {
+        return Err(InputError::new(path, "the segments must be line strings, but it holds polygons".into()));
+    }
     validate_segments(&shapes.segments).map_err(|e| InputError::new(path, e.to_string()))?;
     Ok(shapes.segments)
 }
@@ -59,54 +116,159 @@ fn is_geojson(path: &Path) -> bool {
 }
 
 /// Parses WKT text into a geometry.
-pub fn parse_wkt(text: &str) -> Result<Vec<Geometry<f64>>, String> {
+pub fn parse_wkt(text: &str) -> Result<Parsed, String> {
+    wkt_text::check(text)?;
     let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
+    wkt_geometry::check_rings(&wkt, &Place::default())?;
+    let dropped = wkt_geometry::dropped(&wkt).into_iter().collect();
     let geometry = Geometry::try_from(wkt).map_err(|e| format!("unusable WKT: {e}"))?;
-    Ok(vec![geometry])
+    Ok(Parsed { geometries: vec![Placed::whole(geometry)], dropped })
 }
 
-fn parse_geojson(text: &str) -> Result<Vec<Geometry<f64>>, String> {
-    let json = geojson::GeoJson::from_str(text).map_err(|e| format!("not valid GeoJSON: {e}"))?;
-    let collection = geo::GeometryCollection::<f64>::try_from(&json).map_err(|e| format!("unusable GeoJSON: {e}"))?;
-    Ok(collection.0)
+/// Parses GeoJSON text into its geometries: a FeatureCollection's one per feature with a
+/// geometry (a feature whose geometry is null holds nothing), else the one.
+fn parse_geojson(text: &str) -> Result<Parsed, String> {
+    let json = geojson::GeoJson::from_str(text).map_err(|e| match e.to_string() {
+        // serde_json stops at 128 levels rather than overflow the stack: say what the limit is.
+        e if e.contains("recursion limit exceeded") => {
+            format!("not valid GeoJSON: nested deeper than 128 levels ({e})")
+        }
+        e => format!("not valid GeoJSON: {e}"),
+    })?;
+    let found: Vec<(Place, Option<&geojson::Geometry>)> = match &json {
+        geojson::GeoJson::FeatureCollection(fc) => fc
+            .features
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (Place::default().then(format_args!("feature {i}")), f.geometry.as_ref()))
+            .collect(),
+        geojson::GeoJson::Feature(f) => vec![(Place::default(), f.geometry.as_ref())],
+        geojson::GeoJson::Geometry(g) => vec![(Place::default(), Some(g))],
+    };
+    let mut parsed = Parsed::default();
+    let mut beyond_xy = false;
+    for (place, g) in found {
+        let Some(g) = g else { continue };
+        // The conversion indexes positions unchecked: a position `[0]` would panic in it.
+        geojson_checks::check_geometry(&g.value, &place, &mut beyond_xy)?;
+        let geometry = Geometry::try_from(&g.value).map_err(|e| format!("{place}: unusable GeoJSON: {e}"))?;
+        parsed.geometries.push(Placed { place, geometry });
+    }
+    if beyond_xy {
+        parsed.dropped.push("positions' numbers after x and y (z) dropped: clipping is in the plane".into());
+    }
+    Ok(parsed)
 }
 
 /// The rings and segments of some geometries, in order.
-pub fn shapes_of(geometries: &[Geometry<f64>]) -> Result<Shapes, String> {
-    let mut shapes = Shapes::default();
-    geometries.iter().try_for_each(|g| collect(g, &mut shapes))?;
-    Ok(shapes)
+pub fn shapes_of(geometries: &[Placed]) -> Result<Shapes, String> {
+    let mut collector = Collector::default();
+    geometries.iter().try_for_each(|g| collector.add(&g.geometry, &g.place))?;
+    Ok(collector.shapes)
 }
 
-/// Adds a geometry's rings and segments; points are refused (they have no area and no length).
-fn collect(g: &Geometry<f64>, shapes: &mut Shapes) -> Result<(), String> {
-    match g {
-        Geometry::Polygon(p) => shapes.rings.extend(Polygons::from(p).rings),
-        Geometry::MultiPolygon(mp) => shapes.rings.extend(Polygons::from(mp).rings),
-        Geometry::Rect(r) => shapes.rings.extend(Polygons::from(&r.to_polygon()).rings),
-        Geometry::Triangle(t) => shapes.rings.extend(Polygons::from(&t.to_polygon()).rings),
-        Geometry::LineString(ls) => shapes.segments.extend(ls.lines().map(Segment::from)),
-        Geometry::MultiLineString(mls) => {
-            shapes.segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from))
+/// Gathers rings and segments. A file holds polygons or line strings, not both: `clip` runs the
+/// one or the other, so the rest would be dropped without a word (a line string among polygons
+/// is more likely a ring written wrong than something to ignore).
+#[derive(Default)]
+struct Collector {
+    shapes: Shapes,
+    /// The first polygon or line string: where it is, and its kind.
+    first: Option<(Place, &'static str)>,
+}
+
+impl Collector {
+    /// Adds a geometry's rings and segments; points are refused (they have no area and no length).
+    fn add(&mut self, g: &Geometry<f64>, place: &Place) -> Result<(), String> {
+        let rings = &mut self.shapes.rings;
+        let segments = &mut self.shapes.segments;
+        match g {
+            Geometry::Polygon(p) => rings.extend(Polygons::from(p).rings),
+            Geometry::MultiPolygon(mp) => rings.extend(Polygons::from(mp).rings),
+            Geometry::Rect(r) => rings.extend(Polygons::from(&r.to_polygon()).rings),
+            Geometry::Triangle(t) => rings.extend(Polygons::from(&t.to_polygon()).rings),
+            Geometry::LineString(ls) => {
+                check_points(ls, place)?;
+                segments.extend(ls.lines().map(Segment::from));
+            }
+            Geometry::MultiLineString(mls) => {
+                for (i, ls) in mls.0.iter().enumerate() {
+                    check_points(ls, &place.then(format_args!("line string {i}")))?;
+                }
+                segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from));
+            }
+            Geometry::Line(l) => segments.push(Segment::from(*l)),
+            Geometry::GeometryCollection(c) => {
+                return c
+                    .0
+                    .iter()
+                    .enumerate()
+                    .try_for_each(|(i, g)| self.add(g, &place.then(format_args!("member {i}"))));
+            }
+            Geometry::Point(_) | Geometry::MultiPoint(_) => {
+                return Err(format!("{place} holds points: expected polygons or line strings"));
+            }
         }
-        Geometry::Line(l) => shapes.segments.push(Segment::from(*l)),
-        Geometry::GeometryCollection(c) => c.0.iter().try_for_each(|g| collect(g, shapes))?,
-        Geometry::Point(_) | Geometry::MultiPoint(_) => {
-            return Err("it holds points; expected polygons or line strings".into());
+        self.one_kind(g, place)
+    }
+
+    /// Refuses `g` when it is of the other kind (polygons, line strings) than the first one.
+    fn one_kind(&mut self, g: &Geometry<f64>, place: &Place) -> Result<(), String> {
+        let kind = kind_name(g);
+        let polygonal = |kind: &str| matches!(kind, "Polygon" | "MultiPolygon" | "Rect" | "Triangle");
+        match &self.first {
+            None => self.first = Some((place.clone(), kind)),
+            Some((first_place, first_kind)) if polygonal(first_kind) != polygonal(kind) => {
+                return Err(format!(
+                    "{place} is a {kind}, but {first_place} is a {first_kind}: a file holds polygons or line strings, \
+                     not both"
+                ));
+            }
+            Some(_) => {}
         }
+        Ok(())
+    }
+}
+
+/// A line string of one point has no segment: refused rather than dropped (none is `EMPTY`).
+fn check_points(ls: &geo::LineString<f64>, place: &Place) -> Result<(), String> {
+    if ls.0.len() == 1 {
+        return Err(format!("{place} has 1 point: a line string needs two or more"));
     }
     Ok(())
+}
+
+/// The geometry's type as GeoJSON names it.
+fn kind_name(g: &Geometry<f64>) -> &'static str {
+    match g {
+        Geometry::Point(_) => "Point",
+        Geometry::Line(_) => "Line",
+        Geometry::LineString(_) => "LineString",
+        Geometry::Polygon(_) => "Polygon",
+        Geometry::MultiPoint(_) => "MultiPoint",
+        Geometry::MultiLineString(_) => "MultiLineString",
+        Geometry::MultiPolygon(_) => "MultiPolygon",
+        Geometry::GeometryCollection(_) => "GeometryCollection",
+        Geometry::Rect(_) => "Rect",
+        Geometry::Triangle(_) => "Triangle",
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn wkt_shapes(text: &str) -> Result<Shapes, String> {
+        shapes_of(&parse_wkt(text)?.geometries)
+    }
+
+    fn geojson_shapes(text: &str) -> Result<Shapes, String> {
+        shapes_of(&parse_geojson(text)?.geometries)
+    }
+
     #[test]
     fn wkt_rings_keep_their_orientation_and_order() {
-        let g = parse_wkt("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap();
-        let mut shapes = Shapes::default();
-        collect(&g[0], &mut shapes).unwrap();
+        let shapes = wkt_shapes("MULTIPOLYGON(((0 0,0 4,4 4,4 0,0 0)),((1 1,2 1,2 2,1 2,1 1)))").unwrap();
         assert_eq!(shapes.rings.len(), 2);
         assert!(shapes.rings[0].signed_area() < 0.0, "clockwise ring read as clockwise");
         assert!(shapes.rings[1].signed_area() > 0.0);
@@ -114,16 +276,47 @@ mod tests {
     }
 
     #[test]
-    fn geojson_feature_collection_and_line_strings() {
+    fn geojson_feature_collections_of_polygons_or_of_line_strings() {
+        let polygon = r#"{"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]}}"#;
+        let line =
+            r#"{"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2],[3,0]]}}"#;
+        let nothing = r#"{"type":"Feature","properties":{},"geometry":null}"#;
+        let collection =
+            |features: &[&str]| format!(r#"{{"type":"FeatureCollection","features":[{}]}}"#, features.join(","));
+        let shapes = geojson_shapes(&collection(&[polygon, nothing, polygon])).unwrap();
+        assert_eq!((shapes.rings.len(), shapes.segments.len()), (2, 0));
+        let shapes = geojson_shapes(&collection(&[line, line])).unwrap();
+        assert_eq!((shapes.rings.len(), shapes.segments.len()), (0, 4));
+    }
+
+    #[test]
+    fn geojson_line_string_among_polygons_is_an_error_naming_it() {
         let text = r#"{"type":"FeatureCollection","features":[
             {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]}},
+            {"type":"Feature","properties":{},"geometry":null},
             {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2],[3,0]]}}]}"#;
-        let mut shapes = Shapes::default();
-        for g in parse_geojson(text).unwrap() {
-            collect(&g, &mut shapes).unwrap();
-        }
-        assert_eq!(shapes.rings.len(), 1);
-        assert_eq!(shapes.segments.len(), 2);
+        assert_eq!(
+            geojson_shapes(text).unwrap_err(),
+            "feature 2 is a LineString, but feature 0 is a Polygon: a file holds polygons or line strings, not both"
+        );
+        assert_eq!(
+            wkt_shapes("GEOMETRYCOLLECTION(LINESTRING(0 0,1 1),GEOMETRYCOLLECTION(POLYGON((0 0,1 0,1 1,0 0))))")
+                .unwrap_err(),
+            "member 1, member 0 is a Polygon, but member 0 is a LineString: a file holds polygons or line strings, not both"
+        );
+    }
+
+    #[test]
+    fn line_string_of_one_point_is_an_error() {
+        assert_eq!(
+            wkt_shapes("LINESTRING(0 0)").unwrap_err(),
+            "the geometry has 1 point: a line string needs two or more"
+        );
+        assert_eq!(
+            wkt_shapes("MULTILINESTRING((0 0,1 1),(2 2))").unwrap_err(),
+            "line string 1 has 1 point: a line string needs two or more"
+        );
+        assert_eq!(wkt_shapes("LINESTRING EMPTY").unwrap(), Shapes::default());
     }
 
     #[test]
@@ -131,7 +324,9 @@ mod tests {
         assert!(parse_wkt("POLYGON((0 0, 1 1").is_err());
         assert!(parse_wkt("").is_err());
         assert!(parse_geojson("{\"type\": \"Polygon\"").is_err());
-        let mut shapes = Shapes::default();
-        assert!(collect(&parse_wkt("POINT(1 2)").unwrap()[0], &mut shapes).is_err());
+        assert_eq!(
+            wkt_shapes("POINT(1 2)").unwrap_err(),
+            "the geometry holds points: expected polygons or line strings"
+        );
     }
 }

@@ -1,8 +1,9 @@
 //! The clipbench binary end to end: `clip` on files, bad input, `verify` and its JSON summary,
 //! determinism across thread counts, and `--replay`.
 
+use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Command, Output, Stdio};
 use std::str::FromStr;
 
 use clip_testkit::workload::{LINE_WORKLOADS, POLYGON_WORKLOADS};
@@ -100,6 +101,53 @@ fn clip_reads_geojson_and_clips_line_strings_with_geo() {
     assert!(stderr(&o).contains("line clippers:") && stderr(&o).contains("geo"), "{}", stderr(&o));
 }
 
+/// A polygon of `n` vertices on a circle of radius 100: clipped by a larger square it comes back
+/// whole, so the result printed is far larger than a pipe's buffer.
+fn circle_wkt(n: usize) -> String {
+    let points: Vec<String> = (0..=n)
+        .map(|i| {
+            let a = std::f64::consts::TAU * (i % n) as f64 / n as f64;
+            format!("{} {}", 100.0 * a.cos(), 100.0 * a.sin())
+        })
+        .collect();
+    format!("POLYGON(({}))", points.join(","))
+}
+
+#[test]
+fn stdout_closed_early_ends_quietly_with_exit_0() {
+    let dir = scratch("closed-pipe");
+    let subject = write(&dir, "circle.wkt", &circle_wkt(5000));
+    let clip = write(&dir, "square.wkt", "POLYGON((-200 -200,200 -200,200 200,-200 200,-200 -200))");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_clipbench"))
+        .args(["clip", "--clipper", "geo", &subject, &clip])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the clipbench binary runs");
+    // Like `| head -c 10`: read a little, then close the pipe while clipbench is still writing.
+    let mut start = [0u8; 10];
+    child.stdout.take().unwrap().read_exact(&mut start).unwrap();
+    assert_eq!(&start, b"MULTIPOLYG");
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(stderr(&o), "", "a reader that stops early is not an error");
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn stdout_that_cannot_be_written_is_an_error_exit_not_a_panic() {
+    let dir = scratch("full");
+    let square = write(&dir, "square.wkt", "POLYGON((0 0,1 0,1 1,0 1,0 0))");
+    let o = Command::new(env!("CARGO_BIN_EXE_clipbench"))
+        .args(["clip", "--clipper", "geo", &square, &square])
+        .stdout(std::fs::File::create("/dev/full").unwrap())
+        .output()
+        .expect("the clipbench binary runs");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert_eq!(err.trim_end(), "clipbench: cannot write to standard output: No space left on device (os error 28)");
+}
+
 #[test]
 fn broken_or_missing_files_exit_2_with_a_one_line_message_naming_the_file() {
     let dir = scratch("broken");
@@ -119,6 +167,133 @@ fn broken_or_missing_files_exit_2_with_a_one_line_message_naming_the_file() {
         assert_eq!(err.trim_end().lines().count(), 1, "{err}");
         assert!(err.contains(file.as_str()) && err.contains(problem), "{file}: {err}");
     }
+}
+
+/// Runs `clip` on `subject` against a unit square and returns the output; the square is `clip.wkt` in `dir`.
+fn clip_on(dir: &Path, subject: &str) -> Output {
+    let square = write(dir, "clip.wkt", "POLYGON((0 0,1 0,1 1,0 1,0 0))");
+    clipbench(&["clip", "--clipper", "geo", subject, &square])
+}
+
+/// Exit 2 and one line on standard error, which says `problem`.
+fn assert_input_error(o: &Output, problem: &str) {
+    assert_eq!(o.status.code(), Some(2), "{}{}", stdout(o), stderr(o));
+    let err = stderr(o);
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains(problem), "expected '{problem}' in: {err}");
+}
+
+#[test]
+fn clip_with_a_geojson_position_of_one_number_exits_2_naming_it() {
+    let dir = scratch("geojson-position");
+    let subject = write(
+        &dir,
+        "subject.geojson",
+        r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,0]]]}},
+            {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1],[1,1],[0,0]]]}}]}"#,
+    );
+    let o = clip_on(&dir, &subject);
+    assert_input_error(
+        &o,
+        "subject.geojson: feature 1, ring 0, position 1 is [1]: a position needs two numbers, x and y",
+    );
+}
+
+#[test]
+fn wkt_nested_thousands_deep_exits_2_instead_of_overflowing_the_stack() {
+    let dir = scratch("wkt-deep");
+    let nested = |n: usize| format!("{}POLYGON((0 0,1 0,1 1,0 0)){}", "GEOMETRYCOLLECTION(".repeat(n), ")".repeat(n));
+    let deep = write(&dir, "deep.wkt", &nested(8000));
+    assert_input_error(&clip_on(&dir, &deep), "deep.wkt: parentheses nested deeper than 256 levels (line 1, column");
+    // At the limit (254 collections around a polygon's 2 levels) it still reads, stack and all.
+    let at_limit = write(&dir, "at-limit.wkt", &nested(254));
+    let o = clip_on(&dir, &at_limit);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!((wkt_area(&stdout(&o)) - 0.5).abs() < 1e-9, "{}", stdout(&o));
+    assert_input_error(&clip_on(&dir, &write(&dir, "over.wkt", &nested(255))), "nested deeper than 256 levels");
+}
+
+#[test]
+fn geojson_nested_thousands_deep_exits_2_at_serde_json_s_limit() {
+    let dir = scratch("geojson-deep");
+    let n = 10_000;
+    let text = format!(
+        "{}{{\"type\":\"Point\",\"coordinates\":[0,0]}}{}",
+        r#"{"type":"GeometryCollection","geometries":["#.repeat(n),
+        "]}".repeat(n)
+    );
+    let deep = write(&dir, "deep.geojson", &text);
+    assert_input_error(&clip_on(&dir, &deep), "deep.geojson: not valid GeoJSON: nested deeper than 128 levels");
+}
+
+#[test]
+fn wkt_nan_coordinate_exits_2_naming_the_number_and_where_it_is() {
+    let dir = scratch("wkt-nan");
+    let subject = write(&dir, "nan.wkt", "MULTIPOLYGON(((0 0,4 0,4 4,0 0)),\n((5 5,NaN 5,6 6,5 5)))");
+    assert_input_error(&clip_on(&dir, &subject), "nan.wkt: coordinate 'NaN' (line 2, column 7) is not finite");
+}
+
+#[test]
+fn wkt_text_after_the_geometry_exits_2_instead_of_being_ignored() {
+    let dir = scratch("wkt-trailing");
+    let subject = write(&dir, "two.wkt", "POLYGON((0 0,1 0,1 1,0 0))\nPOLYGON((5 5,6 5,6 6,5 5))\n");
+    assert_input_error(
+        &clip_on(&dir, &subject),
+        "two.wkt: text after the end of the geometry (line 2, column 1): 'POLYGON'",
+    );
+}
+
+#[test]
+fn unclosed_ring_exits_2_naming_the_ring_instead_of_being_closed() {
+    let dir = scratch("unclosed");
+    let wkt = write(&dir, "open.wkt", "MULTIPOLYGON(((0 0,4 0,4 4,0 0)),((5 5,6 5,6 6)))");
+    assert_input_error(
+        &clip_on(&dir, &wkt),
+        "open.wkt: polygon 1, ring 0 is not closed: it starts at 5 5 and ends at 6 6 (a WKT ring ends where it starts)",
+    );
+    let geojson = write(&dir, "open.geojson", r#"{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4]]]}"#);
+    assert_input_error(
+        &clip_on(&dir, &geojson),
+        "open.geojson: ring 0 is not closed: it starts at [0, 0] and ends at [4, 4]",
+    );
+}
+
+#[test]
+fn polygon_z_is_clipped_in_the_plane_with_a_note_on_stderr() {
+    let dir = scratch("polygon-z");
+    let wkt = write(&dir, "z.wkt", "POLYGON Z((0 0 5,2 0 5,2 2 7,0 2 7,0 0 5))");
+    let geojson =
+        write(&dir, "z.geojson", r#"{"type":"Polygon","coordinates":[[[0,0,5],[2,0,5],[2,2,7],[0,2,7],[0,0,5]]]}"#);
+    let m = write(&dir, "m.wkt", "POLYGON M((0 0 5,2 0 5,2 2 7,0 2 7,0 0 5))");
+    for (file, dropped) in
+        [(&wkt, "z coordinates"), (&geojson, "positions' numbers after x and y (z)"), (&m, "m values")]
+    {
+        let o = clip_on(&dir, file);
+        assert!(o.status.success(), "{file}: {}", stderr(&o));
+        assert!((wkt_area(&stdout(&o)) - 1.0).abs() < 1e-9, "{file}: {}", stdout(&o));
+        assert_eq!(stderr(&o), format!("clipbench: note: {file}: {dropped} dropped: clipping is in the plane\n"));
+    }
+}
+
+#[test]
+fn line_string_among_polygons_exits_2_naming_it_instead_of_being_dropped() {
+    let dir = scratch("mixed");
+    let geojson = write(
+        &dir,
+        "mixed.geojson",
+        r#"{"type":"FeatureCollection","features":[
+            {"type":"Feature","properties":{},"geometry":{"type":"Polygon","coordinates":[[[0,0],[2,0],[2,2],[0,0]]]}},
+            {"type":"Feature","properties":{},"geometry":{"type":"LineString","coordinates":[[0,0],[2,2]]}}]}"#,
+    );
+    let expected = "mixed.geojson: feature 1 is a LineString, but feature 0 is a Polygon: a file holds polygons or line \
+                    strings, not both";
+    assert_input_error(&clip_on(&dir, &geojson), expected);
+    // As the clip operand too, where it was dropped the same way.
+    let square = write(&dir, "square.wkt", "POLYGON((0 0,1 0,1 1,0 1,0 0))");
+    assert_input_error(&clipbench(&["clip", "--clipper", "geo", &square, &geojson]), expected);
+    let wkt = write(&dir, "mixed.wkt", "GEOMETRYCOLLECTION(POLYGON((0 0,2 0,2 2,0 0)),LINESTRING(0 0,2 2))");
+    assert_input_error(&clip_on(&dir, &wkt), "mixed.wkt: member 1 is a LineString, but member 0 is a Polygon");
 }
 
 #[test]
@@ -239,6 +414,90 @@ fn replay_reruns_a_saved_case() {
     let o = clipbench(&["verify", "--replay", &broken]);
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("broken.json"), "{}", stderr(&o));
+}
+
+#[test]
+fn replay_of_a_case_file_that_does_not_hang_together_exits_2_instead_of_passing() {
+    let dir = scratch("replay-checked");
+    write(&dir, "subject.wkt", "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)))");
+    write(&dir, "clip.wkt", "MULTIPOLYGON(((1 1,3 1,3 3,1 3,1 1)))");
+    write(&dir, "segments.wkt", "MULTILINESTRING((0 0,3 3))");
+    write(&dir, "triangle.wkt", "MULTIPOLYGON(((1 1,3 1,3 3,1 1)))");
+    let case = serde_json::json!({
+        "kind": "polygon", "clipper": "clipper2", "check": "disagreement", "other": "geo",
+        "workload": "star", "seed": 1, "index": 0, "window": "any", "op": "union", "fill": "even-odd",
+        "found": "", "shrunk": "", "generated_vertices": [4, 4], "shrunk_vertices": [4, 4],
+        "inputs": ["subject.wkt", "clip.wkt"], "replay": ""
+    });
+    let line = serde_json::json!({"kind": "line", "clipper": "liu", "check": "oracle", "other": null, "op": null, "fill": null});
+    let cases: [(serde_json::Value, &str); 12] = [
+        (
+            serde_json::json!({"kind": "triangle"}),
+            "case.json: unknown kind 'triangle' (a case is a polygon or a line case)",
+        ),
+        (serde_json::json!({"kind": "line"}), "case.json: clipper2 is a polygon clipper, and this is a line case"),
+        (line.clone(), "clip.wkt: the segments must be line strings, but it holds polygons"),
+        (serde_json::json!({"clipper": "liu"}), "case.json: liu is a line clipper, and this is a polygon case"),
+        (
+            serde_json::json!({"other": null}),
+            "case.json: a disagreement case needs 'other', the clipper it disagreed with, and it is missing",
+        ),
+        (
+            serde_json::json!({"check": "oracle"}),
+            "case.json: 'other' (geo) is for a disagreement, and the check here is oracle",
+        ),
+        (
+            serde_json::json!({"check": "triangle"}),
+            "case.json: unknown check 'triangle' (oracle, area-identities or disagreement)",
+        ),
+        (
+            serde_json::json!({"op": null}),
+            "case.json: a polygon disagreement case needs 'op', the operation, and it is missing",
+        ),
+        (serde_json::json!({"fill": null}), "case.json: a polygon case needs 'fill', the fill rule, and it is missing"),
+        (
+            serde_json::json!({"clipper": "rect-four-state", "other": "vatti"}),
+            "case.json: rect-four-state does not do union under even-odd, so verify never ran it",
+        ),
+        (
+            serde_json::json!({
+                "clipper": "rect-four-state", "other": "vatti", "op": "intersection", "window": "rectangle",
+                "inputs": ["subject.wkt", "triangle.wkt"]
+            }),
+            "triangle.wkt: rect-four-state takes rectangle windows only, and this is not one",
+        ),
+        (serde_json::json!({"window": "hexagon"}), "case.json: unknown window 'hexagon' (any, convex or rectangle)"),
+    ];
+    for (changes, problem) in cases {
+        let mut changed = case.clone();
+        for (k, v) in changes.as_object().unwrap() {
+            changed[k] = v.clone();
+        }
+        let file = write(&dir, "case.json", &changed.to_string());
+        let o = clipbench(&["verify", "--replay", &file]);
+        assert_eq!(o.status.code(), Some(2), "{changes}: {}{}", stdout(&o), stderr(&o));
+        assert!(stderr(&o).contains(problem), "{changes}: expected '{problem}' in {}", stderr(&o));
+        assert_eq!(stdout(&o), "", "{changes}");
+    }
+    // A line case on line inputs does run.
+    let mut changed = case.clone();
+    for (k, v) in line.as_object().unwrap() {
+        changed[k] = v.clone();
+    }
+    changed["inputs"] = serde_json::json!(["clip.wkt", "segments.wkt"]);
+    let o = clipbench(&["verify", "--replay", &write(&dir, "line.json", &changed.to_string())]);
+    assert!(
+        o.status.success() && stdout(&o).starts_with("passes now: line liu oracle"),
+        "{}{}",
+        stdout(&o),
+        stderr(&o)
+    );
+    // A missing field is serde's error, naming the field.
+    let mut missing = case.clone();
+    missing.as_object_mut().unwrap().remove("kind");
+    let o = clipbench(&["verify", "--replay", &write(&dir, "missing.json", &missing.to_string())]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("not a verify case file: missing field `kind`"), "{}", stderr(&o));
 }
 
 #[test]

@@ -8,7 +8,7 @@ use geo::Geometry;
 
 use super::suite_case::{CaseInput, PolygonExpectation, SuiteCase};
 use crate::cli_error::{CliError, InputError};
-use crate::read::{parse_wkt, shapes_of};
+use crate::read::{Placed, parse_wkt, shapes_of};
 
 /// Every fixture file's cases (one per expected operation), then `tcases.json`'s.
 pub fn cases(testdata: &Path) -> Result<Vec<SuiteCase>, CliError> {
@@ -70,7 +70,7 @@ fn case(subject: &Polygons, clip: &Polygons, op_name: &str, expected: Polygons) 
 fn polygons(g: &Option<geojson::Geometry>, what: &str) -> Result<Polygons, String> {
     let g = g.as_ref().ok_or_else(|| format!("{what} has no geometry"))?;
     let g = Geometry::<f64>::try_from(&g.value).map_err(|e| format!("{what}: {e}"))?;
-    Ok(shapes_of(&[g]).map_err(|e| format!("{what}: {e}"))?.polygons())
+    Ok(shapes_of(&[Placed::whole(g)]).map_err(|e| format!("{what}: {e}"))?.polygons())
 }
 
 fn fixture(file: &Path) -> Result<Vec<(String, CaseInput)>, String> {
@@ -107,8 +107,8 @@ fn tcases(path: &Path) -> Result<Vec<SuiteCase>, CliError> {
         .map(|(i, r)| {
             let field = |k: &str| r.get(k).and_then(|v| v.as_str()).ok_or_else(|| format!("record {i} has no '{k}'"));
             let wkt = |k: &str| -> Result<Polygons, String> {
-                let geometries = parse_wkt(field(k)?).map_err(|e| format!("record {i} '{k}': {e}"))?;
-                Ok(shapes_of(&geometries)?.polygons())
+                let parsed = parse_wkt(field(k)?).map_err(|e| format!("record {i} '{k}': {e}"))?;
+                Ok(shapes_of(&parsed.geometries)?.polygons())
             };
             let input = (|| case(&wkt("p1")?, &wkt("p2")?, field("op")?, wkt("expected")?))();
             let op = field("op").unwrap_or("?");

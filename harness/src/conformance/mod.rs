@@ -19,6 +19,7 @@ use clip_vatti::Vatti;
 use self::suite_case::{CaseInput, PolygonExpectation, SuiteCase};
 use crate::checks::{line_oracle, output_rules, run_line, run_polygon};
 use crate::cli_error::CliError;
+use crate::console;
 use crate::registry::{LineEntry, Origin, PolygonEntry, Registry};
 use crate::write::write_file;
 
@@ -116,20 +117,23 @@ pub fn run(args: &ConformanceArgs, registry: Registry) -> Result<ExitCode, CliEr
                 Verdict::Skip => t.2 += 1,
                 Verdict::Fail(expected, got) => {
                     t.1 += 1;
-                    println!("{suite_name} {} {}: expected {expected}, got {got}", case.name, clippers[k].0);
+                    console::print_line(format_args!(
+                        "{suite_name} {} {}: expected {expected}, got {got}",
+                        case.name, clippers[k].0
+                    ))?;
                 }
             }
         }
     }
     for ((name, _), (passed, failed, skipped)) in clippers.iter().zip(&tally) {
         let skipped = if *skipped > 0 { format!(", {skipped} skipped") } else { String::new() };
-        println!("{name}: {passed} passed, {failed} failed{skipped}");
+        console::print_line(format_args!("{name}: {passed} passed, {failed} failed{skipped}"))?;
     }
     for ((name, _), (exact, normalised)) in clippers.iter().zip(&readings).filter(|(_, r)| r.0 + r.1 > 0) {
-        println!(
+        console::print_line(format_args!(
             "  ({name}: of its passes, {exact} by the exact area where the stored one is off, {normalised} by \
              Clipper2's live ring count in our ring convention)"
-        );
+        ))?;
     }
     if let (Some(path), Some(case)) = (&args.svg, cases.first()) {
         write_file(path, &picture(&registry, case))?;

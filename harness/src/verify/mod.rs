@@ -8,6 +8,7 @@ mod polygon_runs;
 mod recheck;
 mod record;
 mod replay;
+mod replay_case;
 mod summary;
 
 use std::io::IsTerminal;
@@ -24,6 +25,7 @@ use self::line_runs::LinePlan;
 use self::polygon_runs::PolygonPlan;
 use self::summary::{Row, Summary, table};
 use crate::cli_error::CliError;
+use crate::console;
 use crate::registry::{Origin, Registry};
 use crate::write::write_file;
 
@@ -153,25 +155,25 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         failures_not_recorded: skipped,
         ours_failed,
     };
-    print!("{}", table(&summary.rows));
-    println!(
-        "(vs X: results that differ from X's while both passed the oracle; a difference where one fails is its oracle failure)"
-    );
+    console::print(&table(&summary.rows))?;
+    console::print_line(
+        "(vs X: results that differ from X's while both passed the oracle; a difference where one fails is its oracle failure)",
+    )?;
     if !written.is_empty() {
-        println!(
+        console::print_line(format_args!(
             "{} failure case(s) shrunk and written under {}{}; replay one with: clipbench verify --replay {}",
             written.len(),
             args.out.display(),
             if skipped > 0 { format!(" ({skipped} more not written: --max-records)") } else { String::new() },
             written[0].join("case.json").display()
-        );
+        ))?;
     }
     if let Some(path) = &args.json {
         let text = serde_json::to_string_pretty(&summary).map_err(|e| CliError::failed(e.to_string()))?;
         write_file(path, &(text + "\n"))?;
     }
     if ours_failed {
-        println!("FAILED: a clipper of this project failed the oracle");
+        console::print_line("FAILED: a clipper of this project failed the oracle")?;
         Ok(ExitCode::FAILURE)
     } else {
         Ok(ExitCode::SUCCESS)

@@ -3,49 +3,39 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use clip_core::{BoolOp, FillRule, Operand};
+use clip_core::{Operand, validate_window};
 
-use super::recheck::{Target, line_failure, polygon_failure};
+use super::finding::Kind;
+use super::recheck::{line_failure, polygon_failure};
 use super::record::CaseFile;
-use crate::checks::Check;
+use super::replay_case;
 use crate::cli_error::{CliError, InputError};
+use crate::console;
 use crate::read::{read_polygons, read_segments};
-use crate::registry::{Registry, unknown_clipper};
+use crate::registry::Registry;
 
 /// Replays the case file at `path`: exit 1 when the failure is still there, 0 when it is gone.
 pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
     let case: CaseFile =
         serde_json::from_str(&text).map_err(|e| InputError::new(path, format!("not a verify case file: {e}")))?;
+    let replay = replay_case::checked(&case, registry, path)?;
     let dir = path.parent().unwrap_or(Path::new("."));
-    let known = |name: &str| {
-        registry.names().into_iter().find(|n| *n == name).ok_or_else(|| unknown_clipper(name, &registry.names()))
-    };
-    let clipper = known(&case.clipper)?;
-    let check = match (case.check.as_str(), &case.other) {
-        ("oracle", _) => Check::Oracle,
-        ("area-identities", _) => Check::AreaIdentities,
-        ("disagreement", Some(other)) => Check::Disagreement(known(other)?),
-        (other, _) => return Err(InputError::new(path, format!("unknown check '{other}'")).into()),
-    };
-    let parse_op = |s: &String| s.parse::<BoolOp>().map_err(|e| CliError::from(InputError::new(path, e.to_string())));
-    let parse_fill =
-        |s: &String| s.parse::<FillRule>().map_err(|e| CliError::from(InputError::new(path, e.to_string())));
-    let target = Target {
-        clipper,
-        check,
-        op: case.op.as_ref().map(parse_op).transpose()?,
-        fill: case.fill.as_ref().map(parse_fill).transpose()?,
-    };
     let (first, second) = (dir.join(&case.inputs[0]), dir.join(&case.inputs[1]));
-    let failure = if case.kind == "line" {
-        let window = read_polygons(&first, Operand::Window)?;
-        let segments = read_segments(&second)?;
-        line_failure(registry, target, &window, &segments)
-    } else {
-        let subject = read_polygons(&first, Operand::Subject)?;
-        let clip = read_polygons(&second, Operand::Clip)?;
-        polygon_failure(registry, target, &subject, &clip)
+    let failure = match replay.kind {
+        Kind::Line => {
+            let window = read_polygons(&first, Operand::Window)?;
+            validate_window(&window).map_err(|e| InputError::new(&first, e.to_string()))?;
+            replay.takes_window(&window, &first)?;
+            let segments = read_segments(&second)?;
+            line_failure(registry, replay.target, &window, &segments)
+        }
+        Kind::Polygon => {
+            let subject = read_polygons(&first, Operand::Subject)?;
+            let clip = read_polygons(&second, Operand::Clip)?;
+            replay.takes_window(&clip, &second)?;
+            polygon_failure(registry, replay.target, &subject, &clip)
+        }
     };
     let what = format!(
         "{} {} {} ({} case {} of seed {}{}{})",
@@ -60,11 +50,11 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
     );
     match failure {
         Some(message) => {
-            println!("still fails: {what}: {message}");
+            console::print_line(format_args!("still fails: {what}: {message}"))?;
             Ok(ExitCode::FAILURE)
         }
         None => {
-            println!("passes now: {what}");
+            console::print_line(format_args!("passes now: {what}"))?;
             Ok(ExitCode::SUCCESS)
         }
     }
