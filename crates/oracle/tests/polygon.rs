@@ -497,8 +497,11 @@ fn only_rings_of_rounded_crossings_may_run_either_way() {
     let sliver = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1e-4), (4.0, 0.0)]));
     assert!(check_valid_result_within(&sliver, snap, [&input, &Polygons::default()]).is_ok());
     assert!(check_valid_output_within(&sliver, snap).is_err());
-    // The same turn made of input vertices only is caught.
-    let thin_input = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1e-4), (4.0, 0.0), (2.0, -1.0)]));
+    // The same ring made of input vertices and edges only is caught; with one edge along no input
+    // edge it is not.
+    let thin_input = Polygons::from(ring(&[(0.0, 0.0), (4.0, 0.0), (2.0, 1e-4)]));
+    let two_edges = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1e-4), (4.0, 0.0), (2.0, -1.0)]));
+    assert!(check_valid_result_within(&sliver, snap, [&two_edges, &Polygons::default()]).is_ok());
     assert!(check_valid_result_within(&sliver, snap, [&thin_input, &Polygons::default()]).is_err());
     // Wide enough to matter: caught.
     let wide = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1.0), (4.0, 0.0)]));
