@@ -1,35 +1,13 @@
-//! clipbench: verify clipping algorithms against exact oracles, peer libraries and external
-//! suites, reproduce the papers' performance tables (Vatti 1992, Table 3; Wang, Lu, Peng and Wu
-//! 2005, Table 4; full citations in `papers` and the README), benchmark every polygon clipper
-//! against geo and Clipper2, and run one clipping operation on files by hand. One module per
-//! command; the clippers are in `registry`. Results flow one way: `bench` and `reproduce` measure
-//! and write the raw files (`results_files`), then this dispatcher has `report` turn them into
-//! REPORT.md. The conventions every check relies on are set out in the repository's
-//! `docs/DESIGN.md`.
-
-mod bench;
-mod checks;
-mod cli_error;
-mod clip;
-mod conformance;
-mod console;
-mod measure;
-mod papers;
-mod plot;
-mod read;
-mod registry;
-mod report;
-mod reproduce;
-mod results_files;
-mod verify;
-mod write;
+//! The `clipbench` command: parses the command line and dispatches to the library's command
+//! modules (see `lib.rs`).
 
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-use crate::cli_error::CliError;
-use crate::registry::Registry;
+use clipbench::cli_error::CliError;
+use clipbench::registry::Registry;
+use clipbench::{bench, checks, clip, conformance, registry, report, reproduce, verify};
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
 /// Clipper2), and one-off clipping of WKT/GeoJSON files.

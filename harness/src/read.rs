@@ -77,14 +77,20 @@ pub struct Parsed {
 /// dropped in reading is said on standard error.
 pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
-    let parsed = if is_geojson(path) { parse_geojson(&text) } else { parse_wkt(&text) }
-        .map_err(|problem| InputError::new(path, problem))?;
-    // An empty geometry (`MULTIPOLYGON EMPTY`) is the empty region, a valid operand.
-    let shapes = shapes_of(&parsed.geometries).map_err(|problem| InputError::new(path, problem))?;
-    for note in &parsed.dropped {
+    let (shapes, dropped) =
+        shapes_from_text(&text, is_geojson(path)).map_err(|problem| InputError::new(path, problem))?;
+    for note in &dropped {
         console::note(format_args!("{}: {note}", path.display()));
     }
     Ok(shapes)
+}
+
+/// A file's text read as [`read_shapes`] reads it (GeoJSON or WKT): its shapes, and one note for
+/// each thing reading dropped. The `readers` fuzz target calls this with any text.
+pub fn shapes_from_text(text: &str, geojson: bool) -> Result<(Shapes, Vec<String>), String> {
+    let parsed = if geojson { parse_geojson(text) } else { parse_wkt(text) }?;
+    // An empty geometry (`MULTIPOLYGON EMPTY`) is the empty region, a valid operand.
+    Ok((shapes_of(&parsed.geometries)?, parsed.dropped))
 }
 
 /// Reads a polygon operand and validates it (finite, in range, rings of at least 3 points).

@@ -9,6 +9,12 @@ use crate::{FillRule, Point, Polygons, Rect, Ring, Segment};
 /// and sums of a few such products, stay finite, so the exact predicates stay exact.
 pub const MAX_COORDINATE: f64 = 1.0e150;
 
+/// Smallest non-zero coordinate magnitude accepted. Above it every non-zero coordinate
+/// difference is at least an ulp of 1e-100 (about 1e-116), so products of two differences, and of
+/// their rounding errors, stay normal numbers: the exact predicates stay exact, and lengths and
+/// parameters along segments do not underflow. Zero is always accepted.
+pub const MIN_COORDINATE: f64 = 1.0e-100;
+
 /// Which input a problem was found in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Operand {
@@ -51,9 +57,11 @@ pub enum ClipError {
         /// The y found.
         y: f64,
     },
-    /// A coordinate's magnitude exceeds [`MAX_COORDINATE`].
+    /// A coordinate's magnitude exceeds [`MAX_COORDINATE`], or is below [`MIN_COORDINATE`] but
+    /// not zero.
     #[error(
-        "{operand} {part}, vertex {vertex}: coordinate {value:e} is beyond the supported range ±{MAX_COORDINATE:e}"
+        "{operand} {part}, vertex {vertex}: coordinate {value:e} is outside the supported range (magnitudes \
+         {MIN_COORDINATE:e} to {MAX_COORDINATE:e}, or zero)"
     )]
     OutOfRange {
         /// Which input.
@@ -110,7 +118,7 @@ fn check_point(p: Point, operand: Operand, part: usize, vertex: usize) -> Result
         return Err(ClipError::NonFinite { operand, part, vertex, x: p.x, y: p.y });
     }
     for value in [p.x, p.y] {
-        if value.abs() > MAX_COORDINATE {
+        if value.abs() > MAX_COORDINATE || (value != 0.0 && value.abs() < MIN_COORDINATE) {
             return Err(ClipError::OutOfRange { operand, part, vertex, value });
         }
     }

@@ -7,13 +7,14 @@
 //! clippers behind. Conventions (output orientation, the closed-set rule for lines) are set out
 //! in the repository's `docs/DESIGN.md` and are restated where each applies.
 //!
-//! Coordinates are f64 with `y` up; counter-clockwise is positive. Magnitudes up to
-//! [`MAX_COORDINATE`] are accepted.
+//! Coordinates are f64 with `y` up; counter-clockwise is positive. Magnitudes from
+//! [`MIN_COORDINATE`] up to [`MAX_COORDINATE`], and zero, are accepted.
 //!
 //! # Limits
 //!
 //! The predicates are exact, but points this crate computes (segment crossings, points along a
-//! segment) are rounded to f64. Coordinates beyond [`MAX_COORDINATE`], NaN and infinities are
+//! segment) are rounded to f64. Coordinates beyond [`MAX_COORDINATE`], non-zero ones below
+//! [`MIN_COORDINATE`] (where products of differences would underflow), NaN and infinities are
 //! refused by the `validate_*` functions with a [`ClipError`]. No clipping algorithm lives here:
 //! the clippers are in their own crates.
 //!
@@ -59,7 +60,7 @@ pub use clipper::{
     LineCapabilities, LineClipper, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece, WindowKind,
 };
 pub use error::{
-    ClipError, MAX_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
+    ClipError, MAX_COORDINATE, MIN_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
     validate_segments, validate_window, window_covers,
 };
 pub use line_crossings::{LineCrossings, PARAMETER_SNAP};

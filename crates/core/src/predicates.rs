@@ -41,11 +41,44 @@ fn coord(p: Point) -> robust::Coord<f64> {
     robust::Coord { x: p.x, y: p.y }
 }
 
-/// Twice the signed area of triangle `abc`, with an exactly right sign (its magnitude is an
-/// approximation). Positive when `c` lies left of the directed line `a -> b`.
+/// Below this fraction of its terms' size, the plain determinant's magnitude is not trusted.
+const TRUSTED_FRACTION: f64 = 1e-8;
+
+/// Twice the signed area of triangle `abc`, with an exactly right sign and a magnitude accurate to
+/// a few ulps of the triangle's two sides at its widest angle. Positive when `c` lies left of the
+/// directed line `a -> b`.
+///
+/// Callers place crossings by these magnitudes (`t = ga / (ga - gb)`), so the magnitude matters
+/// too. Shewchuk's adaptive `orient2d` stops refining as soon as the sign is certain, with the
+/// magnitude then off by up to its whole size, and its pivot at `c` cancels badly when `a` and `b`
+/// are close together (found by the `window_clippers` fuzz target: a window edge 2.2e-16 long put
+/// a crossing 0.003 off). So where the plain determinant is not clearly above its rounding, the
+/// magnitude is recomputed at the triangle's widest angle (opposite its longest side), with the
+/// sign still from the exact predicate.
 #[inline]
 pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
-    robust::orient2d(coord(a), coord(b), coord(c))
+    let (left, right) = ((a.x - c.x) * (b.y - c.y), (a.y - c.y) * (b.x - c.x));
+    let det = left - right;
+    if det.abs() > TRUSTED_FRACTION * (left.abs() + right.abs()) {
+        return det;
+    }
+    let exact = robust::orient2d(coord(a), coord(b), coord(c));
+    let refined = cross_at_widest_angle(a, b, c);
+    if (refined > 0.0 && exact > 0.0) || (refined < 0.0 && exact < 0.0) { refined } else { exact }
+}
+
+/// `orient2d`'s determinant taken at the vertex opposite the longest side, where the two sides
+/// multiplied are the shortest and their rounding the smallest.
+fn cross_at_widest_angle(a: Point, b: Point, c: Point) -> f64 {
+    let squared = |p: Point, q: Point| (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
+    let (ab, bc, ca) = (squared(a, b), squared(b, c), squared(c, a));
+    if ab >= bc && ab >= ca {
+        (a - c).cross(b - c)
+    } else if bc >= ca {
+        (b - a).cross(c - a)
+    } else {
+        (c - b).cross(a - b)
+    }
 }
 
 /// The exact turn of `a -> b -> c`.

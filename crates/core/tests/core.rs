@@ -273,6 +273,11 @@ fn validation_errors_are_typed() {
     assert!(matches!(validate_polygons(&inf, Operand::Clip), Err(ClipError::NonFinite { part: 1, .. })));
     let huge = Polygons::from(ring(&[(0.0, 0.0), (1e200, 1.0), (1.0, 0.0)]));
     assert!(matches!(validate_polygons(&huge, Operand::Subject), Err(ClipError::OutOfRange { .. })));
+    // Found by the line_clippers fuzz target: a segment 8e-317 long has a squared length of 0.
+    let tiny = [Segment::new(p(8.2782315e-317, 0.0), p(0.0, 0.0))];
+    assert!(matches!(validate_segments(&tiny), Err(ClipError::OutOfRange { part: 0, vertex: 0, .. })));
+    let small = Polygons::from(ring(&[(0.0, 0.0), (1e-100, 0.0), (0.0, -1e-100)]));
+    assert!(validate_polygons(&small, Operand::Subject).is_ok(), "MIN_COORDINATE itself and zero are accepted");
     let two = Polygons::from(ring(&[(0.0, 0.0), (1.0, 1.0), (0.0, 0.0), (1.0, 1.0)]));
     assert!(matches!(validate_polygons(&two, Operand::Subject), Err(ClipError::TooFewPoints { distinct: 2, .. })));
     // Collinear rings with three distinct points are valid operands (they cover nothing).
@@ -410,4 +415,18 @@ fn distinct_points_up_to_a_limit_agree_with_the_full_count() {
     for limit in 0..6 {
         assert_eq!(ring.distinct_points_up_to(limit), limit.min(4), "{limit}");
     }
+}
+
+/// Found by the `window_clippers` fuzz target: against a boundary 2.2e-16 long, Shewchuk's
+/// adaptive orient2d has a certain sign but a magnitude 4% off, which moved Sutherland-Hodgman's
+/// crossing by 0.003. The magnitude is now accurate to a few ulps.
+#[test]
+fn orient2d_magnitude_is_accurate_on_a_short_edge() {
+    let (a, b) = (Point::new(3.1, 1.7), Point::new(3.1, 1.7000000000000002));
+    let c = Point::new(3.391044776119403, 1.7970149253731345);
+    let exact = -(b.y - a.y) * (c.x - a.x);
+    let got = clip_core::predicates::orient2d(a, b, c);
+    assert!((got - exact).abs() <= 4.0 * f64::EPSILON * exact.abs(), "{got:e} vs {exact:e}");
+    // Far from degenerate, the plain determinant, with its exact sign.
+    assert_eq!(clip_core::predicates::orient2d(Point::new(0.0, 0.0), Point::new(2.0, 0.0), Point::new(0.0, 3.0)), 6.0);
 }

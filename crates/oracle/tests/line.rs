@@ -184,3 +184,36 @@ proptest! {
         }
     }
 }
+
+/// Found by the `line_clippers` fuzz target: at 1e9 an ulp is 1.2e-7, so a piece of a segment
+/// 2.3e-6 long ends up to 5% of it off the exact crossing, whatever the clipper does.
+#[test]
+fn short_segments_far_from_the_origin_are_judged_at_their_rounding() {
+    let (o, d) = (1e9, 1e-6);
+    let window = Polygons::from(Rect::new(o, o, o + 2.0 * d, o + 2.0 * d));
+    let s = Segment::new(Point::new(o - d, o + d), Point::new(o + d, o + d));
+    let rounded = |x: f64| Point::new(x, o + d);
+    // The exact piece starts at t = 0.5; an ulp later is still right, 20% later is not.
+    let near = [VisiblePiece { segment: 0, piece: Segment::new(rounded((o).next_up()), s.b) }];
+    assert_eq!(check_line_batch(&window, &[s], &near, LINE_T_TOLERANCE), Ok(()));
+    let far = [VisiblePiece { segment: 0, piece: Segment::new(rounded(o + 0.4 * d), s.b) }];
+    assert!(check_line_batch(&window, &[s], &far, LINE_T_TOLERANCE).is_err());
+    assert!(parameter_tolerance(&window.bounds(), s, LINE_T_TOLERANCE) > 0.05);
+    let near_origin = Segment::new(Point::new(0.0, 0.0), Point::new(1.0, 0.0));
+    assert_eq!(parameter_tolerance(&Rect::new(0.0, 0.0, 1.0, 1.0), near_origin, LINE_T_TOLERANCE), LINE_T_TOLERANCE);
+}
+
+/// Found by the `line_clippers` fuzz target: intervals of 0.083 (expected) and 0.099 (got)
+/// around a tolerance of 0.087 agree; they used to be compared after each side dropped its
+/// intervals shorter than the tolerance, so one counted and the other did not.
+#[test]
+fn intervals_near_the_tolerance_agree_both_ways() {
+    let window = Polygons::from(Rect::new(0.0, 0.0, 1.0, 1.0));
+    let s = Segment::new(Point::new(-1.0, 0.5), Point::new(1.0, 0.5));
+    // Exact: t in [0.5, 1]. A piece ending a little early is fine within a loose tolerance
+    // and wrong within a tight one; a missing half is wrong at both.
+    let short = [VisiblePiece { segment: 0, piece: s.piece(0.5, 0.95) }];
+    assert_eq!(check_line_batch(&window, &[s], &short, 0.06), Ok(()));
+    assert!(check_line_batch(&window, &[s], &short, 0.01).is_err());
+    assert!(check_line_batch(&window, &[s], &[], 0.06).is_err());
+}

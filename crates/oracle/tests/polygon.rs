@@ -471,3 +471,39 @@ fn the_rounding_term_is_negligible_near_the_origin() {
     let rounding = tolerance(&a, &b, 0.0);
     assert!(rounding > 0.0 && rounding < 1e-13, "{rounding:e}");
 }
+
+/// Found by the `vatti` fuzz target: a thin triangle near 1e140 whose shoelace sum cancels to 0
+/// is counter-clockwise (exact turn at its lowest vertex), so as its own union it is valid; the
+/// same ring reversed is still caught.
+#[test]
+fn orientation_is_exact_where_the_shoelace_cancels() {
+    let t = Polygons::from(ring(&[(6.000000000000001e140, 2e140), (-1e15, 1e15), (3.0000000000000004e140, 1e140)]));
+    assert_eq!(t.signed_area(), 0.0);
+    let empty = Polygons::default();
+    assert_eq!(check_valid_output(&t), Ok(()));
+    let reversed = Polygons::from(t.rings[0].reversed());
+    assert!(check_valid_output(&reversed).is_err());
+    let rules = OutputRules::conventional(REGION_TOLERANCE);
+    assert!(check_polygon_result(&t, &empty, BoolOp::Union, FillRule::NonZero, &t, &rules).is_ok());
+}
+
+/// Found by the `vatti` fuzz target: a ring of rounded crossings may come out inside out when its
+/// area is within the snap distance times its perimeter; a ring of input vertices may not.
+#[test]
+fn only_rings_of_rounded_crossings_may_run_either_way() {
+    let input = Polygons::from(ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)]));
+    let snap = 1e-3;
+    // Clockwise, 1e-4 wide: one vertex is not an input vertex.
+    let sliver = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1e-4), (4.0, 0.0)]));
+    assert!(check_valid_result_within(&sliver, snap, [&input, &Polygons::default()]).is_ok());
+    assert!(check_valid_output_within(&sliver, snap).is_err());
+    // The same ring made of input vertices and edges only is caught; with one edge along no input
+    // edge it is not.
+    let thin_input = Polygons::from(ring(&[(0.0, 0.0), (4.0, 0.0), (2.0, 1e-4)]));
+    let two_edges = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1e-4), (4.0, 0.0), (2.0, -1.0)]));
+    assert!(check_valid_result_within(&sliver, snap, [&two_edges, &Polygons::default()]).is_ok());
+    assert!(check_valid_result_within(&sliver, snap, [&thin_input, &Polygons::default()]).is_err());
+    // Wide enough to matter: caught.
+    let wide = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1.0), (4.0, 0.0)]));
+    assert!(check_valid_result_within(&wide, snap, [&input, &Polygons::default()]).is_err());
+}

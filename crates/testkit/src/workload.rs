@@ -7,6 +7,7 @@ mod wang;
 mod windows;
 
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
+pub use shapes::convex_hull;
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};

@@ -7,7 +7,7 @@ use crate::bounds::NONE;
 
 /// Relative distance within which a computed crossing point counts as on an edge: a few dozen
 /// ulps, the rounding of one crossing computation.
-pub(crate) const ROUNDING: f64 = 64.0 * f64::EPSILON;
+pub(crate) const ROUNDING: f64 = 4.0 * f64::EPSILON;
 
 /// An edge of a bound while it is active (the paper's edge record, Table 1). Never horizontal.
 #[derive(Clone, Debug)]

@@ -396,8 +396,11 @@ impl<'a> Sweep<'a> {
         let rec = self.out.add_local_min(left, right, p);
         self.ael.get_mut(left).outrec = rec;
         self.ael.get_mut(right).outrec = rec;
-        self.node_neighbours(left, p);
-        self.node_neighbours(right, p);
+        // At a local minimum p is an input vertex (of one bound at least, with a horizontal
+        // bottom); elsewhere here a rounded crossing.
+        let rounded = !self.is_vertex_of(left, p) && !self.is_vertex_of(right, p);
+        self.node_neighbours(left, p, rounded);
+        self.node_neighbours(right, p, rounded);
     }
 
     /// True when edges `a` and `b` lie on one line (exact).
@@ -406,10 +409,18 @@ impl<'a> Sweep<'a> {
         !ea.moving && ea.side_of(eb.bot) == Orientation::Collinear && ea.side_of(eb.top) == Orientation::Collinear
     }
 
+    /// True when `p` is an end of edge `id`: an input vertex, exact.
+    fn is_vertex_of(&self, id: u32, p: Point) -> bool {
+        let e = self.ael.get(id);
+        p == e.bot || p == e.top
+    }
+
     /// Output vertex `p` also goes into the chains of contributing edges that pass exactly
     /// through it (coincident edges lie next to `id`), so overlapping output edges share their
-    /// end points and cancel in the clean-up.
-    fn node_neighbours(&mut self, id: u32, p: Point) {
+    /// end points and cancel in the clean-up. Only a `rounded` point (a computed crossing) may be
+    /// within rounding of an edge instead of on it: an input vertex is exact, and far from the
+    /// origin the rounding allowance (dozens of ulps of the magnitude) spans whole input edges.
+    fn node_neighbours(&mut self, id: u32, p: Point, rounded: bool) {
         for rightwards in [false, true] {
             let mut pos = self.ael.pos(id);
             for _ in 0..self.ael.len() {
@@ -429,7 +440,9 @@ impl<'a> Sweep<'a> {
                 if p.y < e.bot.y
                     || p.y > e.top.y
                     || !e.near(p, 1e-9)
-                    || (e.side_of(p) != Orientation::Collinear && !self.coincident(id, k) && !e.near(p, ROUNDING))
+                    || (e.side_of(p) != Orientation::Collinear
+                        && !self.coincident(id, k)
+                        && !(rounded && e.near(p, ROUNDING)))
                 {
                     break;
                 }
@@ -454,7 +467,8 @@ impl<'a> Sweep<'a> {
         if rec != NONE {
             let left = self.is_left(id);
             self.out.add(rec, left, p);
-            self.node_neighbours(id, p);
+            let rounded = !self.is_vertex_of(id, p);
+            self.node_neighbours(id, p, rounded);
         }
     }
 

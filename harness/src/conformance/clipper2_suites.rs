@@ -60,13 +60,20 @@ pub fn line_cases(testdata: &Path) -> Result<Vec<SuiteCase>, CliError> {
         .collect())
 }
 
-type Record = Result<Clipper2Case, String>;
+/// A record of the suite, or why it is malformed (`file:line: problem`).
+pub type Record = Result<Clipper2Case, String>;
 
 fn read(path: &Path) -> Result<Vec<(String, Record)>, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
-    let records = parse_clipper2(&text);
+    records(&text, path).map_err(|problem| InputError::new(path, problem).into())
+}
+
+/// The numbered records of a suite file's text (`path` names it in messages); an error when it
+/// holds none. The `readers` fuzz target calls this with any text.
+pub fn records(text: &str, path: &Path) -> Result<Vec<(String, Record)>, String> {
+    let records = parse_clipper2(text);
     if records.is_empty() {
-        return Err(InputError::new(path, "no CAPTION: record found".into()).into());
+        return Err("no CAPTION: record found".into());
     }
     Ok(records
         .into_iter()

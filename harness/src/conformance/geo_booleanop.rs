@@ -75,6 +75,12 @@ fn polygons(g: &Option<geojson::Geometry>, what: &str) -> Result<Polygons, Strin
 
 fn fixture(file: &Path) -> Result<Vec<(String, CaseInput)>, String> {
     let text = std::fs::read_to_string(file).map_err(|e| format!("{}: cannot read it: {e}", file.display()))?;
+    fixture_cases(&text, file)
+}
+
+/// The cases of a fixture file's text (`file` names it in messages): subject, clip, then one
+/// expected result per operation. The `readers` fuzz target calls this with any text.
+pub fn fixture_cases(text: &str, file: &Path) -> Result<Vec<(String, CaseInput)>, String> {
     let fc: geojson::FeatureCollection =
         text.parse().map_err(|e| format!("{}: not a GeoJSON FeatureCollection: {e}", file.display()))?;
     if fc.features.len() < 3 {
@@ -99,8 +105,13 @@ fn fixture(file: &Path) -> Result<Vec<(String, CaseInput)>, String> {
 /// `tcases.json`: WKT inputs `p1`, `p2`, an operation and the expected WKT.
 fn tcases(path: &Path) -> Result<Vec<SuiteCase>, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
-    let records: Vec<serde_json::Value> =
-        serde_json::from_str(&text).map_err(|e| InputError::new(path, format!("not a JSON array: {e}")))?;
+    tcases_of(&text, path).map_err(|problem| InputError::new(path, problem).into())
+}
+
+/// The cases of a `tcases.json` text (`path` names it in messages). The `readers` fuzz target
+/// calls this with any text.
+pub fn tcases_of(text: &str, path: &Path) -> Result<Vec<SuiteCase>, String> {
+    let records: Vec<serde_json::Value> = serde_json::from_str(text).map_err(|e| format!("not a JSON array: {e}"))?;
     Ok(records
         .iter()
         .enumerate()

@@ -2,9 +2,9 @@
 //! answers (Clipper2's `Polygons.txt` and `Lines.txt`, geo's boolean-op fixtures), one line per
 //! failing case and a `N passed, M failed` line per clipper.
 
-mod clipper2_suites;
-mod geo_booleanop;
-mod suite_case;
+pub mod clipper2_suites;
+pub mod geo_booleanop;
+pub mod suite_case;
 
 use std::path::PathBuf;
 use std::process::ExitCode;

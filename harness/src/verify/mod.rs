@@ -6,9 +6,9 @@ mod finding;
 mod line_runs;
 mod polygon_runs;
 mod recheck;
-mod record;
-mod replay;
-mod replay_case;
+pub mod record;
+pub mod replay;
+pub mod replay_case;
 mod summary;
 
 use std::io::IsTerminal;

@@ -8,7 +8,7 @@ use clip_core::{Operand, validate_window};
 use super::finding::Kind;
 use super::recheck::{line_failure, polygon_failure};
 use super::record::CaseFile;
-use super::replay_case;
+use super::replay_case::{self, Replay};
 use crate::cli_error::{CliError, InputError};
 use crate::console;
 use crate::read::{read_polygons, read_segments};
@@ -17,9 +17,7 @@ use crate::registry::Registry;
 /// Replays the case file at `path`: exit 1 when the failure is still there, 0 when it is gone.
 pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
     let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
-    let case: CaseFile =
-        serde_json::from_str(&text).map_err(|e| InputError::new(path, format!("not a verify case file: {e}")))?;
-    let replay = replay_case::checked(&case, registry, path)?;
+    let (case, replay) = read_case(&text, path, registry)?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let (first, second) = (dir.join(&case.inputs[0]), dir.join(&case.inputs[1]));
     let failure = match replay.kind {
@@ -58,4 +56,14 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// A case file's text (read from `path`) parsed and checked against itself and the registry:
+/// what `--replay` runs, or the one-line error saying what does not hang together. The `readers`
+/// fuzz target calls this with any text.
+pub fn read_case(text: &str, path: &Path, registry: &Registry) -> Result<(CaseFile, Replay), CliError> {
+    let case: CaseFile =
+        serde_json::from_str(text).map_err(|e| InputError::new(path, format!("not a verify case file: {e}")))?;
+    let replay = replay_case::checked(&case, registry, path)?;
+    Ok((case, replay))
 }

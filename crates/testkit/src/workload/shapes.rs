@@ -177,7 +177,7 @@ pub(crate) fn dedup_consecutive(points: &mut Vec<Point>) {
 
 /// The convex hull of some points, counter-clockwise, collinear points dropped (Andrew's
 /// monotone chain with exact orientation). Fewer than 3 points when they are all collinear.
-pub(crate) fn convex_hull(points: &[Point]) -> Vec<Point> {
+pub fn convex_hull(points: &[Point]) -> Vec<Point> {
     let mut pts = points.to_vec();
     pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
     pts.dedup();

@@ -1,0 +1,54 @@
+//! Vatti bugs the `vatti` fuzz target found (inputs and pictures under `fuzz/regressions/vatti/`),
+//! as plain polygons: each operation's output must pass the exact oracle.
+
+use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Ring};
+use clip_oracle::polygon::{OutputRules, REGION_TOLERANCE, check_polygon_result};
+use clip_vatti::Vatti;
+
+fn ring(points: &[(f64, f64)]) -> Polygons {
+    Polygons::from(Ring::new(points.iter().map(|&(x, y)| Point::new(x, y)).collect()))
+}
+
+fn assert_every_op_passes(subject: &Polygons) {
+    for op in BoolOp::ALL {
+        let out = Vatti.clip(subject, &Polygons::default(), op, FillRule::EvenOdd).expect("valid input");
+        let rules = OutputRules::conventional(REGION_TOLERANCE);
+        let verdict = check_polygon_result(subject, &Polygons::default(), op, FillRule::EvenOdd, &out, &rules);
+        assert!(verdict.is_ok(), "{op}: {}\noutput: {:?}", verdict.unwrap_err(), out.rings);
+    }
+}
+
+/// A triangle 7 × 5 at 1e15 (an ulp is 0.125): its lowest vertex went into the other bound's
+/// chain, which passes 7 units away but within 64 ulps of the magnitude, and the ring vanished.
+#[test]
+fn small_triangle_far_from_the_origin_survives() {
+    let t = ring(&[(-999999999999993.0, 1e15), (-999999999999997.0, 1000000000000005.0), (-1e15, 1e15)]);
+    assert_every_op_passes(&t);
+    let union = Vatti.clip(&t, &Polygons::default(), BoolOp::Union, FillRule::EvenOdd).unwrap();
+    assert_eq!(union.signed_area(), 17.5);
+}
+
+/// A sliver whose bounds leave (-6.9, -6.3) 1e-16 apart in slope: a rounded x at the top of the
+/// first bound swapped them, and the triangle came out clockwise.
+#[test]
+fn sliver_keeps_its_orientation() {
+    let sliver =
+        ring(&[(0.10000000000000007, 0.7), (0.1000000000000001, 0.7000000000000003), (-6.8999999999999995, -6.3)]);
+    assert!(sliver.signed_area() > 0.0);
+    assert_every_op_passes(&sliver);
+    let union = Vatti.clip(&sliver, &Polygons::default(), BoolOp::Union, FillRule::EvenOdd).unwrap();
+    assert!(union.signed_area() > 0.0, "{:?}", union.rings);
+}
+
+/// A self-crossing quadrilateral 18 units across at 1e15: rounded crossings went into the chains
+/// of edges up to 14 units away, and every result was empty.
+#[test]
+fn self_crossing_quad_far_from_the_origin_survives() {
+    let quad = ring(&[
+        (-1e15, 1000000000000003.0),
+        (-1e15, 1e15),
+        (-999999999999982.0, 1000000000000015.0),
+        (-999999999999991.0, 1e15),
+    ]);
+    assert_every_op_passes(&quad);
+}
