@@ -47,7 +47,7 @@ fn main() -> ExitCode {
         Command::Conformance(args) => conformance::run(args, registry),
         Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
         Command::Reproduce(args) => reproduce_then_report(args),
-        Command::Bench(args) => bench_then_report(args, &registry),
+        Command::Bench(args) => bench_then_report(args, registry),
         Command::Report(args) => report::run(args),
     };
     match result {
@@ -76,9 +76,9 @@ fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, Cl
 
 /// `clipbench bench`: the raw files measured, then the bench tables and plots, then REPORT.md.
 /// The hidden memory-probe mode only measures and prints, and writes no files.
-fn bench_then_report(args: &bench::BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> {
+fn bench_then_report(args: &bench::BenchArgs, registry: Registry) -> Result<ExitCode, CliError> {
     if let Some(spec) = &args.memory_probe {
-        return bench::run_memory_probe(spec, args.seed, registry);
+        return bench::run_memory_probe(spec, args.seed, &registry);
     }
     let out = bench::run(args, registry)?;
     report::bench_tables::write(&out)?;

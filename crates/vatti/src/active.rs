@@ -18,6 +18,9 @@ pub(crate) struct Edge {
     pub top: Point,
     /// x at the current scanline (the paper's `xbot`).
     pub curr_x: f64,
+    /// x at height `next_y`, computed once per scanbeam for its top (NaN height: none).
+    pub next_x: f64,
+    pub next_y: f64,
     /// Subject or clip.
     pub kind: u8,
     /// Winding change when crossing this edge from left to right: +1 where the ring runs
@@ -31,7 +34,7 @@ pub(crate) struct Edge {
     pub top_vertex: u32,
     /// True when the bound walks the ring forwards.
     pub forward: bool,
-    /// False once the edge has ended (reached its top and was replaced or removed).
+    /// False once the bound has ended (at a local maximum).
     pub alive: bool,
     /// True while the edge waits to slide along a horizontal at the current scanline.
     pub moving: bool,
@@ -61,6 +64,25 @@ impl Edge {
         }
     }
 
+    /// x at `y`, from the scanbeam's cache when it is for `y`.
+    #[inline]
+    pub(crate) fn x_at_cached(&self, y: f64) -> f64 {
+        if y == self.next_y { self.next_x } else { self.x_at(y) }
+    }
+
+    /// False when `p` (at a height within the edge's span) is clearly farther than
+    /// `relative` times the coordinates' magnitude from the edge in x: a test without division,
+    /// with twice the margin, done before [`Edge::near`].
+    #[inline]
+    pub(crate) fn maybe_near(&self, p: Point, relative: f64) -> bool {
+        let d = self.top - self.bot;
+        // (x_at(p.y) - p.x) * dy, with dy > 0.
+        let off = (self.bot.x - p.x) * d.y + (p.y - self.bot.y) * d.x;
+        // At least the largest magnitude `near` scales by.
+        let sum = self.bot.x.abs() + self.top.x.abs() + self.bot.y.abs() + self.top.y.abs() + p.x.abs();
+        off.abs() <= 2.0 * relative * sum * d.y
+    }
+
     /// True when `p` is within `relative` (times the coordinates' magnitude) of the edge in x.
     /// With [`ROUNDING`]: a crossing point computed with another edge that, in exact
     /// arithmetic, lies on this one too.
@@ -84,7 +106,8 @@ impl Edge {
     }
 }
 
-/// The active edges: an arena (edges are never freed during a sweep) and their x order.
+/// The active edges: an arena (one record per bound, never freed during a sweep) and their x
+/// order.
 #[derive(Debug, Default)]
 pub(crate) struct ActiveEdges {
     pub edges: Vec<Edge>,
@@ -92,9 +115,9 @@ pub(crate) struct ActiveEdges {
 }
 
 impl ActiveEdges {
-    /// Room for about `n` edges (one per input vertex).
-    pub(crate) fn with_capacity(n: usize) -> ActiveEdges {
-        ActiveEdges { edges: Vec::with_capacity(n), order: Vec::with_capacity(n / 2 + 4) }
+    /// Room for `bounds` bounds.
+    pub(crate) fn with_capacity(bounds: usize) -> ActiveEdges {
+        ActiveEdges { edges: Vec::with_capacity(bounds), order: Vec::new() }
     }
 
     /// A new edge in the arena (not yet in the order).
@@ -104,6 +127,8 @@ impl ActiveEdges {
             bot,
             top,
             curr_x: bot.x,
+            next_x: bot.x,
+            next_y: f64::NAN,
             kind,
             wind_dx: if forward { -1 } else { 1 },
             wind_left: [0, 0],
@@ -155,12 +180,28 @@ impl ActiveEdges {
         self.renumber(pos);
     }
 
-    /// Replaces the edge at `pos` with `id`.
-    pub(crate) fn replace(&mut self, pos: usize, id: u32) {
-        let old = self.order[pos];
-        self.edges[old as usize].alive = false;
-        self.order[pos] = id;
-        self.edges[id as usize].pos = pos as u32;
+    /// The active edge whose bound runs the other way from `id`'s and ends at vertex `v` (its
+    /// partner at a local maximum): searched outward from `id`, next to which it lies but for
+    /// edges passing through the maximum.
+    pub(crate) fn partner(&self, id: u32, v: u32) -> Option<u32> {
+        let (pos, forward) = (self.pos(id), self.get(id).forward);
+        let is_partner = |k: u32| {
+            let e = self.get(k);
+            e.top_vertex == v && e.forward != forward
+        };
+        let n = self.order.len();
+        for d in 1..n.max(1) {
+            if d > pos && pos + d >= n {
+                break;
+            }
+            if d <= pos && is_partner(self.order[pos - d]) {
+                return Some(self.order[pos - d]);
+            }
+            if pos + d < n && is_partner(self.order[pos + d]) {
+                return Some(self.order[pos + d]);
+            }
+        }
+        None
     }
 
     /// Removes the two edges at `pos` and `pos + 1`.

@@ -3,7 +3,7 @@
 
 use clip_core::{Point, Polygons};
 
-use crate::simplify::simplify_ring;
+use crate::simplify::simplify_ring_into;
 
 /// "No index" for the u32 links of the sweep's arenas.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -44,9 +44,11 @@ impl Bounds {
     pub(crate) fn build(subject: &Polygons, clip: &Polygons) -> Bounds {
         let total: usize = [subject, clip].iter().flat_map(|p| &p.rings).map(|r| r.points.len()).sum();
         let mut b = Bounds { vertices: Vec::with_capacity(total), minima: Vec::new() };
+        let mut simple = Vec::new();
         for (kind, polygons) in [(SUBJECT, subject), (CLIP, clip)] {
             for ring in &polygons.rings {
-                b.add_ring(&simplify_ring(&ring.points), kind);
+                simplify_ring_into(&ring.points, &mut simple);
+                b.add_ring(&simple, kind);
             }
         }
         let vertices = &b.vertices;

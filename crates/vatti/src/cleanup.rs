@@ -13,199 +13,95 @@
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{Point, Ring};
 
+use crate::raw_rings::RawRings;
 use crate::simplify::simplify_ring;
-
-/// Exact key of a point (`-0.0` and `0.0` alike), ordered so equal points sort together.
-#[inline]
-fn key(p: Point) -> (u64, u64) {
-    ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
-}
+use crate::touches::Touches;
 
 /// The sweep's rings as conventional output rings. Only rings that share a point with another
 /// ring (or with themselves) or have a vertex inside a horizontal edge are rebuilt; the others
 /// are already simple and lose only collinear vertices.
-pub(crate) fn conventional_rings(raw: Vec<Vec<Point>>) -> Vec<Ring> {
-    let raw: Vec<Vec<Point>> = raw.into_iter().map(without_repeats).filter(|r| r.len() >= 3).collect();
-    let mut touched = shared_points(&raw);
-    let splits = split_horizontals(&raw, &mut touched);
+pub(crate) fn conventional_rings(raw: &RawRings) -> Vec<Ring> {
+    let touches = Touches::find(raw);
     let mut out = Vec::with_capacity(raw.len());
-    for (r, &t) in raw.iter().zip(&touched) {
+    for (i, &t) in touches.touched.iter().enumerate() {
         if !t {
-            let s = simplify_ring(r);
+            let s = simplify_ring(raw.ring(i));
             if s.len() >= 3 {
                 out.push(Ring::new(s));
             }
         }
     }
-    if touched.contains(&true) {
-        rebuild(&raw, &touched, &splits, &mut out);
+    if touches.touched.contains(&true) {
+        rebuild(raw, &touches, &mut out);
     }
     out
 }
 
-/// The ring without consecutive repeated points (the closing pair included).
-fn without_repeats(mut r: Vec<Point>) -> Vec<Point> {
-    r.dedup();
-    while r.len() > 1 && r.first() == r.last() {
-        r.pop();
-    }
-    r
-}
-
-/// For each ring: does it share a point with another ring or visit one twice? By sorting the
-/// exact keys, which for the few hundred points of a typical result beats hashing them.
-fn shared_points(rings: &[Vec<Point>]) -> Vec<bool> {
-    let mut touched = vec![false; rings.len()];
-    let mut keyed: Vec<((u64, u64), u32)> =
-        rings.iter().enumerate().flat_map(|(i, r)| r.iter().map(move |&p| (key(p), i as u32))).collect();
-    keyed.sort_unstable_by_key(|&(k, _)| k);
-    for run in keyed.chunk_by(|a, b| a.0 == b.0) {
-        if run.len() > 1 {
-            for &(_, i) in run {
-                touched[i as usize] = true;
-            }
-        }
-    }
-    touched
-}
-
-/// A horizontal edge (`ring`, `edge`: the edge from vertex `edge` to the next) with vertices
-/// strictly inside it, at these x values in the edge's direction.
-struct SplitEdge {
-    ring: usize,
-    edge: usize,
-    xs: Vec<f64>,
-}
-
-/// Every horizontal edge with vertices strictly inside it, in ring and edge order; its ring and
-/// the vertices' rings are marked touched.
-fn split_horizontals(rings: &[Vec<Point>], touched: &mut [bool]) -> Vec<SplitEdge> {
-    let has_horizontal = rings.iter().any(|r| (0..r.len()).any(|i| r[i].y == r[(i + 1) % r.len()].y));
-    if !has_horizontal {
-        return Vec::new();
-    }
-    let by_y = vertices_by_y(rings);
-    let mut splits = Vec::new();
-    for (ri, r) in rings.iter().enumerate() {
-        let n = r.len();
-        for i in 0..n {
-            let (a, b) = (r[i], r[(i + 1) % n]);
-            if a.y != b.y {
-                continue;
-            }
-            let mut xs = Vec::new();
-            for &(_, x, rj) in inside_horizontal(&by_y, a, b) {
-                touched[rj] = true;
-                xs.push(x);
-            }
-            if xs.is_empty() {
-                continue;
-            }
-            touched[ri] = true;
-            xs.dedup();
-            if a.x > b.x {
-                xs.reverse();
-            }
-            splits.push(SplitEdge { ring: ri, edge: i, xs });
-        }
-    }
-    splits
-}
-
-/// Every vertex as `(y, x, ring)`, sorted by y then x.
-fn vertices_by_y(rings: &[Vec<Point>]) -> Vec<(f64, f64, usize)> {
-    let mut v: Vec<(f64, f64, usize)> =
-        rings.iter().enumerate().flat_map(|(i, r)| r.iter().map(move |p| (p.y, p.x, i))).collect();
-    v.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-    v
-}
-
-/// The vertices strictly inside the horizontal edge `a`-`b`.
-fn inside_horizontal(by_y: &[(f64, f64, usize)], a: Point, b: Point) -> impl Iterator<Item = &(f64, f64, usize)> {
-    let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
-    let start = by_y.partition_point(|&(y, x, _)| y < a.y || (y == a.y && x <= lo));
-    by_y[start..].iter().take_while(move |&&(y, x, _)| y == a.y && x < hi)
-}
-
-/// Rebuilds the touched rings (`splits` as found by [`split_horizontals`]) into simple rings,
-/// pushed onto `out`.
-fn rebuild(rings: &[Vec<Point>], touched: &[bool], splits: &[SplitEdge], out: &mut Vec<Ring>) {
-    // Every vertex visit in ring order, horizontals split at the vertices inside them.
-    let mut visits: Vec<Point> = Vec::new();
+/// Rebuilds the touched rings (horizontal edges split at the vertices inside them) into simple
+/// rings, pushed onto `out`.
+fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
+    let Touches { touched, splits, ids, distinct: pts } = touches;
+    // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
+    let mut visits: Vec<u32> = Vec::new();
     let mut ring_ends: Vec<usize> = Vec::new();
     let mut next_split = splits.iter().peekable();
-    for (ri, r) in rings.iter().enumerate().filter(|&(ri, _)| touched[ri]) {
-        for (i, &p) in r.iter().enumerate() {
-            visits.push(p);
+    for ri in (0..rings.len()).filter(|&ri| touched[ri]) {
+        let start = rings.start(ri);
+        for i in 0..rings.ring(ri).len() {
+            visits.push(ids[start + i]);
             while next_split.next_if(|s| (s.ring, s.edge) < (ri, i)).is_some() {}
             if let Some(s) = next_split.next_if(|s| (s.ring, s.edge) == (ri, i)) {
-                visits.extend(s.xs.iter().map(|&x| Point::new(x, p.y)));
+                visits.extend_from_slice(&s.inside);
             }
         }
         ring_ends.push(visits.len());
-    }
-    // Point ids: equal points, found by sorting their keys, share one.
-    let mut keyed: Vec<((u64, u64), u32)> = visits.iter().enumerate().map(|(i, &p)| (key(p), i as u32)).collect();
-    keyed.sort_unstable();
-    let mut id = vec![0u32; visits.len()];
-    let mut pts: Vec<Point> = Vec::new();
-    for run in keyed.chunk_by(|a, b| a.0 == b.0) {
-        for &(_, v) in run {
-            id[v as usize] = pts.len() as u32;
-        }
-        pts.push(visits[run[0].1 as usize]);
     }
     // The directed edges between them.
     let mut edges: Vec<(u32, u32)> = Vec::with_capacity(visits.len());
     let mut first = 0;
     for &end in &ring_ends {
         for k in first..end {
-            let (from, to) = (id[k], id[if k + 1 == end { first } else { k + 1 }]);
+            let (from, to) = (visits[k], visits[if k + 1 == end { first } else { k + 1 }]);
             if from != to {
                 edges.push((from, to));
             }
         }
         first = end;
     }
-    // Opposite edges cancel in pairs: they bound nothing.
-    let mut live = vec![true; edges.len()];
-    let mut undirected: Vec<(u32, u32, u32)> =
-        edges.iter().enumerate().map(|(i, &(a, b))| (a.min(b), a.max(b), i as u32)).collect();
-    undirected.sort_unstable();
-    for run in undirected.chunk_by(|a, b| (a.0, a.1) == (b.0, b.1)) {
-        if run.len() < 2 {
-            continue;
-        }
-        let upwards = run.iter().filter(|u| edges[u.2 as usize].0 == u.0);
-        let downwards = run.iter().filter(|u| edges[u.2 as usize].0 != u.0);
-        for (u, d) in upwards.zip(downwards) {
-            live[u.2 as usize] = false;
-            live[d.2 as usize] = false;
-        }
-    }
-    // Live edges by start point (compressed rows, in edge order).
+    drop(visits);
+    // Edges by start point (compressed rows, in edge order).
     let mut row = vec![0u32; pts.len() + 1];
-    for (i, &(a, _)) in edges.iter().enumerate() {
-        if live[i] {
-            row[a as usize + 1] += 1;
-        }
+    for &(a, _) in &edges {
+        row[a as usize + 1] += 1;
     }
     for v in 0..pts.len() {
         row[v + 1] += row[v];
     }
-    let mut outgoing = vec![0u32; row[pts.len()] as usize];
+    let mut outgoing = vec![0u32; edges.len()];
     let mut fill = row.clone();
     for (i, &(a, _)) in edges.iter().enumerate() {
-        if live[i] {
-            outgoing[fill[a as usize] as usize] = i as u32;
-            fill[a as usize] += 1;
+        outgoing[fill[a as usize] as usize] = i as u32;
+        fill[a as usize] += 1;
+    }
+    drop(fill);
+    // Opposite edges cancel in pairs (they bound nothing): each edge from the lower id, in edge
+    // order, with the first edge back not yet cancelled. Cancelled edges count as used.
+    let mut used = vec![false; edges.len()];
+    for i in 0..edges.len() {
+        let (a, b) = edges[i];
+        if a > b {
+            continue;
+        }
+        let back = &outgoing[row[b as usize] as usize..row[b as usize + 1] as usize];
+        if let Some(&j) = back.iter().find(|&&j| edges[j as usize].1 == a && !used[j as usize]) {
+            used[i] = true;
+            used[j as usize] = true;
         }
     }
-    let mut used = vec![false; edges.len()];
     let mut slot = vec![usize::MAX; pts.len()];
     let mut walk: Vec<u32> = Vec::new();
     for start in 0..edges.len() {
-        if !live[start] || used[start] {
+        if used[start] {
             continue;
         }
         walk.clear();
@@ -217,7 +113,7 @@ fn rebuild(rings: &[Vec<Point>], touched: &[bool], splits: &[SplitEdge], out: &m
             walk.push(from);
             let leaving = &outgoing[row[to as usize] as usize..row[to as usize + 1] as usize];
             let candidates = leaving.iter().map(|&c| c as usize).filter(|&c| !used[c] || c == start);
-            match first_clockwise(&pts, from, to, candidates, &edges) {
+            match first_clockwise(pts, from, to, candidates, &edges) {
                 Some(next) if next != start => e = next,
                 _ => break,
             }
@@ -307,6 +203,10 @@ fn split_repeats(walk: &[u32], slot: &mut [usize], emit: &mut impl FnMut(&[u32])
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn conventional_rings(rings: Vec<Vec<Point>>) -> Vec<Ring> {
+        super::conventional_rings(&RawRings::from_rings(rings))
+    }
 
     fn ring(points: &[(f64, f64)]) -> Vec<Point> {
         points.iter().map(|&(x, y)| Point::new(x, y)).collect()

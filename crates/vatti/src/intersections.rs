@@ -61,7 +61,12 @@ impl Sweep<'_> {
         }
         let mut xtop = std::mem::take(&mut self.xtop);
         xtop.clear();
-        xtop.extend(self.ael.order.iter().map(|&id| self.ael.get(id).x_at(yt)));
+        for &id in &self.ael.order {
+            let e = &mut self.ael.edges[id as usize];
+            e.next_x = e.x_at(yt);
+            e.next_y = yt;
+            xtop.push(e.next_x);
+        }
         // Sorted edge table: positions in the active edge table, by x at the top.
         let mut st = std::mem::take(&mut self.sorted);
         st.clear();
@@ -125,7 +130,7 @@ impl Sweep<'_> {
             let steeper = if (d1.x / d1.y).abs() <= (d2.x / d2.y).abs() { ea } else { eb };
             p = Point::new(steeper.x_at(y), y);
         }
-        let xs = [ea.x_at(yb), ea.x_at(yt), eb.x_at(yb), eb.x_at(yt)];
+        let xs = [ea.x_at(yb), ea.x_at_cached(yt), eb.x_at(yb), eb.x_at_cached(yt)];
         let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y)

@@ -84,9 +84,11 @@ mod contribution;
 mod horizontal;
 mod intersections;
 mod output;
+mod raw_rings;
 mod scanbeam;
 mod simplify;
 mod sweep;
+mod touches;
 mod trapezoids;
 
 use clip_core::{
@@ -95,6 +97,7 @@ use clip_core::{
 
 use crate::bounds::Bounds;
 use crate::contribution::Rules;
+use crate::raw_rings::RawRings;
 use crate::sweep::Sweep;
 
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
@@ -109,7 +112,7 @@ impl Vatti {
         op: BoolOp,
         fill: FillRule,
         trapezoids: bool,
-    ) -> Result<(Vec<Vec<clip_core::Point>>, Vec<Trapezoid>), ClipError> {
+    ) -> Result<(RawRings, Vec<Trapezoid>), ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
         let bounds = Bounds::build(subject, clip);
@@ -130,7 +133,7 @@ impl PolygonClipper for Vatti {
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
         let (rings, _) = Vatti::sweep(subject, clip, op, fill, false)?;
-        Ok(Polygons::new(cleanup::conventional_rings(rings)))
+        Ok(Polygons::new(cleanup::conventional_rings(&rings)))
     }
 
     fn clip_trapezoids(

@@ -9,6 +9,7 @@
 use clip_core::Point;
 
 use crate::bounds::NONE;
+use crate::raw_rings::RawRings;
 
 #[derive(Clone, Copy, Debug)]
 struct OutPt {
@@ -110,25 +111,33 @@ impl OutputBuilder {
         e.right = NONE;
     }
 
-    /// Every closed ring, each in `next` order (the result on its left).
-    pub(crate) fn rings(&self) -> Vec<Vec<Point>> {
-        let mut rings = Vec::new();
+    /// Every closed ring, each in `next` order (the result on its left), stamped with the
+    /// points' emission order.
+    pub(crate) fn rings(&self) -> RawRings {
+        let mut raw = RawRings {
+            points: Vec::with_capacity(self.pts.len()),
+            ends: Vec::new(),
+            emitted: Vec::with_capacity(self.pts.len()),
+        };
         for r in &self.recs {
             if !r.closed || r.left == NONE {
                 continue;
             }
-            let mut ring = Vec::new();
             let mut p = r.left;
+            let mut first = true;
             // A ring holds at most every point ever made: the bound guards a corrupt list.
-            for _ in 0..self.pts.len() {
-                ring.push(self.pts[p as usize].pt);
-                p = self.pts[p as usize].next;
-                if p == r.left {
-                    break;
+            let walk = std::iter::from_fn(|| {
+                if !first && p == r.left {
+                    return None;
                 }
-            }
-            rings.push(ring);
+                first = false;
+                let here = p;
+                p = self.pts[p as usize].next;
+                Some((self.pts[here as usize].pt, here))
+            })
+            .take(self.pts.len());
+            raw.push_ring(walk);
         }
-        rings
+        raw
     }
 }

@@ -9,8 +9,15 @@ use clip_core::predicates::{Orientation, orient};
 /// empty list when fewer than three vertices remain (the ring encloses nothing).
 pub(crate) fn simplify_ring(points: &[Point]) -> Vec<Point> {
     let mut out: Vec<Point> = Vec::with_capacity(points.len());
+    simplify_ring_into(points, &mut out);
+    out
+}
+
+/// [`simplify_ring`] into `out` (cleared first), so a caller can reuse one buffer.
+pub(crate) fn simplify_ring_into(points: &[Point], out: &mut Vec<Point>) {
+    out.clear();
     for &p in points {
-        push_vertex(&mut out, p);
+        push_vertex(out, p);
     }
     // The closing edge: drop vertices at the seam while they repeat or are collinear there.
     // Every pass removes a vertex or stops, so this ends.
@@ -18,14 +25,14 @@ pub(crate) fn simplify_ring(points: &[Point]) -> Vec<Point> {
         let n = out.len();
         if n < 3 {
             out.clear();
-            return out;
+            return;
         }
         if out[n - 1] == out[0] || orient(out[n - 2], out[n - 1], out[0]) == Orientation::Collinear {
             out.pop();
         } else if orient(out[n - 1], out[0], out[1]) == Orientation::Collinear {
             out.remove(0);
         } else {
-            return out;
+            return;
         }
     }
 }

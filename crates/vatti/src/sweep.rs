@@ -32,10 +32,6 @@ pub(crate) struct Sweep<'a> {
     pub out: OutputBuilder,
     /// Trapezoids, when asked for.
     pub traps: Option<Vec<Trapezoid>>,
-    /// Active edge ending at each vertex, for bounds walking forwards / backwards (to find the
-    /// partner at a local maximum).
-    ending_fwd: Vec<u32>,
-    ending_bwd: Vec<u32>,
     next_minimum: usize,
     // Work lists reused between scanlines.
     maxima: Vec<u32>,
@@ -54,12 +50,10 @@ impl<'a> Sweep<'a> {
         Sweep {
             rules,
             bounds,
-            ael: ActiveEdges::with_capacity(n),
+            ael: ActiveEdges::with_capacity(2 * bounds.minima.len()),
             beams: Scanbeams::default(),
             out: OutputBuilder::with_capacity(if trapezoids { 0 } else { n }),
             traps: trapezoids.then(Vec::new),
-            ending_fwd: vec![NONE; n],
-            ending_bwd: vec![NONE; n],
             next_minimum: 0,
             maxima: Vec::new(),
             settle: Vec::new(),
@@ -97,20 +91,16 @@ impl<'a> Sweep<'a> {
     fn new_edge(&mut self, from: u32, to: u32, kind: u8, forward: bool) -> u32 {
         let (bot, top) = (self.bounds.pt(from), self.bounds.pt(to));
         let id = self.ael.create(bot, top, kind, forward, to);
-        if forward {
-            self.ending_fwd[to as usize] = id;
-        } else {
-            self.ending_bwd[to as usize] = id;
-        }
         self.beams.mark(top.y);
         id
     }
 
     /// The other bound's edge ending at vertex `v`, opposite in direction to `id`.
     fn partner_at(&self, id: u32, v: u32) -> Option<u32> {
-        let e = self.ael.get(id);
-        let p = if e.forward { self.ending_bwd[v as usize] } else { self.ending_fwd[v as usize] };
-        (p != NONE && self.ael.get(p).alive && self.ael.get(p).top_vertex == v).then_some(p)
+        if !self.ael.get(id).alive {
+            return None;
+        }
+        self.ael.partner(id, v)
     }
 
     // ---- local minima ----
@@ -184,7 +174,7 @@ impl<'a> Sweep<'a> {
             let id = self.ael.at(pos);
             let e = self.ael.get_mut(id);
             if e.top.y != y {
-                e.curr_x = e.x_at(y);
+                e.curr_x = e.x_at_cached(y);
                 continue;
             }
             e.curr_x = e.top.x;
@@ -248,26 +238,27 @@ impl<'a> Sweep<'a> {
         (self.maxima, self.settle, self.slides) = (maxima, settle, slides);
     }
 
-    /// Replaces the edge at `pos` with its bound's next edge `from -> to` (an intermediate vertex
-    /// at the old edge's top: its output chain, if any, gets the vertex and moves on).
+    /// Moves the edge at `pos` on to its bound's next edge `from -> to` (an intermediate vertex
+    /// at the old edge's top: its output chain, if any, gets the vertex). The bound keeps its
+    /// edge record, winding counts and output chain, as Vatti's edge record does.
     fn succeed(&mut self, pos: usize, from: u32, to: u32) -> u32 {
-        let old = self.ael.at(pos);
-        let (kind, forward, wl, rec, top) = {
-            let e = self.ael.get(old);
-            (e.kind, e.forward, e.wind_left, e.outrec, e.top)
+        let id = self.ael.at(pos);
+        let (rec, top) = {
+            let e = self.ael.get(id);
+            (e.outrec, e.top)
         };
         if rec != NONE {
-            self.add_point(old, top);
+            self.add_point(id, top);
         }
-        let s = self.new_edge(from, to, kind, forward);
-        let e = self.ael.get_mut(s);
-        e.wind_left = wl;
+        let (bot, next_top) = (self.bounds.pt(from), self.bounds.pt(to));
+        let e = self.ael.get_mut(id);
+        e.bot = bot;
+        e.top = next_top;
+        e.top_vertex = to;
         e.curr_x = top.x;
-        self.ael.replace(pos, s);
-        if rec != NONE {
-            self.hand_over(old, s);
-        }
-        s
+        e.next_y = f64::NAN;
+        self.beams.mark(next_top.y);
+        id
     }
 
     /// Moves edge `id` across the edges between it and `partner` (crossings at the
@@ -436,9 +427,10 @@ impl<'a> Sweep<'a> {
                     continue;
                 }
                 // Through p exactly; or on the same line as `id`, or within rounding of p, when p
-                // is a rounded crossing that several edges share.
+                // is a rounded crossing that several edges share (the cheap test first).
                 if p.y < e.bot.y
                     || p.y > e.top.y
+                    || !e.maybe_near(p, 1e-9)
                     || !e.near(p, 1e-9)
                     || (e.side_of(p) != Orientation::Collinear
                         && !self.coincident(id, k)

@@ -10,6 +10,7 @@ mod rounds;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use clip_core::BoolOp;
 use serde_json::json;
 
 use crate::cli_error::CliError;
@@ -38,6 +39,17 @@ pub struct BenchArgs {
     /// Timed rounds per point (default 7, quick 3).
     #[arg(long, value_name = "N")]
     pub rounds: Option<usize>,
+    /// Clipper to time (repeat for several; default: every registered polygon clipper). The
+    /// baseline (Clipper2) is always timed too, so every point keeps its ratio.
+    #[arg(long = "clipper", value_name = "NAME")]
+    pub clippers: Vec<String>,
+    /// Bench group to run, by its name in bench.csv (`star`, `scribble`, `grid`, `holes`,
+    /// `large-smooth`, `large-checkerboard`, `star-rect`, `large-rect`; repeat; default: all).
+    #[arg(long = "workload", value_name = "NAME")]
+    pub workloads: Vec<String>,
+    /// Operation to time (repeat; default: all four).
+    #[arg(long = "op", value_name = "OP")]
+    pub ops: Vec<BoolOp>,
     /// Internal: measure one call's peak memory in this fresh process and print it (the bench
     /// runs itself with this, so no earlier allocation hides the peak).
     #[arg(long, hide = true, value_name = "SPEC")]
@@ -51,7 +63,7 @@ pub fn run_memory_probe(spec: &str, seed: u64, registry: &Registry) -> Result<Ex
 
 /// Measures and writes the raw files (timings, peak memory, sidecar) into the output folder,
 /// which it returns.
-pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
+pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
     let cap = args.cap.unwrap_or(if args.quick { 0.5 } else { 2.0 });
     if !(cap.is_finite() && cap > 0.0) {
         return Err(CliError::usage("--cap must be a positive number of seconds"));
@@ -63,8 +75,9 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
     if registry.find_polygon(BASELINE).is_none() {
         return Err(CliError::failed(format!("the baseline clipper '{BASELINE}' is not registered")));
     }
+    let registry = &select_clippers(registry, &args.clippers)?;
+    let groups = plan::select(plan::groups(args.quick), &args.workloads, &args.ops)?;
     let out = ready_out_dir(&args.out)?;
-    let groups = plan::groups(args.quick);
     let settings = rounds::Settings { seed: args.seed, rounds, cap_seconds: cap, quick: args.quick };
     let measured = rounds::run(&groups, registry, &settings)?;
 
@@ -72,6 +85,7 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
     write_memory(&out, &measured.memory)?;
     let parameters = json!({
         "quick": args.quick,
+        "filtered": !(args.clippers.is_empty() && args.workloads.is_empty() && args.ops.is_empty()),
         "rounds": rounds,
         "cap_seconds": cap,
         "fill_rule": "even-odd",
@@ -89,4 +103,21 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
     provenance.notes.extend(measured.notes);
     provenance.write(&out.join(META))?;
     Ok(out)
+}
+
+/// The registry cut down to the named polygon clippers plus the baseline (all when none named).
+fn select_clippers(registry: Registry, names: &[String]) -> Result<Registry, CliError> {
+    if names.is_empty() {
+        return Ok(registry);
+    }
+    let mut names = names.to_vec();
+    if !names.iter().any(|n| n == BASELINE) {
+        names.push(BASELINE.to_owned());
+    }
+    let mut selected = registry.select(&names)?;
+    selected.line.clear();
+    if let Some(line) = names.iter().find(|n| selected.find_polygon(n).is_none()) {
+        return Err(CliError::usage(format!("--clipper {line}: bench times polygon clippers only")));
+    }
+    Ok(selected)
 }

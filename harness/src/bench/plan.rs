@@ -2,6 +2,8 @@
 
 use clip_core::{BoolOp, WindowKind};
 
+use crate::cli_error::CliError;
+
 /// One group of the benchmark: a plot and a table each.
 #[derive(Clone, Debug)]
 pub struct Group {
@@ -97,4 +99,43 @@ pub fn groups(quick: bool) -> Vec<Group> {
             memory: true,
         },
     ]
+}
+
+/// The groups named in `labels` (all when none) with only the operations in `ops` (all when
+/// none); groups left without an operation are dropped. Unknown names are usage errors.
+pub fn select(groups: Vec<Group>, labels: &[String], ops: &[BoolOp]) -> Result<Vec<Group>, CliError> {
+    if let Some(unknown) = labels.iter().find(|l| !groups.iter().any(|g| g.label == l.as_str())) {
+        let valid: Vec<&str> = groups.iter().map(|g| g.label).collect();
+        return Err(CliError::usage(format!("unknown bench group '{unknown}' (groups: {})", valid.join(", "))));
+    }
+    let selected: Vec<Group> = groups
+        .into_iter()
+        .filter(|g| labels.is_empty() || labels.iter().any(|l| l == g.label))
+        .filter_map(|mut g| {
+            if !ops.is_empty() {
+                g.ops.retain(|o| ops.contains(o));
+            }
+            (!g.ops.is_empty()).then_some(g)
+        })
+        .collect();
+    if selected.is_empty() {
+        return Err(CliError::usage("nothing to bench: no selected group runs the selected operations"));
+    }
+    Ok(selected)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn select_keeps_the_named_groups_and_operations() {
+        let picked = select(groups(true), &["scribble".to_owned(), "large-rect".to_owned()], &[BoolOp::Xor]).unwrap();
+        // large-rect times intersection only, so xor leaves only scribble.
+        assert_eq!(picked.iter().map(|g| g.label).collect::<Vec<_>>(), vec!["scribble"]);
+        assert_eq!(picked[0].ops, vec![BoolOp::Xor]);
+        assert_eq!(select(groups(true), &[], &[]).unwrap().len(), groups(true).len());
+        assert!(select(groups(true), &["nope".to_owned()], &[]).is_err());
+        assert!(select(groups(true), &["large-rect".to_owned()], &[BoolOp::Union]).is_err());
+    }
 }

@@ -193,24 +193,33 @@ pub fn rect_clip_ratios(points: &Points, groups: &[String]) -> String {
     text
 }
 
-/// Peak memory of the large groups, MiB above the resident size before the call.
-fn memory_table(records: &[MemoryRecord], clippers: &[String]) -> Option<String> {
-    let mut points: BTreeMap<(String, usize), BTreeMap<String, u64>> = BTreeMap::new();
-    for r in records {
-        let cell = points.entry((r.workload.clone(), r.size)).or_default().entry(r.clipper.clone()).or_default();
+/// Peak memory of one large group, MiB above the resident size before the call (largest over the
+/// group's cases): sizes down, every clipper across, with its ratio to Clipper2's in brackets.
+fn memory_table(records: &[MemoryRecord], group: &str, clippers: &[String]) -> Option<String> {
+    let mut by_size: BTreeMap<usize, BTreeMap<&str, u64>> = BTreeMap::new();
+    for r in records.iter().filter(|r| r.workload == group) {
+        let cell = by_size.entry(r.size).or_default().entry(r.clipper.as_str()).or_default();
         *cell = (*cell).max(r.peak_extra_kib);
     }
-    if points.is_empty() {
+    if by_size.is_empty() {
         return None;
     }
-    let present: Vec<&String> = clippers.iter().filter(|c| records.iter().any(|r| &r.clipper == *c)).collect();
-    let mut head = header(&["Group", "Edges"]);
-    head.extend(present.iter().map(|c| format!("{c} MiB")));
-    let body: Vec<Vec<String>> = points
+    let present: Vec<&String> =
+        clippers.iter().filter(|c| records.iter().any(|r| r.workload == group && &r.clipper == *c)).collect();
+    let mut head = header(&["Edges"]);
+    head.extend(present.iter().map(|c| format!("{c} MiB (x {BASELINE})")));
+    let body: Vec<Vec<String>> = by_size
         .iter()
-        .map(|((g, s), by)| {
-            let mut cells = vec![g.clone(), s.to_string()];
-            cells.extend(present.iter().map(|c| by.get(*c).map_or("n/a".to_owned(), |k| num(*k as f64 / 1024.0, 1))));
+        .map(|(s, by)| {
+            let base = by.get(BASELINE).copied();
+            let mut cells = vec![s.to_string()];
+            cells.extend(present.iter().map(|c| match (by.get(c.as_str()), base) {
+                (Some(&k), Some(b)) if b > 0 => {
+                    format!("{} ({})", num(k as f64 / 1024.0, 1), num(k as f64 / b as f64, 2))
+                }
+                (Some(&k), _) => num(k as f64 / 1024.0, 1),
+                (None, _) => "n/a".to_owned(),
+            }));
             cells
         })
         .collect();
@@ -258,11 +267,13 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
                 text.push_str(&format!("{op}:\n\n{t}\n"));
             }
         }
-    }
-    if let Some(t) = memory_table(&memory, &clippers) {
-        text.push_str(&format!("### Peak memory of the large cases (intersection)\n\nPeak resident memory of one call above the resident size \
-                 before it, measured in a fresh child process (so no memory freed by earlier cases hides it), MiB, \
-                 largest over the cases.\n\n{t}\n"));
+        if let Some(t) = memory_table(&memory, g, &clippers) {
+            text.push_str(&format!(
+                "peak memory of one intersection call (MiB above the resident size before it, measured in a fresh \
+                 child process so no memory freed by earlier cases hides it; largest over the cases; ratio to \
+                 `{BASELINE}` in brackets):\n\n{t}\n"
+            ));
+        }
     }
     Ok(Some(text))
 }
@@ -317,5 +328,29 @@ mod tests {
         let text = rect_clip_ratios(&points(&rows), &["star".to_owned()]);
         // Per case 0.5 and 2: geometric mean 1.
         assert_eq!(text, "- star, x clipper2-rect: 20: sutherland-hodgman 1.00.\n");
+    }
+
+    #[test]
+    fn memory_has_a_column_per_clipper_and_a_row_per_size() {
+        let rec = |clipper: &str, size, case: &str, kib| MemoryRecord {
+            workload: "large-smooth".into(),
+            case: case.into(),
+            clipper: clipper.into(),
+            size,
+            op: "intersection".into(),
+            rss_before_kib: 6000,
+            peak_extra_kib: kib,
+        };
+        let records = vec![
+            rec("vatti", 1000, "0", 512),
+            rec("vatti", 1000, "1", 1024),
+            rec("clipper2", 1000, "0", 2048),
+            rec("geo", 10, "0", 1),
+        ];
+        let clippers = vec!["vatti".to_owned(), "geo".to_owned(), "clipper2".to_owned()];
+        let t = memory_table(&records, "large-smooth", &clippers).unwrap();
+        assert!(t.contains("| 1000 | 1.0 (0.50) | n/a | 2.0 (1.00) |"), "{t}");
+        assert!(t.contains("| 10 | n/a | 0.0 | n/a |"), "{t}");
+        assert!(memory_table(&records, "star", &clippers).is_none());
     }
 }

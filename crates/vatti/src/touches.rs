@@ -1,0 +1,237 @@
+//! Which output rings touch (share a point with another ring or visit one twice, or have a
+//! vertex inside a horizontal edge), and an id per distinct output point, found from the order
+//! the sweep emitted the points.
+//!
+//! The sweep emits points scanline by scanline, so where the emission order is non-decreasing
+//! in y, equal points are emitted within one run of equal y, and so are a horizontal edge's ends
+//! and every vertex inside it: only those short runs are compared, with no global sort. Where
+//! crossings at nearly one height were taken out of y order, every point is sorted instead.
+
+use clip_core::Point;
+
+use crate::bounds::NONE;
+use crate::raw_rings::RawRings;
+
+/// A horizontal edge (`ring`, `edge`: the edge from the ring's vertex `edge` to the next) with
+/// vertices strictly inside it: their point ids in the edge's direction.
+#[derive(Debug, PartialEq)]
+pub(crate) struct SplitEdge {
+    pub ring: usize,
+    pub edge: usize,
+    pub inside: Vec<u32>,
+}
+
+/// The rings to rebuild, the horizontal edges to split (in ring and edge order), and the
+/// distinct points: `ids[k]` is point `k`'s index in `distinct`.
+#[derive(Debug, PartialEq)]
+pub(crate) struct Touches {
+    pub touched: Vec<bool>,
+    pub splits: Vec<SplitEdge>,
+    pub ids: Vec<u32>,
+    pub distinct: Vec<Point>,
+}
+
+impl Touches {
+    /// Finds them from the emission order, or by sorting every point when that order is not
+    /// monotone in y.
+    pub(crate) fn find(raw: &RawRings) -> Touches {
+        by_emission_order(raw).unwrap_or_else(|| by_sorting(raw))
+    }
+}
+
+/// Exact key of a point (`-0.0` and `0.0` alike), ordered so equal points sort together.
+#[inline]
+fn key(p: Point) -> (u64, u64) {
+    ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
+}
+
+/// Ring index of every point.
+fn ring_of(raw: &RawRings) -> Vec<u32> {
+    let mut ring = Vec::with_capacity(raw.points.len());
+    for i in 0..raw.len() {
+        ring.resize(raw.ends[i], i as u32);
+    }
+    ring
+}
+
+/// The touches from runs of equal y in emission order; `None` when that order goes down in y.
+fn by_emission_order(raw: &RawRings) -> Option<Touches> {
+    let n = raw.points.len();
+    let stamps = raw.emitted.iter().map(|&s| s as usize + 1).max().unwrap_or(0);
+    let mut slot = vec![NONE; stamps];
+    for (k, &s) in raw.emitted.iter().enumerate() {
+        slot[s as usize] = k as u32;
+    }
+    let order: Vec<u32> = slot.into_iter().filter(|&k| k != NONE).collect();
+    if order.len() != n || order.windows(2).any(|w| raw.points[w[1] as usize].y < raw.points[w[0] as usize].y) {
+        return None;
+    }
+    let ring = ring_of(raw);
+    let next = |k: usize| {
+        let r = ring[k] as usize;
+        if k + 1 == raw.ends[r] { raw.start(r) } else { k + 1 }
+    };
+    let mut t = Touches { touched: vec![false; raw.len()], splits: Vec::new(), ids: vec![0; n], distinct: Vec::new() };
+    let mut run: Vec<(f64, u32)> = Vec::new();
+    for same_y in order.chunk_by(|&a, &b| raw.points[a as usize].y == raw.points[b as usize].y) {
+        if let [k] = *same_y {
+            t.ids[k as usize] = t.distinct.len() as u32;
+            t.distinct.push(raw.points[k as usize]);
+            continue;
+        }
+        run.clear();
+        run.extend(same_y.iter().map(|&k| (raw.points[k as usize].x, k)));
+        run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        for equal in run.chunk_by(|a, b| a.0 == b.0) {
+            let id = t.distinct.len() as u32;
+            t.distinct.push(raw.points[equal[0].1 as usize]);
+            for &(_, k) in equal {
+                t.ids[k as usize] = id;
+                if equal.len() > 1 {
+                    t.touched[ring[k as usize] as usize] = true;
+                }
+            }
+        }
+        for &k in same_y {
+            let (a, b) = (raw.points[k as usize], raw.points[next(k as usize)]);
+            if a.y != b.y {
+                continue;
+            }
+            let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+            let from = run.partition_point(|&(x, _)| x <= lo);
+            let mut inside = Vec::new();
+            for &(_, j) in run[from..].iter().take_while(|&&(x, _)| x < hi) {
+                t.touched[ring[j as usize] as usize] = true;
+                inside.push(t.ids[j as usize]);
+            }
+            if inside.is_empty() {
+                continue;
+            }
+            let r = ring[k as usize] as usize;
+            t.touched[r] = true;
+            inside.dedup();
+            if a.x > b.x {
+                inside.reverse();
+            }
+            t.splits.push(SplitEdge { ring: r, edge: k as usize - raw.start(r), inside });
+        }
+    }
+    t.splits.sort_unstable_by_key(|s| (s.ring, s.edge));
+    Some(t)
+}
+
+/// The touches by sorting every point's exact key, and every vertex by y then x.
+fn by_sorting(raw: &RawRings) -> Touches {
+    let n = raw.points.len();
+    let ring = ring_of(raw);
+    let mut t = Touches { touched: vec![false; raw.len()], splits: Vec::new(), ids: vec![0; n], distinct: Vec::new() };
+    let mut keyed: Vec<((u64, u64), u32)> = raw.points.iter().enumerate().map(|(k, &p)| (key(p), k as u32)).collect();
+    keyed.sort_unstable();
+    for same in keyed.chunk_by(|a, b| a.0 == b.0) {
+        let id = t.distinct.len() as u32;
+        t.distinct.push(raw.points[same[0].1 as usize]);
+        for &(_, k) in same {
+            t.ids[k as usize] = id;
+            if same.len() > 1 {
+                t.touched[ring[k as usize] as usize] = true;
+            }
+        }
+    }
+    drop(keyed);
+    t.splits = split_horizontals(raw, &ring, &mut t.touched, &t.ids);
+    t
+}
+
+/// Every horizontal edge with vertices strictly inside it, in ring and edge order; its ring and
+/// the vertices' rings are marked touched.
+fn split_horizontals(raw: &RawRings, ring: &[u32], touched: &mut [bool], ids: &[u32]) -> Vec<SplitEdge> {
+    let has_horizontal = (0..raw.len()).any(|i| {
+        let r = raw.ring(i);
+        (0..r.len()).any(|k| r[k].y == r[(k + 1) % r.len()].y)
+    });
+    if !has_horizontal {
+        return Vec::new();
+    }
+    let mut by_y: Vec<(f64, f64, u32)> = raw.points.iter().enumerate().map(|(k, p)| (p.y, p.x, k as u32)).collect();
+    by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut splits = Vec::new();
+    for ri in 0..raw.len() {
+        let r = raw.ring(ri);
+        let n = r.len();
+        for i in 0..n {
+            let (a, b) = (r[i], r[(i + 1) % n]);
+            if a.y != b.y {
+                continue;
+            }
+            let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+            let start = by_y.partition_point(|&(y, x, _)| y < a.y || (y == a.y && x <= lo));
+            let mut inside = Vec::new();
+            for &(_, _, k) in by_y[start..].iter().take_while(|&&(y, x, _)| y == a.y && x < hi) {
+                touched[ring[k as usize] as usize] = true;
+                inside.push(ids[k as usize]);
+            }
+            if inside.is_empty() {
+                continue;
+            }
+            touched[ri] = true;
+            inside.dedup();
+            if a.x > b.x {
+                inside.reverse();
+            }
+            splits.push(SplitEdge { ring: ri, edge: i, inside });
+        }
+    }
+    splits
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(points: &[(f64, f64)]) -> Vec<Point> {
+        points.iter().map(|&(x, y)| Point::new(x, y)).collect()
+    }
+
+    /// Both ways agree, on rings stamped in y order (ids may differ, but not which are equal).
+    fn both(rings: Vec<Vec<Point>>) -> Touches {
+        let raw = RawRings::from_rings(rings);
+        let fast = by_emission_order(&raw).expect("stamped in y order");
+        let sorted = by_sorting(&raw);
+        assert_eq!((&fast.touched, fast.distinct.len()), (&sorted.touched, sorted.distinct.len()));
+        for k in 0..raw.points.len() {
+            assert_eq!(fast.distinct[fast.ids[k] as usize], raw.points[k]);
+            assert_eq!(sorted.distinct[sorted.ids[k] as usize], raw.points[k]);
+        }
+        let inside = |t: &Touches| -> Vec<(usize, usize, Vec<Point>)> {
+            t.splits
+                .iter()
+                .map(|s| (s.ring, s.edge, s.inside.iter().map(|&i| t.distinct[i as usize]).collect()))
+                .collect()
+        };
+        assert_eq!(inside(&fast), inside(&sorted));
+        fast
+    }
+
+    #[test]
+    fn shared_points_and_horizontal_splits_are_found_both_ways() {
+        let top = ring(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (0.0, 1.0)]);
+        let bottom = ring(&[(1.0, -1.0), (3.0, -1.0), (3.0, 0.0), (1.0, 0.0)]);
+        let apart = ring(&[(10.0, 0.0), (11.0, 0.0), (11.0, 1.0)]);
+        let t = both(vec![top, bottom, apart]);
+        assert_eq!(t.touched, vec![true, true, false]);
+        assert_eq!(t.splits.len(), 2);
+        let bow = ring(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (2.0, 2.0), (1.0, 1.0), (0.0, 2.0)]);
+        let corner = ring(&[(2.0, 2.0), (3.0, 2.0), (3.0, 3.0)]);
+        let t = both(vec![bow, corner]);
+        assert_eq!(t.touched, vec![true, true]);
+        assert!(t.splits.is_empty());
+    }
+
+    #[test]
+    fn emission_out_of_y_order_falls_back_to_sorting() {
+        let mut raw = RawRings::from_rings(vec![ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)])]);
+        raw.emitted.reverse();
+        assert!(by_emission_order(&raw).is_none());
+        assert_eq!(Touches::find(&raw).touched, vec![false]);
+    }
+}
