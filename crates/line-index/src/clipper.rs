@@ -6,8 +6,26 @@ use clip_core::{
     PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, validate_segments, validate_window,
 };
 
-use crate::edge_tree::{EdgeTree, LEAF_EDGES};
+use core::ops::Range;
+
+use crate::edge_tree::{EdgeTree, LEAF_EDGES, Node, WAYS};
 use crate::ray_box::Ray;
+
+/// Segments whose `|dx| + |dy|` is below this fraction of the box's width + height locate their
+/// start and look only at the edges near the segment (see `clip_one`).
+const SHORT: f64 = 0.25;
+
+/// Windows of at most this many leaves clip every segment along its ray: with so few edges, one
+/// walk is cheaper than locating the start and walking again.
+const SHORT_FROM_LEAVES: usize = 4;
+
+/// What the horizontal ray found about a segment's start.
+enum Start {
+    /// Not on the boundary: inside (true) or outside the window.
+    Inside(bool),
+    /// On an edge or a vertex.
+    OnBoundary,
+}
 
 /// Line clipping through a box hierarchy over the window's edges, registered as `indexed`. Any
 /// window (rings read under even-odd). See the crate documentation.
@@ -72,7 +90,8 @@ impl PreparedLineIndex {
     /// Bytes held by the prepared window (vertices, their coordinate arrays and the tree).
     pub fn memory_bytes(&self) -> usize {
         self.points.len() * (size_of::<Point>() + 2 * size_of::<f64>())
-            + self.tree.nodes.len() * size_of::<crate::edge_tree::Node>()
+            + self.tree.nodes.len() * size_of::<Node>()
+            + self.tree.leaves.len() * size_of::<Range<u32>>()
     }
 
     /// Clips like [`PreparedWindow::clip_batch`] and reports what each stage settled and how
@@ -122,30 +141,29 @@ impl PreparedLineIndex {
         let ray = Ray::new(a, b);
         let side = LineSide::new(a, b);
         let frame = LineFrame::new(s);
-        // Crossings at or after the start, counted: every ring crosses the line an even number
-        // of times, so their parity is the parity of those before the start, not looked for.
-        let mut found = 0u32;
-        let nodes = &self.tree.nodes;
-        let mut i = 0;
-        while i < nodes.len() {
-            let node = &nodes[i];
-            if COUNT {
-                counts.nodes_tested += 1;
+        // A segment short beside the window: its crossings and the exact place of its start,
+        // found along a horizontal ray to the nearer side of the box, cost less than everything
+        // along the ray through it. A start on the boundary has no place that tells the parity
+        // just after it: those segments take the ray.
+        let short = self.tree.leaves.len() > SHORT_FROM_LEAVES
+            && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height());
+        let start = if short { self.locate::<COUNT>(a, counts) } else { Start::OnBoundary };
+        if let Start::Inside(inside) = start {
+            let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            // The crossings on the segment toggle the parity from the start's to the end's.
+            if (found + u32::from(inside)) % 2 == 1 {
+                crossings.record(Along::After, 1.0);
             }
-            if ray.misses(&node.bounds) {
-                i = node.skip as usize;
-                continue;
+            if inside {
+                crossings.record(Along::Before, 0.0);
             }
-            if node.is_leaf() {
-                if COUNT {
-                    counts.leaves_scanned += 1;
-                }
-                found += self.leaf(node.first as usize, node.end as usize, &side, &frame, crossings);
+        } else {
+            // Crossings at or after the start, counted: every ring crosses the line an even
+            // number of times, so their parity is the parity of those before the start.
+            let found = self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            if found % 2 == 1 {
+                crossings.record(Along::Before, 0.0);
             }
-            i += 1;
-        }
-        if found % 2 == 1 {
-            crossings.record(Along::Before, 0.0);
         }
         if crossings.is_empty() {
             if COUNT {
@@ -159,36 +177,160 @@ impl PreparedLineIndex {
         }
     }
 
+    /// Walks the tree: along the ray from the start (`ON_SEGMENT` false), or over the boxes
+    /// meeting the closed segment whose box is `segment` (`ON_SEGMENT` true); records the
+    /// crossings at or after the start (on the segment) and returns how many there were.
+    #[inline(always)]
+    fn walk<const COUNT: bool, const ON_SEGMENT: bool>(
+        &self,
+        ray: &Ray,
+        side: &LineSide,
+        frame: &LineFrame,
+        segment: &Rect,
+        crossings: &mut LineCrossings,
+        counts: &mut IndexCounts,
+    ) -> u32 {
+        let mut found = 0;
+        self.visit::<COUNT>(
+            |node| {
+                if ON_SEGMENT {
+                    let mut mask = 0;
+                    for i in 0..WAYS {
+                        let apart = (node.min_x[i] > segment.max.x)
+                            | (node.max_x[i] < segment.min.x)
+                            | (node.min_y[i] > segment.max.y)
+                            | (node.max_y[i] < segment.min.y);
+                        mask |= u32::from(!apart) << i;
+                    }
+                    mask & ray.line_hits(node)
+                } else {
+                    ray.hits(node)
+                }
+            },
+            |range| found += self.leaf::<ON_SEGMENT>(range.start as usize, range.end as usize, side, frame, crossings),
+            counts,
+        );
+        found
+    }
+
+    /// Visits the tree from the root: `hits` tells which children of a node to enter, `leaf` is
+    /// called with the edges of each leaf entered.
+    #[inline(always)]
+    fn visit<const COUNT: bool>(
+        &self,
+        hits: impl Fn(&Node) -> u32,
+        mut leaf: impl FnMut(&Range<u32>),
+        counts: &mut IndexCounts,
+    ) {
+        let nodes = &self.tree.nodes;
+        if let [leaf_edges] = &self.tree.leaves[..] {
+            // One leaf (up to 16 edges): the root holds it alone, no stack.
+            if hits(&nodes[0]) & u32::from(nodes[0].present) != 0 {
+                leaf(leaf_edges);
+            }
+            return;
+        }
+        // Each level pushes at most WAYS - 1 more than it pops: 64 slots hold trees far deeper
+        // than u32 leaf indices allow.
+        let mut stack = [0u32; 64];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = &nodes[stack[top] as usize];
+            if COUNT {
+                counts.nodes_tested += 1;
+            }
+            let mut entered = hits(node) & u32::from(node.present);
+            while entered != 0 {
+                let i = entered.trailing_zeros() as usize;
+                entered &= entered - 1;
+                if node.leaves & (1 << i) != 0 {
+                    if COUNT {
+                        counts.leaves_scanned += 1;
+                    }
+                    leaf(&self.tree.leaves[node.child[i] as usize]);
+                } else {
+                    stack[top] = node.child[i];
+                    top += 1;
+                }
+            }
+        }
+    }
+
+    /// The exact place of `a` in the window (even-odd), by the crossings of a horizontal ray from
+    /// `a` to the nearer side of the bounding box, edges taken half-open in y; or that `a` lies on
+    /// the boundary.
+    fn locate<const COUNT: bool>(&self, a: Point, counts: &mut IndexCounts) -> Start {
+        let rightwards = self.bounds.max.x - a.x <= a.x - self.bounds.min.x;
+        let mut odd = false;
+        let mut on_boundary = false;
+        self.visit::<COUNT>(
+            |node| {
+                let mut mask = 0;
+                for i in 0..WAYS {
+                    let ahead = if rightwards { node.max_x[i] >= a.x } else { node.min_x[i] <= a.x };
+                    mask |= u32::from(ahead & (node.min_y[i] <= a.y) & (a.y <= node.max_y[i])) << i;
+                }
+                mask
+            },
+            |range| {
+                for k in range.start as usize..range.end as usize {
+                    let (p, q) = (self.points[k], self.points[k + 1]);
+                    if p == a {
+                        on_boundary = true;
+                    } else if (p.y > a.y) != (q.y > a.y) {
+                        let o = orient2d(p, q, a);
+                        on_boundary |= o == 0.0;
+                        // `a` left of an upward edge (right of a downward one): the edge is to its
+                        // right.
+                        odd ^= ((o > 0.0) == (q.y > p.y)) == rightwards;
+                    } else if p.y == a.y && q.y == a.y && p.x.min(q.x) <= a.x && a.x <= p.x.max(q.x) {
+                        on_boundary = true;
+                    }
+                }
+            },
+            counts,
+        );
+        if on_boundary { Start::OnBoundary } else { Start::Inside(odd) }
+    }
+
     /// Liu's rule on one leaf's edges `first..end`: the exact sign of the line function at each
     /// vertex, a crossing for each edge whose signs differ (a vertex on the line counting as on
     /// the negative side), edges on the line recorded as boundary. Records the crossings at or
-    /// after the start and returns how many there were.
+    /// after the start (only those on the segment when `ON_SEGMENT`) and returns how many there were.
     #[inline(always)]
-    fn leaf(&self, first: usize, end: usize, side: &LineSide, frame: &LineFrame, crossings: &mut LineCrossings) -> u32 {
+    fn leaf<const ON_SEGMENT: bool>(
+        &self,
+        first: usize,
+        end: usize,
+        side: &LineSide,
+        frame: &LineFrame,
+        crossings: &mut LineCrossings,
+    ) -> u32 {
         let count = end + 1 - first;
         let (xs, ys, points) = (&self.xs[first..=end], &self.ys[first..=end], &self.points[first..=end]);
         let mut f = [0.0f64; LEAF_EDGES + 1];
         // Signs as bit masks over the run's vertices: which were too close to call in f64, which
         // are positive, which are on the line.
-        let mut unsure = 0u32;
+        let mut unsure = 0u64;
         for (k, (&x, &y)) in xs.iter().zip(ys).enumerate() {
             let (value, bound) = side.estimate(x, y);
             f[k] = value;
-            unsure |= u32::from(value.abs() <= bound) << k;
+            unsure |= u64::from(value.abs() <= bound) << k;
         }
         while unsure != 0 {
             let k = unsure.trailing_zeros() as usize;
             f[k] = orient2d(frame.a, frame.b, points[k]);
             unsure &= unsure - 1;
         }
-        let (mut positive, mut zero) = (0u32, 0u32);
+        let (mut positive, mut zero) = (0u64, 0u64);
         for (k, &v) in f[..count].iter().enumerate() {
-            positive |= u32::from(v > 0.0) << k;
-            zero |= u32::from(v == 0.0) << k;
+            positive |= u64::from(v > 0.0) << k;
+            zero |= u64::from(v == 0.0) << k;
         }
         // Edge k runs from vertex k to k + 1: it crosses where their signs differ, and lies on the
         // line where both are zero.
-        let edges = (1u32 << (count - 1)) - 1;
+        let edges = (1u64 << (count - 1)) - 1;
         let mut crossed = (positive ^ (positive >> 1)) & edges;
         let mut along = zero & (zero >> 1) & edges;
         let mut found = 0;
@@ -203,7 +345,7 @@ impl PreparedLineIndex {
             } else {
                 frame.edge_crossing(p, q, fp, fq)
             };
-            if place != Along::Before {
+            if place != Along::Before && !(ON_SEGMENT && place == Along::After) {
                 crossings.record(place, t);
                 found += 1;
             }

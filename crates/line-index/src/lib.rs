@@ -21,17 +21,17 @@
 //! # The algorithm
 //!
 //! Preparation lays the rings out in one vertex array (each ring closed by a repeat of its first
-//! vertex) and builds a bounding-box hierarchy over **runs of 8 consecutive edges** in ring order
-//! (leaves), inner nodes pairing consecutive runs. A leaf's box hugs its piece of the boundary, so
-//! a line meets few of them. Nodes are stored in pre-order with a skip link past each subtree;
-//! a query walks the array without a stack.
+//! vertex) and builds a four-way bounding-box tree over **runs of 16 consecutive edges** in ring
+//! order (leaves), each inner node grouping four consecutive runs or groups. A leaf's box hugs its
+//! piece of the boundary, so a line meets few of them; a node keeps its four children's boxes
+//! side by side, so they are tested together with straight-line arithmetic.
 //!
 //! Per segment `a -> b`:
 //!
 //! 1. zero length: nothing; the window's bounding box rejects the segment when both ends lie beyond
 //!    one side (Cohen-Sutherland, as in Liu and Wang et al.);
 //! 2. the tree is walked along the **ray** from `a` through `b` (the line from the start on): a
-//!    subtree is skipped when its box lies wholly on one side of the line or behind `a`;
+//!    child is skipped when its box lies wholly on one side of the line or behind `a`;
 //! 3. in each leaf reached, Liu's rule: the exact sign of the line function at each vertex, a
 //!    crossing for each edge whose end signs differ, placed exactly before, at, inside or after
 //!    the segment's ends ([`clip_core::LineFrame::edge_crossing`]); edges on the line are boundary;
@@ -40,29 +40,36 @@
 //!    looked for: every ring crosses a line an even number of times, so their parity is that of
 //!    the crossings found, and one stand-in crossing before the start records it.
 //!
+//! A **short segment** (`|dx| + |dy|` below a quarter of the bounding box's width + height, on a
+//! window of more than 4 leaves) does not walk the rest of its line: the exact place of its start
+//! comes from a horizontal ray to the nearer side of the box (edges half-open in y, exact
+//! orientation), and only the boxes meeting the segment itself are walked; the crossings on it
+//! turn the start's parity into the end's. A start on the boundary has no place that tells which
+//! side the segment leaves into, so those segments take the ray of step 2.
+//!
 //! The result is Liu's, crossing for crossing, for every segment.
 //!
 //! # Exactness
 //!
 //! Every decision is exact. A vertex's side is the rounded line function accepted beyond the error
 //! bound of the first stage of Shewchuk's `orient2d` and the adaptive predicate otherwise
-//! ([`clip_core::LineSide`]), so it is `orient2d`'s sign. A box is skipped only when two- and
-//! three-corner tests computed in f64 clear the same kind of error bound: a box the ray touches is
-//! never skipped (`ray_box`). Degenerate incidences are Liu's: a vertex on the line counts as on
-//! its negative side (one crossing when its neighbours lie on opposite sides, a touch otherwise);
-//! an edge along the line is boundary, so visible.
+//! ([`clip_core::LineSide`]), so it is `orient2d`'s sign. A box is skipped only when a rounded
+//! two-product expression of exact coordinates clears the same kind of error bound, so a box the
+//! ray (or segment) touches is never skipped; the horizontal ray compares coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
+//! as on its negative side (one crossing when its neighbours lie on opposite sides, a touch
+//! otherwise); an edge along the line is boundary, so visible.
 //!
 //! # Cost and memory
 //!
 //! - **Preparation**: O(n) time for n window edges (one pass to lay out the vertices, one to build
-//!   the tree bottom-up); no sorting.
-//! - **Memory**: 32 bytes per vertex (the points and their coordinate arrays) plus about
-//!   `2n / 8` tree nodes of 48 bytes: about 44 bytes per edge, 440 KB at 10^4 edges.
-//!   [`PreparedLineIndex::memory_bytes`] reports it.
+//!   the tree top-down over the runs); no sorting.
+//! - **Memory**: 32 bytes per vertex (the points and their coordinate arrays), one node of 152
+//!   bytes per about three leaves and 8 bytes per leaf: about 36 bytes per edge, about 350 KiB at
+//!   10^4 edges. [`PreparedLineIndex::memory_bytes`] reports it.
 //! - **Per segment**: the boxes the ray meets at each level of the tree, about O(k log(n / k))
 //!   for k crossings on a boundary a line meets a bounded number of times (smooth or lobed
-//!   windows, holes), plus 8 vertex signs per leaf reached. Against windows of up to one leaf the
-//!   tree is its root, and the cost is Liu's with a filtered sign.
+//!   windows, holes), plus 17 vertex signs per leaf reached. Against windows of one leaf (up to
+//!   16 edges) the tree is its root, and the cost is Liu's with a filtered sign.
 //!
 //! # Limits
 //!
