@@ -2,6 +2,7 @@
 //! what machine a run happened, peak memory, progress bars.
 
 pub mod out_dir;
+pub mod parallel;
 pub mod peak_memory;
 pub mod progress;
 pub mod provenance;

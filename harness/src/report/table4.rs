@@ -21,13 +21,16 @@ pub const MD: &str = "wang-table4.md";
 pub const PLOT: &str = "wang-table4-gain.svg";
 
 /// The clippers of the table, in column order, with their column titles.
-const COLUMNS: [(&str, &str); 5] = [
+const COLUMNS: [(&str, &str); 6] = [
     ("liu", "Liu"),
     ("virtual-box-no45", "New1"),
     ("virtual-box", "New2"),
     ("cyrus-beck", "cyrus-beck"),
     ("geo", "geo"),
+    ("indexed", "indexed"),
 ];
+/// Columns of this project's clippers (not geo).
+const OURS: [usize; 5] = [0, 1, 2, 3, 5];
 
 /// The size rows, in the table's order: name in the files, and a label.
 const SIZE_ROWS_NAMES: [(&str, &str); 2] = [("W1", "row 1 (paper's polygon)"), ("W2", "row 2 (W1 = 4, W2 = 80)")];
@@ -44,12 +47,20 @@ pub struct Row {
     /// Our window's measured W1 and W2.
     pub w1_w2: (f64, f64),
     /// Median ms per batch for each of [`COLUMNS`] (NaN where the clipper does not run).
-    pub ms: [f64; 5],
+    pub ms: [f64; 6],
     /// Repetitions behind each median.
-    pub repetitions: [usize; 5],
+    pub repetitions: [usize; 6],
 }
 
 impl Row {
+    /// The fastest of this project's clippers on this window: its column and ms per batch.
+    pub fn best_ours(&self) -> (usize, f64) {
+        OURS.iter()
+            .map(|&i| (i, self.ms[i]))
+            .filter(|(_, v)| !v.is_nan())
+            .fold((0, f64::INFINITY), |best, c| if c.1 < best.1 { c } else { best })
+    }
+
     /// (Liu - New2) x 100% / New2.
     pub fn gain(&self) -> f64 {
         (self.ms[0] - self.ms[2]) * 100.0 / self.ms[2]
@@ -95,6 +106,7 @@ pub fn markdown_table(rows: &[Row]) -> String {
         "paper New1",
         "paper New2",
         "paper Gain %",
+        "indexed ms",
         "cyrus-beck ms",
         "geo ms",
     ]);
@@ -117,6 +129,7 @@ pub fn markdown_table(rows: &[Row]) -> String {
                 pv(|p| p.new1),
                 pv(|p| p.new2),
                 pv(|p| p.gain),
+                num(r.ms[5], 3),
                 "n/a (concave)".to_owned(),
                 num(r.ms[4], 2),
             ]
@@ -127,7 +140,17 @@ pub fn markdown_table(rows: &[Row]) -> String {
 
 /// The same clippers on convex windows of the same sizes, where Cyrus-Beck applies.
 pub fn convex_table(rows: &[Row]) -> String {
-    let head = header(&["Edges", "Size row", "Liu ms", "New1 ms", "New2 ms", "Gain %", "cyrus-beck ms", "geo ms"]);
+    let head = header(&[
+        "Edges",
+        "Size row",
+        "Liu ms",
+        "New1 ms",
+        "New2 ms",
+        "Gain %",
+        "indexed ms",
+        "cyrus-beck ms",
+        "geo ms",
+    ]);
     let body = rows
         .iter()
         .filter(|r| r.shape == "convex")
@@ -139,6 +162,7 @@ pub fn convex_table(rows: &[Row]) -> String {
                 num(r.ms[1], 3),
                 num(r.ms[2], 3),
                 num(r.gain(), 1),
+                num(r.ms[5], 3),
                 num(r.ms[3], 3),
                 num(r.ms[4], 2),
             ]
@@ -279,6 +303,19 @@ pub fn reading(rows: &[Row]) -> String {
             range(&geo).replace('%', "")
         ));
     }
+    for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
+        let best: Vec<String> = concave
+            .iter()
+            .filter(|r| r.size_row == i)
+            .map(|r| {
+                let (c, ms) = r.best_ours();
+                format!("{} edges: {} {} ns", r.edges, COLUMNS[c].1, num(ms * 1e6 / 10_000.0, 1))
+            })
+            .collect();
+        if !best.is_empty() {
+            text.push_str(&format!("- The fastest of our clippers per segment, {label}: {}.\n", best.join("; ")));
+        }
+    }
     let convex: Vec<&Row> = rows.iter().filter(|r| r.shape == "convex" && !r.ms[3].is_nan()).collect();
     if !convex.is_empty() {
         let cb: Vec<f64> = convex.iter().map(|r| r.ms[3] / r.ms[2]).collect();
@@ -372,7 +409,7 @@ mod tests {
         let rows = rows(&raw, &windows);
         assert_eq!(rows.len(), 1);
         assert_eq!(rows[0].gain(), 50.0);
-        assert_eq!(rows[0].repetitions, [3, 0, 2, 0, 0]);
+        assert_eq!(rows[0].repetitions, [3, 0, 2, 0, 0, 0]);
         assert!(rows[0].ms[3].is_nan());
         assert!(reading(&rows).contains("our gain goes from 50.0% at 6 edges"));
     }

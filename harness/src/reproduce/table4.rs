@@ -1,6 +1,6 @@
 //! Measures Wang et al.'s Table 4: batches of random segments clipped against windows of 6 to 50
 //! edges at the paper's two sizes by Liu's algorithm, the virtual-box algorithm without (New1)
-//! and with (New2) the 45° box, Cyrus-Beck (convex windows) and geo; plus the share of segments
+//! and with (New2) the 45° box, the indexed clipper, Cyrus-Beck (convex windows) and geo; plus the share of segments
 //! each rejection stage removes.
 
 use std::hint::black_box;
@@ -8,6 +8,7 @@ use std::path::Path;
 
 use clip_core::{LineClipper, Polygons, PreparedWindow, Segment, VisiblePiece};
 use clip_cyrus_beck::{CyrusBeck, Liu, PreparedCyrusBeck, PreparedLiu};
+use clip_line_index::LineIndex;
 use clip_peers::GeoLineClipper;
 use clip_testkit::workload::{WANG_EDGES, WangSize, wang_measure, wang_segments, wang_window};
 use clip_virtual_box::{PreparedVirtualBox, VirtualBox};
@@ -54,6 +55,7 @@ fn clippers() -> Vec<Box<dyn LineClipper>> {
         Box::new(Liu),
         Box::new(VirtualBox::NEW1),
         Box::new(VirtualBox::NEW2),
+        Box::new(LineIndex),
         Box::new(CyrusBeck),
         Box::new(GeoLineClipper),
     ]
