@@ -148,12 +148,24 @@ pub fn prepare_table(records: &[PrepareRecord]) -> String {
 /// The many-segments point: median seconds per configuration and the ratio to Liu.
 pub fn large_table(records: &[LargeRecord]) -> (String, Option<(f64, f64)>) {
     let mut groups: BTreeMap<(String, usize), Vec<f64>> = BTreeMap::new();
+    let mut cpu: BTreeMap<(String, usize), Vec<f64>> = BTreeMap::new();
     for r in records {
         groups.entry((r.clipper.clone(), r.threads)).or_default().push(r.seconds);
+        if let Some(c) = r.cpu_seconds {
+            cpu.entry((r.clipper.clone(), r.threads)).or_default().push(c);
+        }
     }
     let liu = groups.iter().find(|((c, _), _)| c == "liu").map(|(_, v)| median(v));
     let Some(first) = records.first() else { return (String::new(), None) };
-    let head = header(&["Clipper", "Threads", "Rounds", "Seconds (median)", "Segments per second", "Liu / this"]);
+    let head = header(&[
+        "Clipper",
+        "Threads",
+        "Rounds",
+        "Seconds (median)",
+        "CPU seconds, all threads (median)",
+        "Segments per second",
+        "Liu / this",
+    ]);
     let body = groups
         .iter()
         .map(|((c, t), v)| {
@@ -163,6 +175,7 @@ pub fn large_table(records: &[LargeRecord]) -> (String, Option<(f64, f64)>) {
                 t.to_string(),
                 v.len().to_string(),
                 format!("**{}**", num(s, 3)),
+                cpu.get(&(c.clone(), *t)).map_or("n/a".to_owned(), |v| num(median(v), 3)),
                 format!("{:.2e}", first.segments as f64 / s),
                 liu.map_or("n/a".to_owned(), |l| num(l / s, 1)),
             ]
@@ -174,7 +187,8 @@ pub fn large_table(records: &[LargeRecord]) -> (String, Option<(f64, f64)>) {
         "{} segments against `lines-large` case 3 ({} edges in {} rings: a lobed outer ring with lobed holes), long, \
          short and exactly incident segments mixed (`clip_testkit::workload::lines_large_segments`); several threads \
          means rayon over chunks of 16384 segments, pieces concatenated in chunk order \
-         (`harness/src/measure/parallel.rs`).\n\n",
+         (`harness/src/measure/parallel.rs`). The wall clock counts the time other jobs on this shared machine \
+         held the cores; the CPU seconds are what this process's threads ran (`/proc/self/task/*/schedstat`).\n\n",
         first.segments, first.edges, first.rings
     );
     (intro + &table(&head, &body), liu.map(|l| (best_indexed, l)))

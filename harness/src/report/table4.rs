@@ -12,7 +12,9 @@ use crate::measure::timing::median;
 use crate::papers::{WANG_TABLE4, wang_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::SIZE_ROWS;
-use crate::results_files::wang_table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
+use crate::results_files::wang_table4::{
+    CSV, META, STAGE_TIMES_CSV, STAGES_CSV, StageRecord, StageTimeRecord, WINDOWS_CSV, WindowRecord,
+};
 use crate::write::write_file;
 
 /// The markdown table file.
@@ -221,6 +223,78 @@ pub fn stages_table(stages: &[StageRecord]) -> String {
     table(&head, &body)
 }
 
+/// New2's stages in pipeline order, with their column titles.
+const STAGE_COLUMNS: [(&str, &str); 5] = [
+    ("meb", "MEB"),
+    ("rotated-box", "45° box"),
+    ("virtual-box", "virtual box"),
+    ("code-sum", "code sum"),
+    ("intersected", "intersected"),
+];
+
+/// Per window, for the segments New2 settles at each stage: their share, New2's and Liu's ns per
+/// segment on them, and the sum over stages of share x (Liu - New2), which is where the gain
+/// comes from (or goes).
+pub fn stage_times_table(records: &[StageTimeRecord]) -> (String, Vec<(String, usize, f64, Vec<(String, f64)>)>) {
+    let mut head = vec!["Edges".to_owned(), "Size row".to_owned()];
+    head.extend(STAGE_COLUMNS.iter().map(|(_, t)| format!("{t}: share, New2 / Liu ns")));
+    head.push("Σ share x (Liu - New2) ns".to_owned());
+    let mut windows: Vec<(String, usize)> = records.iter().map(|r| (r.size_row.clone(), r.edges)).collect();
+    windows.sort();
+    windows.dedup();
+    let mut body = Vec::new();
+    let mut sums = Vec::new();
+    for (row, edges) in windows {
+        let find = |stage: &str, clipper: &str| {
+            records.iter().find(|r| r.size_row == row && r.edges == edges && r.stage == stage && r.clipper == clipper)
+        };
+        let label = SIZE_ROWS_NAMES.iter().find(|(n, _)| *n == row).map_or(row.clone(), |(_, l)| (*l).to_owned());
+        let mut cells = vec![edges.to_string(), label.clone()];
+        let mut total = 0.0;
+        let mut parts = Vec::new();
+        for (stage, title) in STAGE_COLUMNS {
+            match (find(stage, "virtual-box"), find(stage, "liu")) {
+                (Some(n), Some(l)) => {
+                    let share = n.segments as f64 / n.of as f64;
+                    let part = share * (l.ns_per_segment - n.ns_per_segment);
+                    total += part;
+                    parts.push((title.to_owned(), part));
+                    cells.push(format!(
+                        "{}%, {} / {}",
+                        num(share * 100.0, 1),
+                        num(n.ns_per_segment, 1),
+                        num(l.ns_per_segment, 1)
+                    ));
+                }
+                _ => cells.push("-".to_owned()),
+            }
+        }
+        cells.push(format!("**{}**", num(total, 1)));
+        body.push(cells);
+        sums.push((label, edges, total, parts));
+    }
+    (table(&head, &body), sums)
+}
+
+/// What the stage timings say, computed from them.
+pub fn stage_reading(sums: &[(String, usize, f64, Vec<(String, f64)>)]) -> String {
+    let mut text = String::new();
+    for (label, edges, total, parts) in sums {
+        let (gain, loss): (Vec<_>, Vec<_>) = parts.iter().partition(|(_, v)| *v >= 0.0);
+        let list = |v: &[&(String, f64)]| {
+            v.iter().map(|(t, ns)| format!("{t} {}", num(ns.abs(), 1))).collect::<Vec<_>>().join(", ")
+        };
+        text.push_str(&format!(
+            "- {label}, {edges} edges: New2 {} {} ns per segment of the batch against Liu; gained at {}; lost at {}.\n",
+            if *total >= 0.0 { "saves" } else { "loses" },
+            num(total.abs(), 1),
+            if gain.is_empty() { "no stage".to_owned() } else { list(&gain) },
+            if loss.is_empty() { "no stage".to_owned() } else { list(&loss) },
+        ));
+    }
+    text
+}
+
 /// Gain against edges for both size rows, ours and the paper's.
 pub fn chart(rows: &[Row]) -> Chart {
     let mut series = Vec::new();
@@ -346,6 +420,22 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     let stages: Vec<StageRecord> = read_csv(&out.join(STAGES_CSV))?;
     let rows = rows(&measurements, &windows);
     chart(&rows).write_svg(&out.join(PLOT))?;
+    let stage_times_path = out.join(STAGE_TIMES_CSV);
+    let stage_times = if stage_times_path.exists() {
+        let records: Vec<StageTimeRecord> = read_csv(&stage_times_path)?;
+        let (md, sums) = stage_times_table(&records);
+        format!(
+            "### Where New2 gains and loses time against Liu, stage by stage (concave windows)\n\n\
+             The batch split by the stage at which New2 settles each segment; New2 and Liu timed on each part \
+             (medians of 31 interleaved rounds, ns per segment of the part). A segment New2 rejects early still costs \
+             Liu its MEB test and, past it, a pass over every vertex; a segment New2 intersects costs New2 its three \
+             boxes and the vertex codes on top of what Liu does. share x (Liu - New2), summed, is New2's gain per \
+             segment of the whole batch.\n\n{md}\n{}\n",
+            stage_reading(&sums)
+        )
+    } else {
+        String::new()
+    };
     let (provenance, notes) = provenance_line(&out.join(META))?;
     let param = |k: &str| provenance.parameters.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0);
     Ok(Some(format!(
@@ -357,7 +447,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          numerically the paper's seconds for 1000 batches. Gain = (Liu - New2) x 100% / New2. Cyrus-Beck needs a \
          convex window (n/a here; see the convex table).\n\n{}\n![gain against edges]({PLOT})\n\n{}\n\
          ### The same sizes with convex windows\n\n{}\n\
-         ### Share of the batch settled by each stage (concave windows; New2's pipeline, and Liu's)\n\n{}\n{}\n",
+         ### Share of the batch settled by each stage (concave windows; New2's pipeline, and Liu's)\n\n{}\n{}{}\n",
         param("segments_per_batch"),
         param("repetitions"),
         param("geo_repetitions"),
@@ -365,6 +455,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         reading(&rows),
         convex_table(&rows),
         stages_table(&stages),
+        stage_times,
         notes
     )))
 }

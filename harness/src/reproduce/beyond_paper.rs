@@ -16,6 +16,7 @@ use clip_virtual_box::VirtualBox;
 use serde_json::json;
 
 use crate::cli_error::CliError;
+use crate::measure::cpu_time::process_cpu_ns;
 use crate::measure::parallel::clip_parallel;
 use crate::measure::progress::bar;
 use crate::measure::provenance::Provenance;
@@ -212,30 +213,32 @@ fn many_segments(settings: &Settings) -> Result<(Vec<LargeRecord>, Vec<String>),
     let fail =
         |name: &str, e: clip_core::ClipError| CliError::failed(format!("beyond-paper: {name} on lines-large: {e}"));
     let mut records = Vec::new();
-    let record = |clipper: &str, threads: usize, repetition: usize, seconds: f64, pieces: usize| LargeRecord {
-        clipper: clipper.to_owned(),
-        threads,
-        segments: segments.len(),
-        edges: case.window_edges,
-        rings: window.rings.len(),
-        repetition,
-        seconds,
-        pieces,
-    };
+    let record =
+        |clipper: &str, threads: usize, repetition: usize, (seconds, cpu_seconds), pieces: usize| LargeRecord {
+            clipper: clipper.to_owned(),
+            threads,
+            segments: segments.len(),
+            edges: case.window_edges,
+            rings: window.rings.len(),
+            repetition,
+            seconds,
+            cpu_seconds,
+            pieces,
+        };
     let indexed = LineIndex.prepare(window).map_err(|e| fail("indexed", e))?;
     let mut one = Vec::with_capacity(segments.len());
     let mut many = Vec::with_capacity(segments.len());
     let mut progress = bar(2 * settings.large_repetitions + 1, "beyond the paper: 10^6 segments");
     for repetition in 0..settings.large_repetitions {
         one.clear();
-        let start = Instant::now();
+        let start = Clock::start();
         indexed.clip_batch(segments, &mut one).map_err(|e| fail("indexed", e))?;
-        records.push(record("indexed", 1, repetition, start.elapsed().as_secs_f64(), one.len()));
+        records.push(record("indexed", 1, repetition, start.read(), one.len()));
         progress.inc();
         many.clear();
-        let start = Instant::now();
+        let start = Clock::start();
         clip_parallel(indexed.as_ref(), segments, &mut many).map_err(|e| fail("indexed", e))?;
-        records.push(record("indexed", threads, repetition, start.elapsed().as_secs_f64(), many.len()));
+        records.push(record("indexed", threads, repetition, start.read(), many.len()));
         progress.inc();
         if one != many {
             return Err(CliError::failed("beyond-paper: the parallel clip wrote other pieces than one thread"));
@@ -243,9 +246,9 @@ fn many_segments(settings: &Settings) -> Result<(Vec<LargeRecord>, Vec<String>),
     }
     let liu = Liu.prepare(window).map_err(|e| fail("liu", e))?;
     let mut by_liu = Vec::with_capacity(segments.len());
-    let start = Instant::now();
+    let start = Clock::start();
     clip_parallel(liu.as_ref(), segments, &mut by_liu).map_err(|e| fail("liu", e))?;
-    records.push(record("liu", threads, 0, start.elapsed().as_secs_f64(), by_liu.len()));
+    records.push(record("liu", threads, 0, start.read(), by_liu.len()));
     progress.inc();
     progress.finish();
     let same_count = by_liu.len() == one.len() && by_liu.iter().zip(&one).all(|(l, o)| l.segment == o.segment);
@@ -257,4 +260,23 @@ fn many_segments(settings: &Settings) -> Result<(Vec<LargeRecord>, Vec<String>),
         if same_count { "on the same segments" } else { "NOT on the same segments" }
     )];
     Ok((records, notes))
+}
+
+/// Wall clock and process CPU time from one moment on.
+struct Clock {
+    wall: Instant,
+    cpu_ns: Option<u64>,
+}
+
+impl Clock {
+    fn start() -> Clock {
+        Clock { cpu_ns: process_cpu_ns(), wall: Instant::now() }
+    }
+
+    /// Wall-clock seconds and CPU seconds since the start.
+    fn read(&self) -> (f64, Option<f64>) {
+        let wall = self.wall.elapsed().as_secs_f64();
+        let cpu = self.cpu_ns.zip(process_cpu_ns()).map(|(a, b)| b.saturating_sub(a) as f64 / 1e9);
+        (wall, cpu)
+    }
 }

@@ -45,6 +45,9 @@ pub struct LargeRecord {
     pub repetition: usize,
     /// Wall-clock seconds for the batch.
     pub seconds: f64,
+    /// CPU seconds all threads of the process spent meanwhile (Linux; empty elsewhere): on a
+    /// shared machine, the wall clock also counts the time other jobs held the cores.
+    pub cpu_seconds: Option<f64>,
     /// Visible pieces written.
     pub pieces: usize,
 }
