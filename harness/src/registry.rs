@@ -9,6 +9,7 @@
 
 use clip_core::{LineClipper, PolygonClipper};
 use clip_cyrus_beck::{CyrusBeck, Liu};
+use clip_line_index::LineIndex;
 use clip_oracle::polygon::{GEO_TOLERANCE, REGION_TOLERANCE};
 use clip_peers::{Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, GeoClipper, GeoLineClipper};
 use clip_rect_four_state::FourState;
@@ -31,6 +32,7 @@ pub fn registry() -> Registry {
         .line(Origin::Ours, LINE_TOLERANCE, Liu)
         .line(Origin::Ours, LINE_TOLERANCE, VirtualBox::NEW2)
         .line(Origin::Ours, LINE_TOLERANCE, VirtualBox::NEW1)
+        .line(Origin::Ours, LINE_TOLERANCE, LineIndex)
         .polygon(Origin::Peer, GEO_TOLERANCE, GeoClipper::new())
         .line(Origin::Peer, GEO_TOLERANCE, GeoLineClipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())

@@ -145,6 +145,14 @@ pub fn validate_polygons(polygons: &Polygons, operand: Operand) -> Result<(), Cl
 /// Checks a batch of segments: every endpoint finite and in range. Zero-length segments are
 /// valid (they clip to nothing).
 pub fn validate_segments(segments: &[Segment]) -> Result<(), ClipError> {
+    // The common case in one branch-free pass the compiler vectorises (NaN fails `<=`); only a
+    // batch that fails it is walked again to name the first bad endpoint.
+    let in_range = |v: f64| v.abs() <= MAX_COORDINATE;
+    let all_good =
+        segments.iter().fold(true, |ok, s| ok & in_range(s.a.x) & in_range(s.a.y) & in_range(s.b.x) & in_range(s.b.y));
+    if all_good {
+        return Ok(());
+    }
     for (i, s) in segments.iter().enumerate() {
         check_point(s.a, Operand::Segments, i, 0)?;
         check_point(s.b, Operand::Segments, i, 1)?;

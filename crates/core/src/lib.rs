@@ -69,7 +69,7 @@ pub use nesting::{NestedPolygon, nest};
 pub use ops::{BoolOp, FillRule, UnknownName};
 pub use point::Point;
 pub use polygons::Polygons;
-pub use predicates::{Orientation, SegmentIntersection, orient, segment_intersection};
+pub use predicates::{LineSide, Orientation, SegmentIntersection, orient, segment_intersection};
 pub use rect::Rect;
 pub use ring::Ring;
 pub use segment::Segment;

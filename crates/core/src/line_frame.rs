@@ -1,6 +1,6 @@
 //! A segment's line as a parameter axis: `t` of points on it and their exact place relative to the ends.
 
-use crate::predicates::orient2d;
+use crate::predicates::orient2d_inline as orient2d;
 use crate::{Point, Segment};
 
 /// Where a point of the segment's line lies relative to the segment, decided exactly.

@@ -1,6 +1,6 @@
 //! Cyrus-Beck parametric clipping against a convex window: entering and leaving parameters per edge.
 
-use clip_core::predicates::{Orientation, orient, orient2d};
+use clip_core::predicates::{Orientation, orient, orient2d, orient2d_inline};
 use clip_core::{
     ClipError, LineCapabilities, LineClipper, LineFrame, Polygons, PreparedWindow, Ring, Segment, VisiblePiece,
     WindowKind, convex_window, validate_segments,
@@ -148,8 +148,9 @@ impl PreparedCyrusBeck {
         for i in 0..n {
             let (p, q) = (pts[i], pts[i + 1]);
             // The edge function: positive on the inner side of a counter-clockwise edge.
-            let ga = orient2d(p, q, s.a);
-            let gb = orient2d(p, q, s.b);
+            // orient2d's first stage inlined: the call into robust only near the edge's line.
+            let ga = orient2d_inline(p, q, s.a);
+            let gb = orient2d_inline(p, q, s.b);
             if ga < 0.0 {
                 if gb <= 0.0 {
                     return Outcome::OutsideEdge;

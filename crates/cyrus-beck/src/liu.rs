@@ -1,8 +1,7 @@
 //! Liu's line clipper for any window: vertices classified by the line's sign, sign-changing edges crossed.
 
-use clip_core::predicates::orient2d;
 use clip_core::{
-    ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, Polygons, PreparedWindow, Segment,
+    ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, LineSide, Polygons, PreparedWindow, Segment,
     VisiblePiece, WindowKind, validate_segments, validate_window,
 };
 
@@ -134,23 +133,36 @@ impl PreparedWindow for PreparedLiu {
 pub(crate) fn cross_by_vertex_sides(table: &RingTable, frame: &LineFrame, scratch: &mut Scratch) {
     let Scratch { sides, crossings } = scratch;
     crossings.clear();
-    let (a, b) = (frame.a, frame.b);
-    sides.clear();
-    sides.extend(table.points.iter().map(|&v| orient2d(a, b, v)));
     let points = &table.points;
+    // The line function with b - a formed once and orient2d's first stage inlined, in two passes:
+    // the rounded values with NaN where rounding could flip the sign (straight-line code the
+    // compiler vectorises), then the adaptive predicate for those few.
+    let line = LineSide::new(frame.a, frame.b);
+    sides.resize(points.len(), 0.0);
+    for (f, v) in sides.iter_mut().zip(points) {
+        let (value, bound) = line.estimate(v.x, v.y);
+        *f = if value.abs() > bound { value } else { f64::NAN };
+    }
+    for (f, &v) in sides.iter_mut().zip(points) {
+        if f.is_nan() {
+            *f = line.side(v);
+        }
+    }
     let mut on_line = false;
     for ring in &table.rings {
-        for i in ring.clone() {
-            let (fp, fq) = (sides[i], sides[i + 1]);
+        let (ring_sides, ring_points) = (&sides[ring.start..=ring.end], &points[ring.start..=ring.end]);
+        for (k, f) in ring_sides.windows(2).enumerate() {
+            let (fp, fq) = (f[0], f[1]);
             on_line |= fp == 0.0;
             if (fp > 0.0) == (fq > 0.0) {
                 continue;
             }
+            let (p, q) = (ring_points[k], ring_points[k + 1]);
             if fp == 0.0 || fq == 0.0 {
-                let v = if fp == 0.0 { points[i] } else { points[i + 1] };
+                let v = if fp == 0.0 { p } else { q };
                 crossings.record(frame.place(v), frame.param(v));
             } else {
-                let (place, t) = frame.edge_crossing(points[i], points[i + 1], fp, fq);
+                let (place, t) = frame.edge_crossing(p, q, fp, fq);
                 crossings.record(place, t);
             }
         }

@@ -2,12 +2,16 @@
 
 mod degenerate_lines;
 mod hard_cases;
+mod large_lines;
 mod shapes;
 mod wang;
 mod windows;
 
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
 pub use shapes::convex_hull;
+pub use large_lines::{
+    BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,
+};
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};
@@ -24,7 +28,7 @@ pub const POLYGON_WORKLOADS: &[&str] = &["vatti-t3", "star", "star-far", "scribb
 pub const FAR_OFFSET: Point = Point::new(1.0e9, 1.0e9);
 
 /// The line workloads, by name.
-pub const LINE_WORKLOADS: &[&str] = &["wang-t4", "lines-degenerate"];
+pub const LINE_WORKLOADS: &[&str] = &["wang-t4", "lines-degenerate", "lines-large"];
 
 /// The subject sizes of Vatti's Table 3.
 pub const VATTI_EDGES: [usize; 6] = [4, 10, 20, 40, 100, 200];
@@ -327,6 +331,9 @@ fn grid_rings(rng: &mut Pcg64, n: usize, g: i32) -> Polygons {
 ///
 /// `lines-degenerate`: a window on even integer coordinates (concave for `Any`) and segments
 /// through its vertices, along its edges, ending on its boundary, axis-parallel, zero-length.
+///
+/// `lines-large`: a concave window with holes of [`LINES_LARGE_EDGES`]`[index % 4]` edges (its
+/// convex hull for `Convex`, its bounding box for `Rectangle`) and [`lines_large_segments`].
 pub fn line_case(
     workload: &str,
     seed: u64,
@@ -371,6 +378,32 @@ pub fn line_case(
             );
             Ok(LineCase {
                 workload: "lines-degenerate",
+                seed,
+                index,
+                window_edges: w.vertex_count(),
+                window: w,
+                segments: segs,
+                description,
+            })
+        }
+        "lines-large" => {
+            let mut rng = stream_rng("lines-large", seed, index as u64);
+            let edges = LINES_LARGE_EDGES[index % LINES_LARGE_EDGES.len()];
+            let concave = lines_large_window(&mut rng, edges);
+            let w = match window {
+                WindowKind::Any => concave,
+                WindowKind::Convex => Polygons::from(Ring::new(shapes::convex_hull(&concave.rings[0].points))),
+                WindowKind::Rectangle => Polygons::from(concave.bounds()),
+            };
+            let segs = lines_large_segments(&mut rng, &w, segments);
+            let description = format!(
+                "lines-large {} window {} edges in {} rings, {segments} long, short and incident segments",
+                shape_word(window),
+                w.vertex_count(),
+                w.rings.len()
+            );
+            Ok(LineCase {
+                workload: "lines-large",
                 seed,
                 index,
                 window_edges: w.vertex_count(),

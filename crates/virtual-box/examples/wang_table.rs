@@ -2,12 +2,13 @@
 //! ns per segment, on the `wang-t4` workload (the criterion bench `wang_t4` is the careful one).
 //!
 //! `cargo run --release -p clip-virtual-box --example wang_table [rounds]`, or with
-//! `[rounds] <clipper> <W1|W2> <edges>` one configuration only (to run under `perf stat`).
+//! `[rounds] <clipper> <W1|W2> <edges>` one configuration only (to run under `perf stat` or
+//! callgrind; `cyrus-beck` runs on the convex window of that size).
 
 use std::time::Instant;
 
 use clip_core::{LineClipper, Segment};
-use clip_cyrus_beck::Liu;
+use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_testkit::workload::{WANG_EDGES, WangSize, wang_segments, wang_window};
 use clip_virtual_box::VirtualBox;
 
@@ -36,11 +37,13 @@ fn main() {
     if let [_, _, name, size, edges] = args.as_slice() {
         let clipper: &dyn LineClipper = match name.as_str() {
             "liu" => &Liu,
+            "cyrus-beck" => &CyrusBeck,
             "virtual-box-no45" => &VirtualBox::NEW1,
             _ => &VirtualBox::NEW2,
         };
         let size = if size == "W1" { WangSize::W1 } else { WangSize::W2 };
-        let window = wang_window(edges.parse().expect("edge count"), size, 2005, false);
+        // Cyrus-Beck takes convex windows only: it gets Table 4's convex window of the same size.
+        let window = wang_window(edges.parse().expect("edge count"), size, 2005, name == "cyrus-beck");
         println!("{name}: {:.1} ns per segment", best_ns_per_segment(clipper, &window, &segments, rounds));
         return;
     }

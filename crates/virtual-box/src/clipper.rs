@@ -160,8 +160,9 @@ impl PreparedVirtualBox {
         }
     }
 
-    /// The pipeline of Fig. 9 for one segment.
-    #[inline]
+    /// The pipeline of Fig. 9 for one segment (inlined into the batch loop: a call per segment
+    /// costs about as much as the MEB test).
+    #[inline(always)]
     fn clip_one<const ROTATED: bool>(
         &self,
         index: usize,
@@ -173,11 +174,14 @@ impl PreparedVirtualBox {
         if a == b {
             return Stage::ZeroLength;
         }
-        // Both box tests are a few comparisons: evaluated together, they cost one branch, which
-        // matters more than the comparisons (which box rejected is told apart only then).
-        let meb = self.meb.rejects_segment(a, b);
-        if meb | (ROTATED && self.rotated.rejects(a, b)) {
-            return if meb { Stage::Meb } else { Stage::RotatedBox };
+        // The MEB alone first: it settles about 60% of wang-t4's segments, and timed stage by
+        // stage (reproduce wang-table4) the two boxes evaluated together cost those segments
+        // 3.3 ns against Liu's 1.8 for the MEB alone.
+        if self.meb.rejects_segment(a, b) {
+            return Stage::Meb;
+        }
+        if ROTATED && self.rotated.rejects(a, b) {
+            return Stage::RotatedBox;
         }
         let Some(vbox) = AdaptiveBox::new(a, b, &self.meb) else {
             return Stage::VirtualBox;

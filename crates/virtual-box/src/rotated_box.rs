@@ -32,20 +32,12 @@ impl RotatedBox {
         })
     }
 
-    /// The four-bit code of `p` against the rotated box.
-    #[inline]
-    fn outcode(&self, p: Point) -> u8 {
-        let (u, v) = (p.x + p.y, p.x - p.y);
-        (u < self.u_min) as u8
-            | ((u > self.u_max) as u8) << 1
-            | ((v < self.v_min) as u8) << 2
-            | ((v > self.v_max) as u8) << 3
-    }
-
-    /// True when both ends lie strictly beyond the same side of the rotated box.
+    /// True when both ends lie strictly beyond the same side of the rotated box: Cohen-Sutherland's
+    /// common outcode bit, read as the nearer end beyond that side (no branch).
     #[inline]
     pub fn rejects(&self, a: Point, b: Point) -> bool {
-        self.outcode(a) & self.outcode(b) != 0
+        let (ua, ub, va, vb) = (a.x + a.y, b.x + b.y, a.x - a.y, b.x - b.y);
+        (ua.max(ub) < self.u_min) | (ua.min(ub) > self.u_max) | (va.max(vb) < self.v_min) | (va.min(vb) > self.v_max)
     }
 }
 

@@ -1,7 +1,6 @@
 //! Window vertices encoded against the segment's line (+1, -1, 0): by the virtual box first, exactly in the near-zero band.
 
-use clip_core::Point;
-use clip_core::predicates::orient2d;
+use clip_core::{LineSide, Point};
 
 use crate::adaptive_box::AdaptiveBox;
 
@@ -33,8 +32,9 @@ pub(crate) fn encode(
     sides: &mut [f64],
 ) -> i32 {
     let (lo, hi, beyond_hi) = vbox.band();
+    let line = LineSide::new(a, b);
     let exact = |v: Point, side: &mut f64| {
-        let f = orient2d(a, b, v);
+        let f = line.side(v);
         *side = f;
         EXACT * ((f > 0.0) as i8 - (f < 0.0) as i8)
     };

@@ -3,7 +3,7 @@
 use plotters::style::RGBColor;
 
 /// Every clipper's colour, so a clipper looks the same in every plot.
-const CLIPPERS: [(&str, RGBColor); 9] = [
+const CLIPPERS: [(&str, RGBColor); 10] = [
     ("vatti", RGBColor(31, 119, 180)),
     ("sutherland-hodgman", RGBColor(255, 127, 14)),
     ("rect-four-state", RGBColor(44, 160, 44)),
@@ -13,11 +13,12 @@ const CLIPPERS: [(&str, RGBColor); 9] = [
     ("virtual-box", RGBColor(227, 119, 194)),
     ("virtual-box-no45", RGBColor(127, 127, 127)),
     ("cyrus-beck", RGBColor(188, 189, 34)),
+    ("indexed", RGBColor(23, 190, 207)),
 ];
 
 /// Colours for clippers not in the table, in order of first request by name hash.
 const SPARE: [RGBColor; 4] =
-    [RGBColor(23, 190, 207), RGBColor(0, 0, 0), RGBColor(255, 187, 120), RGBColor(152, 223, 138)];
+    [RGBColor(0, 0, 0), RGBColor(255, 187, 120), RGBColor(152, 223, 138), RGBColor(174, 199, 232)];
 
 /// The colour of a clipper's series.
 pub fn clipper_colour(name: &str) -> RGBColor {

@@ -2,6 +2,7 @@
 //! markdown tables and plots, gathered in REPORT.md.
 
 pub mod bench_tables;
+pub mod beyond_paper;
 pub mod document;
 pub mod markdown;
 mod provenance_line;
@@ -33,6 +34,7 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     let out = ready_out_dir(&args.out)?;
     table3::write(&out)?;
     table4::write(&out)?;
+    beyond_paper::write(&out)?;
     bench_tables::write(&out)?;
     write_report(&out)?;
     Ok(ExitCode::SUCCESS)

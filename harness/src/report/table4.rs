@@ -12,7 +12,9 @@ use crate::measure::timing::median;
 use crate::papers::{WANG_TABLE4, wang_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::SIZE_ROWS;
-use crate::results_files::wang_table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
+use crate::results_files::wang_table4::{
+    CSV, META, STAGE_TIMES_CSV, STAGES_CSV, StageRecord, StageTimeRecord, WINDOWS_CSV, WindowRecord,
+};
 use crate::write::write_file;
 
 /// The markdown table file.
@@ -21,13 +23,16 @@ pub const MD: &str = "wang-table4.md";
 pub const PLOT: &str = "wang-table4-gain.svg";
 
 /// The clippers of the table, in column order, with their column titles.
-const COLUMNS: [(&str, &str); 5] = [
+const COLUMNS: [(&str, &str); 6] = [
     ("liu", "Liu"),
     ("virtual-box-no45", "New1"),
     ("virtual-box", "New2"),
     ("cyrus-beck", "cyrus-beck"),
     ("geo", "geo"),
+    ("indexed", "indexed"),
 ];
+/// Columns of this project's clippers (not geo).
+const OURS: [usize; 5] = [0, 1, 2, 3, 5];
 
 /// The size rows, in the table's order: name in the files, and a label.
 const SIZE_ROWS_NAMES: [(&str, &str); 2] = [("W1", "row 1 (paper's polygon)"), ("W2", "row 2 (W1 = 4, W2 = 80)")];
@@ -44,12 +49,20 @@ pub struct Row {
     /// Our window's measured W1 and W2.
     pub w1_w2: (f64, f64),
     /// Median ms per batch for each of [`COLUMNS`] (NaN where the clipper does not run).
-    pub ms: [f64; 5],
+    pub ms: [f64; 6],
     /// Repetitions behind each median.
-    pub repetitions: [usize; 5],
+    pub repetitions: [usize; 6],
 }
 
 impl Row {
+    /// The fastest of this project's clippers on this window: its column and ms per batch.
+    pub fn best_ours(&self) -> (usize, f64) {
+        OURS.iter()
+            .map(|&i| (i, self.ms[i]))
+            .filter(|(_, v)| !v.is_nan())
+            .fold((0, f64::INFINITY), |best, c| if c.1 < best.1 { c } else { best })
+    }
+
     /// (Liu - New2) x 100% / New2.
     pub fn gain(&self) -> f64 {
         (self.ms[0] - self.ms[2]) * 100.0 / self.ms[2]
@@ -95,6 +108,7 @@ pub fn markdown_table(rows: &[Row]) -> String {
         "paper New1",
         "paper New2",
         "paper Gain %",
+        "indexed ms",
         "cyrus-beck ms",
         "geo ms",
     ]);
@@ -117,6 +131,7 @@ pub fn markdown_table(rows: &[Row]) -> String {
                 pv(|p| p.new1),
                 pv(|p| p.new2),
                 pv(|p| p.gain),
+                num(r.ms[5], 3),
                 "n/a (concave)".to_owned(),
                 num(r.ms[4], 2),
             ]
@@ -127,7 +142,17 @@ pub fn markdown_table(rows: &[Row]) -> String {
 
 /// The same clippers on convex windows of the same sizes, where Cyrus-Beck applies.
 pub fn convex_table(rows: &[Row]) -> String {
-    let head = header(&["Edges", "Size row", "Liu ms", "New1 ms", "New2 ms", "Gain %", "cyrus-beck ms", "geo ms"]);
+    let head = header(&[
+        "Edges",
+        "Size row",
+        "Liu ms",
+        "New1 ms",
+        "New2 ms",
+        "Gain %",
+        "indexed ms",
+        "cyrus-beck ms",
+        "geo ms",
+    ]);
     let body = rows
         .iter()
         .filter(|r| r.shape == "convex")
@@ -139,6 +164,7 @@ pub fn convex_table(rows: &[Row]) -> String {
                 num(r.ms[1], 3),
                 num(r.ms[2], 3),
                 num(r.gain(), 1),
+                num(r.ms[5], 3),
                 num(r.ms[3], 3),
                 num(r.ms[4], 2),
             ]
@@ -195,6 +221,78 @@ pub fn stages_table(stages: &[StageRecord]) -> String {
         }
     }
     table(&head, &body)
+}
+
+/// New2's stages in pipeline order, with their column titles.
+const STAGE_COLUMNS: [(&str, &str); 5] = [
+    ("meb", "MEB"),
+    ("rotated-box", "45° box"),
+    ("virtual-box", "virtual box"),
+    ("code-sum", "code sum"),
+    ("intersected", "intersected"),
+];
+
+/// Per window, for the segments New2 settles at each stage: their share, New2's and Liu's ns per
+/// segment on them, and the sum over stages of share x (Liu - New2), which is where the gain
+/// comes from (or goes).
+pub fn stage_times_table(records: &[StageTimeRecord]) -> (String, Vec<(String, usize, f64, Vec<(String, f64)>)>) {
+    let mut head = vec!["Edges".to_owned(), "Size row".to_owned()];
+    head.extend(STAGE_COLUMNS.iter().map(|(_, t)| format!("{t}: share, New2 / Liu ns")));
+    head.push("Σ share x (Liu - New2) ns".to_owned());
+    let mut windows: Vec<(String, usize)> = records.iter().map(|r| (r.size_row.clone(), r.edges)).collect();
+    windows.sort();
+    windows.dedup();
+    let mut body = Vec::new();
+    let mut sums = Vec::new();
+    for (row, edges) in windows {
+        let find = |stage: &str, clipper: &str| {
+            records.iter().find(|r| r.size_row == row && r.edges == edges && r.stage == stage && r.clipper == clipper)
+        };
+        let label = SIZE_ROWS_NAMES.iter().find(|(n, _)| *n == row).map_or(row.clone(), |(_, l)| (*l).to_owned());
+        let mut cells = vec![edges.to_string(), label.clone()];
+        let mut total = 0.0;
+        let mut parts = Vec::new();
+        for (stage, title) in STAGE_COLUMNS {
+            match (find(stage, "virtual-box"), find(stage, "liu")) {
+                (Some(n), Some(l)) => {
+                    let share = n.segments as f64 / n.of as f64;
+                    let part = share * (l.ns_per_segment - n.ns_per_segment);
+                    total += part;
+                    parts.push((title.to_owned(), part));
+                    cells.push(format!(
+                        "{}%, {} / {}",
+                        num(share * 100.0, 1),
+                        num(n.ns_per_segment, 1),
+                        num(l.ns_per_segment, 1)
+                    ));
+                }
+                _ => cells.push("-".to_owned()),
+            }
+        }
+        cells.push(format!("**{}**", num(total, 1)));
+        body.push(cells);
+        sums.push((label, edges, total, parts));
+    }
+    (table(&head, &body), sums)
+}
+
+/// What the stage timings say, computed from them.
+pub fn stage_reading(sums: &[(String, usize, f64, Vec<(String, f64)>)]) -> String {
+    let mut text = String::new();
+    for (label, edges, total, parts) in sums {
+        let (gain, loss): (Vec<_>, Vec<_>) = parts.iter().partition(|(_, v)| *v >= 0.0);
+        let list = |v: &[&(String, f64)]| {
+            v.iter().map(|(t, ns)| format!("{t} {}", num(ns.abs(), 1))).collect::<Vec<_>>().join(", ")
+        };
+        text.push_str(&format!(
+            "- {label}, {edges} edges: New2 {} {} ns per segment of the batch against Liu; gained at {}; lost at {}.\n",
+            if *total >= 0.0 { "saves" } else { "loses" },
+            num(total.abs(), 1),
+            if gain.is_empty() { "no stage".to_owned() } else { list(&gain) },
+            if loss.is_empty() { "no stage".to_owned() } else { list(&loss) },
+        ));
+    }
+    text
 }
 
 /// Gain against edges for both size rows, ours and the paper's.
@@ -279,6 +377,19 @@ pub fn reading(rows: &[Row]) -> String {
             range(&geo).replace('%', "")
         ));
     }
+    for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
+        let best: Vec<String> = concave
+            .iter()
+            .filter(|r| r.size_row == i)
+            .map(|r| {
+                let (c, ms) = r.best_ours();
+                format!("{} edges: {} {} ns", r.edges, COLUMNS[c].1, num(ms * 1e6 / 10_000.0, 1))
+            })
+            .collect();
+        if !best.is_empty() {
+            text.push_str(&format!("- The fastest of our clippers per segment, {label}: {}.\n", best.join("; ")));
+        }
+    }
     let convex: Vec<&Row> = rows.iter().filter(|r| r.shape == "convex" && !r.ms[3].is_nan()).collect();
     if !convex.is_empty() {
         let cb: Vec<f64> = convex.iter().map(|r| r.ms[3] / r.ms[2]).collect();
@@ -309,6 +420,22 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     let stages: Vec<StageRecord> = read_csv(&out.join(STAGES_CSV))?;
     let rows = rows(&measurements, &windows);
     chart(&rows).write_svg(&out.join(PLOT))?;
+    let stage_times_path = out.join(STAGE_TIMES_CSV);
+    let stage_times = if stage_times_path.exists() {
+        let records: Vec<StageTimeRecord> = read_csv(&stage_times_path)?;
+        let (md, sums) = stage_times_table(&records);
+        format!(
+            "### Where New2 gains and loses time against Liu, stage by stage (concave windows)\n\n\
+             The batch split by the stage at which New2 settles each segment; New2 and Liu timed on each part \
+             (medians of 31 interleaved rounds, ns per segment of the part). A segment New2 rejects early still costs \
+             Liu its MEB test and, past it, a pass over every vertex; a segment New2 intersects costs New2 its three \
+             boxes and the vertex codes on top of what Liu does. share x (Liu - New2), summed, is New2's gain per \
+             segment of the whole batch.\n\n{md}\n{}\n",
+            stage_reading(&sums)
+        )
+    } else {
+        String::new()
+    };
     let (provenance, notes) = provenance_line(&out.join(META))?;
     let param = |k: &str| provenance.parameters.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0);
     Ok(Some(format!(
@@ -320,7 +447,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          numerically the paper's seconds for 1000 batches. Gain = (Liu - New2) x 100% / New2. Cyrus-Beck needs a \
          convex window (n/a here; see the convex table).\n\n{}\n![gain against edges]({PLOT})\n\n{}\n\
          ### The same sizes with convex windows\n\n{}\n\
-         ### Share of the batch settled by each stage (concave windows; New2's pipeline, and Liu's)\n\n{}\n{}\n",
+         ### Share of the batch settled by each stage (concave windows; New2's pipeline, and Liu's)\n\n{}\n{}{}\n",
         param("segments_per_batch"),
         param("repetitions"),
         param("geo_repetitions"),
@@ -328,6 +455,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         reading(&rows),
         convex_table(&rows),
         stages_table(&stages),
+        stage_times,
         notes
     )))
 }
@@ -372,7 +500,7 @@ mod tests {
         let rows = rows(&raw, &windows);
         assert_eq!(rows.len(), 1);
         assert_eq!(rows[0].gain(), 50.0);
-        assert_eq!(rows[0].repetitions, [3, 0, 2, 0, 0]);
+        assert_eq!(rows[0].repetitions, [3, 0, 2, 0, 0, 0]);
         assert!(rows[0].ms[3].is_nan());
         assert!(reading(&rows).contains("our gain goes from 50.0% at 6 edges"));
     }

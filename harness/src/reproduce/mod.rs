@@ -1,6 +1,8 @@
-//! `clipbench reproduce`: the papers' performance tables measured here, written as raw CSV (and
-//! sidecars); `report` turns them into markdown tables and plots beside the papers' own numbers.
+//! `clipbench reproduce`: the papers' performance tables measured here, and the line clippers'
+//! scaling beyond the papers' window sizes, written as raw CSV (and sidecars); `report` turns them
+//! into markdown tables and plots beside the papers' own numbers.
 
+mod beyond_paper;
 mod pixel_check;
 mod table3;
 mod table4;
@@ -11,13 +13,14 @@ use crate::cli_error::CliError;
 use crate::measure::out_dir::ready_out_dir;
 
 /// The tables `reproduce` knows, by name.
-pub const TABLES: [&str; 3] = ["vatti-table3", "wang-table4", "all"];
+pub const TABLES: [&str; 4] = ["vatti-table3", "wang-table4", "beyond-paper", "all"];
 
 /// Arguments of `clipbench reproduce`.
 #[derive(Debug, clap::Args)]
 pub struct ReproduceArgs {
-    /// Which table: vatti-table3 (Vatti 1992, Table 3), wang-table4 (Wang et al. 2005, Table 4)
-    /// or all.
+    /// Which table: vatti-table3 (Vatti 1992, Table 3), wang-table4 (Wang et al. 2005, Table 4),
+    /// beyond-paper (line clipping against windows of 6 to 10^4 edges, and 10^6 segments on every
+    /// core) or all.
     #[arg(value_name = "TABLE")]
     pub table: String,
     /// The papers' repetition counts (1000 per point) instead of a quick run's.
@@ -41,6 +44,8 @@ pub enum Table {
     VattiTable3,
     /// Wang et al. 2005, Table 4.
     WangTable4,
+    /// Line clipping beyond Table 4's window sizes (issue 20).
+    BeyondPaper,
 }
 
 /// What a run is asked to do: its tables in measuring order, and the output folder, made ready.
@@ -57,7 +62,8 @@ pub fn plan(args: &ReproduceArgs) -> Result<Plan, CliError> {
     let tables = match args.table.as_str() {
         "vatti-table3" => vec![Table::VattiTable3],
         "wang-table4" => vec![Table::WangTable4],
-        "all" => vec![Table::VattiTable3, Table::WangTable4],
+        "beyond-paper" => vec![Table::BeyondPaper],
+        "all" => vec![Table::VattiTable3, Table::WangTable4, Table::BeyondPaper],
         other => {
             return Err(CliError::usage(format!("unknown table '{other}' (valid: {})", TABLES.join(", "))));
         }
@@ -74,5 +80,8 @@ pub fn measure(table: Table, args: &ReproduceArgs, out: &Path) -> Result<(), Cli
     match table {
         Table::VattiTable3 => table3::measure(&table3::Settings::new(args.seed, args.full, args.repetitions), out),
         Table::WangTable4 => table4::measure(&table4::Settings::new(args.seed, args.full, args.repetitions), out),
+        Table::BeyondPaper => {
+            beyond_paper::measure(&beyond_paper::Settings::new(args.seed, args.full, args.repetitions), out)
+        }
     }
 }

@@ -1,6 +1,6 @@
 //! Measures Wang et al.'s Table 4: batches of random segments clipped against windows of 6 to 50
 //! edges at the paper's two sizes by Liu's algorithm, the virtual-box algorithm without (New1)
-//! and with (New2) the 45° box, Cyrus-Beck (convex windows) and geo; plus the share of segments
+//! and with (New2) the 45° box, the indexed clipper, Cyrus-Beck (convex windows) and geo; plus the share of segments
 //! each rejection stage removes.
 
 use std::hint::black_box;
@@ -8,6 +8,7 @@ use std::path::Path;
 
 use clip_core::{LineClipper, Polygons, PreparedWindow, Segment, VisiblePiece};
 use clip_cyrus_beck::{CyrusBeck, Liu, PreparedCyrusBeck, PreparedLiu};
+use clip_line_index::LineIndex;
 use clip_peers::GeoLineClipper;
 use clip_testkit::workload::{WANG_EDGES, WangSize, wang_measure, wang_segments, wang_window};
 use clip_virtual_box::{PreparedVirtualBox, VirtualBox};
@@ -17,8 +18,10 @@ use crate::cli_error::CliError;
 use crate::measure::progress::bar;
 use crate::measure::provenance::Provenance;
 use crate::measure::raw::{Measurement, write_csv};
-use crate::measure::timing::timed;
-use crate::results_files::wang_table4::{CSV, META, STAGES_CSV, StageRecord, WINDOWS_CSV, WindowRecord};
+use crate::measure::timing::{median, timed};
+use crate::results_files::wang_table4::{
+    CSV, META, STAGE_TIMES_CSV, STAGES_CSV, StageRecord, StageTimeRecord, WINDOWS_CSV, WindowRecord,
+};
 
 /// The workload name in the raw rows.
 const WORKLOAD: &str = "wang-t4";
@@ -54,6 +57,7 @@ fn clippers() -> Vec<Box<dyn LineClipper>> {
         Box::new(Liu),
         Box::new(VirtualBox::NEW1),
         Box::new(VirtualBox::NEW2),
+        Box::new(LineIndex),
         Box::new(CyrusBeck),
         Box::new(GeoLineClipper),
     ]
@@ -117,10 +121,12 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
     }
     progress.finish();
 
+    let stage_times = time_stages(&windows, &segments)?;
     let records: Vec<WindowRecord> = windows.iter().map(window_record).collect();
     write_csv(&out.join(CSV), &rows)?;
     write_csv(&out.join(WINDOWS_CSV), &records)?;
     write_csv(&out.join(STAGES_CSV), &stages)?;
+    write_csv(&out.join(STAGE_TIMES_CSV), &stage_times)?;
     let parameters = json!({
         "window_edges": WANG_EDGES,
         "segments_per_batch": settings.segments,
@@ -253,4 +259,58 @@ fn count_stages(windows: &[Window], segments: &[Segment]) -> Result<(Vec<StageRe
         }
     }
     Ok((records, notes))
+}
+
+/// New2's stages, by the counter that records each.
+const NEW2_STAGES: [&str; 6] = ["zero-length", "meb", "rotated-box", "virtual-box", "code-sum", "intersected"];
+
+/// Rounds of each stage's timing (medians of these).
+const STAGE_ROUNDS: usize = 31;
+
+/// Splits the batch by the stage at which New2 settles each segment, then times New2 and Liu on
+/// each part (concave windows): where New2's extra boxes save time against Liu and where they
+/// cost it, measured rather than argued.
+fn time_stages(windows: &[Window], segments: &[Segment]) -> Result<Vec<StageTimeRecord>, CliError> {
+    let mut records = Vec::new();
+    let mut pieces = Vec::new();
+    for w in windows.iter().filter(|w| w.shape == "concave") {
+        let fail =
+            |name: &str, e: clip_core::ClipError| CliError::failed(format!("Table 4: {name} on {}: {e}", w.case()));
+        let new2 = PreparedVirtualBox::new(&w.polygons, true).map_err(|e| fail("virtual-box", e))?;
+        let liu = PreparedLiu::new(&w.polygons).map_err(|e| fail("liu", e))?;
+        let mut parts: Vec<Vec<Segment>> = vec![Vec::new(); NEW2_STAGES.len()];
+        for &s in segments {
+            let c = new2.clip_batch_counted(&[s], &mut pieces).map_err(|e| fail("virtual-box", e))?;
+            let at = [c.zero_length, c.meb, c.rotated_box, c.virtual_box, c.code_sum, c.intersected]
+                .iter()
+                .position(|&n| n == 1)
+                .unwrap_or(NEW2_STAGES.len() - 1);
+            parts[at].push(s);
+        }
+        for (stage, part) in NEW2_STAGES.iter().zip(&parts).filter(|(_, p)| !p.is_empty()) {
+            let clippers: [(&str, &dyn PreparedWindow); 2] = [("virtual-box", &new2), ("liu", &liu)];
+            let mut times = [Vec::new(), Vec::new()];
+            for round in 0..STAGE_ROUNDS {
+                for j in 0..2 {
+                    let (name, prepared) = clippers[(j + round) % 2];
+                    pieces.clear();
+                    let (result, took) = timed(|| prepared.clip_batch(black_box(part), &mut pieces));
+                    result.map_err(|e| fail(name, e))?;
+                    times[(j + round) % 2].push(took.as_nanos() as f64 / part.len() as f64);
+                }
+            }
+            for ((name, _), t) in clippers.iter().zip(&times) {
+                records.push(StageTimeRecord {
+                    size_row: w.size.name().to_owned(),
+                    edges: w.edges,
+                    stage: (*stage).to_owned(),
+                    segments: part.len(),
+                    of: segments.len(),
+                    clipper: (*name).to_owned(),
+                    ns_per_segment: median(t),
+                });
+            }
+        }
+    }
+    Ok(records)
 }

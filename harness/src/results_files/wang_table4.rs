@@ -8,6 +8,8 @@ pub const CSV: &str = "wang-table4.csv";
 pub const WINDOWS_CSV: &str = "wang-table4-windows.csv";
 /// Segments settled by each stage of each clipper, one [`StageRecord`] per row.
 pub const STAGES_CSV: &str = "wang-table4-stages.csv";
+/// New2 and Liu timed on the segments each New2 stage settles, one [`StageTimeRecord`] per row.
+pub const STAGE_TIMES_CSV: &str = "wang-table4-stage-times.csv";
 /// The sidecar of [`CSV`].
 pub const META: &str = "wang-table4.meta.json";
 
@@ -47,4 +49,24 @@ pub struct StageRecord {
     pub segments: usize,
     /// Segments in the batch.
     pub of: usize,
+}
+
+/// One row of [`STAGE_TIMES_CSV`]: one clipper timed on the segments of one window that New2
+/// settles at one stage.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StageTimeRecord {
+    /// Size row, as in [`WindowRecord::size_row`] (concave windows only).
+    pub size_row: String,
+    /// Window edges.
+    pub edges: usize,
+    /// New2's stage (`meb`, `rotated-box`, `virtual-box`, `code-sum`, `intersected`).
+    pub stage: String,
+    /// Segments of the batch New2 settles there.
+    pub segments: usize,
+    /// Segments in the batch.
+    pub of: usize,
+    /// `virtual-box` (New2) or `liu`.
+    pub clipper: String,
+    /// Median ns per segment on those segments.
+    pub ns_per_segment: f64,
 }

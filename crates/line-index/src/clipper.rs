@@ -1,0 +1,373 @@
+//! The clipper: the window prepared into an edge tree once, then per segment a walk of the tree along its ray.
+
+use clip_core::predicates::orient2d;
+use clip_core::{
+    Along, ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, LineSide, Point, Polygons,
+    PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, validate_segments, validate_window,
+};
+
+use core::ops::Range;
+
+use crate::edge_tree::{EdgeTree, LEAF_EDGES, Node, WAYS};
+use crate::ray_box::Ray;
+
+/// Segments whose `|dx| + |dy|` is below this fraction of the box's width + height locate their
+/// start and look only at the edges near the segment (see `clip_one`).
+const SHORT: f64 = 0.25;
+
+/// Windows of at most this many leaves clip every segment along its ray: with so few edges, one
+/// walk is cheaper than locating the start and walking again.
+const SHORT_FROM_LEAVES: usize = 4;
+
+/// What the horizontal ray found about a segment's start.
+enum Start {
+    /// Not on the boundary: inside (true) or outside the window.
+    Inside(bool),
+    /// On an edge or a vertex.
+    OnBoundary,
+}
+
+/// Line clipping through a box hierarchy over the window's edges, registered as `indexed`. Any
+/// window (rings read under even-odd). See the crate documentation.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LineIndex;
+
+impl LineClipper for LineIndex {
+    fn name(&self) -> &'static str {
+        "indexed"
+    }
+
+    fn capabilities(&self) -> LineCapabilities {
+        LineCapabilities { window: WindowKind::Any }
+    }
+
+    fn prepare(&self, window: &Polygons) -> Result<Box<dyn PreparedWindow>, ClipError> {
+        Ok(Box::new(PreparedLineIndex::new(window)?))
+    }
+}
+
+/// How many segments of a batch each stage settled, and how much of the tree they walked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct IndexCounts {
+    /// Segments in the batch.
+    pub segments: usize,
+    /// Zero-length segments (nothing visible).
+    pub zero_length: usize,
+    /// Rejected by the window's bounding box (both ends beyond one side).
+    pub bounding_box: usize,
+    /// Walked the tree and met no edge, or only edges behind the start.
+    pub no_crossing: usize,
+    /// Segments with at least one visible piece.
+    pub visible: usize,
+    /// Tree nodes whose box was tested, over the batch.
+    pub nodes_tested: usize,
+    /// Leaves whose edges were classified, over the batch.
+    pub leaves_scanned: usize,
+}
+
+/// A window prepared for [`LineIndex`]: the vertices ring after ring (each ring closed by a
+/// repeat of its first vertex), their x and y apart for the vertex loop, the bounding box and the
+/// edge tree.
+#[derive(Clone, Debug)]
+pub struct PreparedLineIndex {
+    points: Vec<Point>,
+    xs: Vec<f64>,
+    ys: Vec<f64>,
+    bounds: Rect,
+    tree: EdgeTree,
+}
+
+impl PreparedLineIndex {
+    /// Prepares `window` (any rings, even-odd) in O(n) time; a degenerate window is an error.
+    pub fn new(window: &Polygons) -> Result<PreparedLineIndex, ClipError> {
+        validate_window(window)?;
+        let rings = WindowRings::new(window);
+        let tree = EdgeTree::new(&rings);
+        let (xs, ys) = rings.points.iter().map(|p| (p.x, p.y)).unzip();
+        Ok(PreparedLineIndex { points: rings.points, xs, ys, bounds: window.bounds(), tree })
+    }
+
+    /// Bytes held by the prepared window (vertices, their coordinate arrays and the tree).
+    pub fn memory_bytes(&self) -> usize {
+        self.points.len() * (size_of::<Point>() + 2 * size_of::<f64>())
+            + self.tree.nodes.len() * size_of::<Node>()
+            + self.tree.leaves.len() * size_of::<Range<u32>>()
+    }
+
+    /// Clips like [`PreparedWindow::clip_batch`] and reports what each stage settled and how
+    /// much of the tree was walked. A separate entry point, so the timed path carries no counters.
+    pub fn clip_batch_counted(
+        &self,
+        segments: &[Segment],
+        out: &mut Vec<VisiblePiece>,
+    ) -> Result<IndexCounts, ClipError> {
+        validate_segments(segments)?;
+        let mut counts = IndexCounts::default();
+        let mut crossings = LineCrossings::default();
+        for (index, &s) in segments.iter().enumerate() {
+            self.clip_one::<true>(index, s, out, &mut crossings, &mut counts);
+        }
+        Ok(counts)
+    }
+
+    /// One segment: bounding-box reject, then the tree walked along the ray from `a` through `b`,
+    /// every crossing at or after the start recorded, and the pieces read off by parity.
+    #[inline]
+    fn clip_one<const COUNT: bool>(
+        &self,
+        index: usize,
+        s: Segment,
+        out: &mut Vec<VisiblePiece>,
+        crossings: &mut LineCrossings,
+        counts: &mut IndexCounts,
+    ) {
+        if COUNT {
+            counts.segments += 1;
+        }
+        let (a, b) = (s.a, s.b);
+        if a == b {
+            if COUNT {
+                counts.zero_length += 1;
+            }
+            return;
+        }
+        if self.bounds.rejects_segment(a, b) {
+            if COUNT {
+                counts.bounding_box += 1;
+            }
+            return;
+        }
+        crossings.clear();
+        let ray = Ray::new(a, b);
+        let side = LineSide::new(a, b);
+        let frame = LineFrame::new(s);
+        // A segment short beside the window: its crossings and the exact place of its start,
+        // found along a horizontal ray to the nearer side of the box, cost less than everything
+        // along the ray through it. A start on the boundary has no place that tells the parity
+        // just after it: those segments take the ray.
+        let short = self.tree.leaves.len() > SHORT_FROM_LEAVES
+            && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height());
+        let start = if short { self.locate::<COUNT>(a, counts) } else { Start::OnBoundary };
+        if let Start::Inside(inside) = start {
+            let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            // The crossings on the segment toggle the parity from the start's to the end's.
+            if (found + u32::from(inside)) % 2 == 1 {
+                crossings.record(Along::After, 1.0);
+            }
+            if inside {
+                crossings.record(Along::Before, 0.0);
+            }
+        } else {
+            // Crossings at or after the start, counted: every ring crosses the line an even
+            // number of times, so their parity is the parity of those before the start.
+            let found = self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            if found % 2 == 1 {
+                crossings.record(Along::Before, 0.0);
+            }
+        }
+        if crossings.is_empty() {
+            if COUNT {
+                counts.no_crossing += 1;
+            }
+            return;
+        }
+        let written = crossings.emit(index, &frame, out);
+        if COUNT && written > 0 {
+            counts.visible += 1;
+        }
+    }
+
+    /// Walks the tree: along the ray from the start (`ON_SEGMENT` false), or over the boxes
+    /// meeting the closed segment whose box is `segment` (`ON_SEGMENT` true); records the
+    /// crossings at or after the start (on the segment) and returns how many there were.
+    #[inline(always)]
+    fn walk<const COUNT: bool, const ON_SEGMENT: bool>(
+        &self,
+        ray: &Ray,
+        side: &LineSide,
+        frame: &LineFrame,
+        segment: &Rect,
+        crossings: &mut LineCrossings,
+        counts: &mut IndexCounts,
+    ) -> u32 {
+        let mut found = 0;
+        self.visit::<COUNT>(
+            |node| {
+                if ON_SEGMENT {
+                    let mut mask = 0;
+                    for i in 0..WAYS {
+                        let apart = (node.min_x[i] > segment.max.x)
+                            | (node.max_x[i] < segment.min.x)
+                            | (node.min_y[i] > segment.max.y)
+                            | (node.max_y[i] < segment.min.y);
+                        mask |= u32::from(!apart) << i;
+                    }
+                    mask & ray.line_hits(node)
+                } else {
+                    ray.hits(node)
+                }
+            },
+            |range| found += self.leaf::<ON_SEGMENT>(range.start as usize, range.end as usize, side, frame, crossings),
+            counts,
+        );
+        found
+    }
+
+    /// Visits the tree from the root: `hits` tells which children of a node to enter, `leaf` is
+    /// called with the edges of each leaf entered.
+    #[inline(always)]
+    fn visit<const COUNT: bool>(
+        &self,
+        hits: impl Fn(&Node) -> u32,
+        mut leaf: impl FnMut(&Range<u32>),
+        counts: &mut IndexCounts,
+    ) {
+        let nodes = &self.tree.nodes;
+        if let [leaf_edges] = &self.tree.leaves[..] {
+            // One leaf (up to 16 edges): the root holds it alone, no stack.
+            if hits(&nodes[0]) & u32::from(nodes[0].present) != 0 {
+                leaf(leaf_edges);
+            }
+            return;
+        }
+        // Each level pushes at most WAYS - 1 more than it pops: 64 slots hold trees far deeper
+        // than u32 leaf indices allow.
+        let mut stack = [0u32; 64];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = &nodes[stack[top] as usize];
+            if COUNT {
+                counts.nodes_tested += 1;
+            }
+            let mut entered = hits(node) & u32::from(node.present);
+            while entered != 0 {
+                let i = entered.trailing_zeros() as usize;
+                entered &= entered - 1;
+                if node.leaves & (1 << i) != 0 {
+                    if COUNT {
+                        counts.leaves_scanned += 1;
+                    }
+                    leaf(&self.tree.leaves[node.child[i] as usize]);
+                } else {
+                    stack[top] = node.child[i];
+                    top += 1;
+                }
+            }
+        }
+    }
+
+    /// The exact place of `a` in the window (even-odd), by the crossings of a horizontal ray from
+    /// `a` to the nearer side of the bounding box, edges taken half-open in y; or that `a` lies on
+    /// the boundary.
+    fn locate<const COUNT: bool>(&self, a: Point, counts: &mut IndexCounts) -> Start {
+        let rightwards = self.bounds.max.x - a.x <= a.x - self.bounds.min.x;
+        let mut odd = false;
+        let mut on_boundary = false;
+        self.visit::<COUNT>(
+            |node| {
+                let mut mask = 0;
+                for i in 0..WAYS {
+                    let ahead = if rightwards { node.max_x[i] >= a.x } else { node.min_x[i] <= a.x };
+                    mask |= u32::from(ahead & (node.min_y[i] <= a.y) & (a.y <= node.max_y[i])) << i;
+                }
+                mask
+            },
+            |range| {
+                for k in range.start as usize..range.end as usize {
+                    let (p, q) = (self.points[k], self.points[k + 1]);
+                    if p == a {
+                        on_boundary = true;
+                    } else if (p.y > a.y) != (q.y > a.y) {
+                        let o = orient2d(p, q, a);
+                        on_boundary |= o == 0.0;
+                        // `a` left of an upward edge (right of a downward one): the edge is to its
+                        // right.
+                        odd ^= ((o > 0.0) == (q.y > p.y)) == rightwards;
+                    } else if p.y == a.y && q.y == a.y && p.x.min(q.x) <= a.x && a.x <= p.x.max(q.x) {
+                        on_boundary = true;
+                    }
+                }
+            },
+            counts,
+        );
+        if on_boundary { Start::OnBoundary } else { Start::Inside(odd) }
+    }
+
+    /// Liu's rule on one leaf's edges `first..end`: the exact sign of the line function at each
+    /// vertex, a crossing for each edge whose signs differ (a vertex on the line counting as on
+    /// the negative side), edges on the line recorded as boundary. Records the crossings at or
+    /// after the start (only those on the segment when `ON_SEGMENT`) and returns how many there were.
+    #[inline(always)]
+    fn leaf<const ON_SEGMENT: bool>(
+        &self,
+        first: usize,
+        end: usize,
+        side: &LineSide,
+        frame: &LineFrame,
+        crossings: &mut LineCrossings,
+    ) -> u32 {
+        let count = end + 1 - first;
+        let (xs, ys, points) = (&self.xs[first..=end], &self.ys[first..=end], &self.points[first..=end]);
+        let mut f = [0.0f64; LEAF_EDGES + 1];
+        // Signs as bit masks over the run's vertices: which were too close to call in f64, which
+        // are positive, which are on the line.
+        let mut unsure = 0u64;
+        for (k, (&x, &y)) in xs.iter().zip(ys).enumerate() {
+            let (value, bound) = side.estimate(x, y);
+            f[k] = value;
+            unsure |= u64::from(value.abs() <= bound) << k;
+        }
+        while unsure != 0 {
+            let k = unsure.trailing_zeros() as usize;
+            f[k] = orient2d(frame.a, frame.b, points[k]);
+            unsure &= unsure - 1;
+        }
+        let (mut positive, mut zero) = (0u64, 0u64);
+        for (k, &v) in f[..count].iter().enumerate() {
+            positive |= u64::from(v > 0.0) << k;
+            zero |= u64::from(v == 0.0) << k;
+        }
+        // Edge k runs from vertex k to k + 1: it crosses where their signs differ, and lies on the
+        // line where both are zero.
+        let edges = (1u64 << (count - 1)) - 1;
+        let mut crossed = (positive ^ (positive >> 1)) & edges;
+        let mut along = zero & (zero >> 1) & edges;
+        let mut found = 0;
+        while crossed != 0 {
+            let k = crossed.trailing_zeros() as usize;
+            crossed &= crossed - 1;
+            let (p, q, fp, fq) = (points[k], points[k + 1], f[k], f[k + 1]);
+            let (place, t) = if fp == 0.0 {
+                (frame.place(p), frame.param(p))
+            } else if fq == 0.0 {
+                (frame.place(q), frame.param(q))
+            } else {
+                frame.edge_crossing(p, q, fp, fq)
+            };
+            if place != Along::Before && !(ON_SEGMENT && place == Along::After) {
+                crossings.record(place, t);
+                found += 1;
+            }
+        }
+        while along != 0 {
+            let k = along.trailing_zeros() as usize;
+            along &= along - 1;
+            let (p, q) = (points[k], points[k + 1]);
+            crossings.along((frame.place(p), frame.param(p)), (frame.place(q), frame.param(q)));
+        }
+        found
+    }
+}
+
+impl PreparedWindow for PreparedLineIndex {
+    fn clip_batch(&self, segments: &[Segment], out: &mut Vec<VisiblePiece>) -> Result<(), ClipError> {
+        validate_segments(segments)?;
+        let mut crossings = LineCrossings::default();
+        let mut counts = IndexCounts::default();
+        for (index, &s) in segments.iter().enumerate() {
+            self.clip_one::<false>(index, s, out, &mut crossings, &mut counts);
+        }
+        Ok(())
+    }
+}
