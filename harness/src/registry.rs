@@ -10,7 +10,10 @@
 use clip_core::{LineClipper, PolygonClipper};
 use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_oracle::polygon::{GEO_TOLERANCE, REGION_TOLERANCE};
-use clip_peers::{Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, GeoClipper, GeoLineClipper};
+use clip_peers::{
+    Clipper1Clipper, Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, Clipper2RustClipper, GeoClipper,
+    GeoLineClipper, GeosClipper, IOverlayClipper,
+};
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
 use clip_vatti::Vatti;
@@ -36,6 +39,10 @@ pub fn registry() -> Registry {
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RectClipper)
         .line(Origin::Peer, GEO_TOLERANCE, Clipper2RectLines)
+        .polygon(Origin::Peer, GEO_TOLERANCE, GeosClipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, IOverlayClipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, Clipper1Clipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RustClipper::new())
 }
 
 /// Whether a clipper is this project's (its failures fail a run) or a peer library (reported only).
