@@ -12,6 +12,7 @@ mod checks;
 mod cli_error;
 mod clip;
 mod conformance;
+mod external;
 mod measure;
 mod papers;
 mod plot;
@@ -64,11 +65,17 @@ fn main() -> ExitCode {
     checks::quiet_clipper_panics();
     let registry = registry::registry();
     let result = match &cli.command {
-        Command::Verify(args) => verify::run(args, registry),
-        Command::Conformance(args) => conformance::run(args, registry),
-        Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
+        Command::Verify(args) => {
+            external::add_external(registry, &args.external).and_then(|registry| verify::run(args, registry))
+        }
+        Command::Conformance(args) => {
+            external::add_external(registry, &args.external).and_then(|registry| conformance::run(args, registry))
+        }
+        Command::Clip(args) => external::add_external(registry, &args.external)
+            .and_then(|registry| clip::run(args, &registry))
+            .map(|()| ExitCode::SUCCESS),
         Command::Reproduce(args) => reproduce_then_report(args),
-        Command::Bench(args) => bench_then_report(args, &registry),
+        Command::Bench(args) => bench_then_report(args, registry),
         Command::Report(args) => report::run(args),
     };
     match result {
@@ -97,10 +104,11 @@ fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, Cl
 
 /// `clipbench bench`: the raw files measured, then the bench tables and plots, then REPORT.md.
 /// The hidden memory-probe mode only measures and prints, and writes no files.
-fn bench_then_report(args: &bench::BenchArgs, registry: &Registry) -> Result<ExitCode, CliError> {
+fn bench_then_report(args: &bench::BenchArgs, registry: Registry) -> Result<ExitCode, CliError> {
     if let Some(spec) = &args.memory_probe {
-        return bench::run_memory_probe(spec, args.seed, registry);
+        return bench::run_memory_probe(spec, args.seed, &registry);
     }
+    let registry = external::add_external(registry, &args.external)?;
     let out = bench::run(args, registry)?;
     report::bench_tables::write(&out)?;
     report::write_report(&out)?;

@@ -7,6 +7,8 @@
 //! fill rules and windows come from its own `name()` and `capabilities()`, so every command runs
 //! it only where it applies.
 
+use std::sync::Arc;
+
 use clip_core::{LineClipper, PolygonClipper};
 use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_oracle::polygon::{GEO_TOLERANCE, REGION_TOLERANCE};
@@ -20,6 +22,7 @@ use clip_vatti::Vatti;
 use clip_virtual_box::VirtualBox;
 
 use crate::cli_error::CliError;
+use crate::external::OwnTime;
 
 /// Tolerance of our exact line clippers on the parameter `t` of piece end points.
 pub const LINE_TOLERANCE: f64 = 1e-9;
@@ -45,13 +48,34 @@ pub fn registry() -> Registry {
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RustClipper::new())
 }
 
-/// Whether a clipper is this project's (its failures fail a run) or a peer library (reported only).
+/// Where a clipper comes from, which decides whether its failures fail a run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Origin {
-    /// One of this project's algorithm crates.
+    /// One of this project's algorithm crates: its failures fail a run.
     Ours,
-    /// A library we compare against (`geo`, Clipper2).
+    /// A library we compare against (`geo`, Clipper2, GEOS, ...): failures are reported only.
     Peer,
+    /// An external clipper process (`--external`): a peer, failures reported only.
+    External,
+    /// An external clipper under `--strict`: its failures fail a run like ours.
+    Strict,
+}
+
+impl Origin {
+    /// True when a failure of a clipper of this origin fails the run.
+    pub fn fails_run(self) -> bool {
+        matches!(self, Origin::Ours | Origin::Strict)
+    }
+
+    /// `ours`, `peer`, `external` or `strict`, as summaries print it.
+    pub fn label(self) -> &'static str {
+        match self {
+            Origin::Ours => "ours",
+            Origin::Peer => "peer",
+            Origin::External => "external",
+            Origin::Strict => "strict",
+        }
+    }
 }
 
 /// A registered polygon clipper.
@@ -62,6 +86,9 @@ pub struct PolygonEntry {
     pub origin: Origin,
     /// Relative area tolerance its output is checked with (see `clip_oracle::polygon`).
     pub tolerance: f64,
+    /// For an external clipper, the times it reports for itself (bench shows them beside the
+    /// round trip).
+    pub own_time: Option<Arc<OwnTime>>,
 }
 
 /// A registered line clipper.
@@ -86,7 +113,7 @@ pub struct Registry {
 impl Registry {
     /// Adds a polygon clipper.
     pub fn polygon(mut self, origin: Origin, tolerance: f64, clipper: impl PolygonClipper + 'static) -> Registry {
-        self.polygon.push(PolygonEntry { clipper: Box::new(clipper), origin, tolerance });
+        self.polygon.push(PolygonEntry { clipper: Box::new(clipper), origin, tolerance, own_time: None });
         self
     }
 

@@ -35,9 +35,20 @@ pub struct BenchArgs {
     /// are skipped for that clipper (default 2, quick 0.5).
     #[arg(long, value_name = "SECONDS")]
     pub cap: Option<f64>,
+    /// Group to run (repeat; default: all): star, scribble, grid, holes, large-smooth,
+    /// large-checkerboard, star-rect, large-rect.
+    #[arg(long = "workload", value_name = "GROUP")]
+    pub workloads: Vec<String>,
+    /// Clipper to time (repeat; default: every polygon clipper). The baseline, clipper2, is
+    /// always timed: the ratios are taken against it.
+    #[arg(long = "clipper", value_name = "NAME")]
+    pub clippers: Vec<String>,
     /// Timed rounds per point (default 7, quick 3).
     #[arg(long, value_name = "N")]
     pub rounds: Option<usize>,
+    /// External clippers (docs/PROTOCOL.md).
+    #[command(flatten)]
+    pub external: crate::external::ExternalArgs,
     /// Internal: measure one call's peak memory in this fresh process and print it (the bench
     /// runs itself with this, so no earlier allocation hides the peak).
     #[arg(long, hide = true, value_name = "SPEC")]
@@ -51,7 +62,7 @@ pub fn run_memory_probe(spec: &str, seed: u64, registry: &Registry) -> Result<Ex
 
 /// Measures and writes the raw files (timings, peak memory, sidecar) into the output folder,
 /// which it returns.
-pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
+pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
     let cap = args.cap.unwrap_or(if args.quick { 0.5 } else { 2.0 });
     if !(cap.is_finite() && cap > 0.0) {
         return Err(CliError::usage("--cap must be a positive number of seconds"));
@@ -60,11 +71,19 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
     if rounds == 0 {
         return Err(CliError::usage("--rounds must be at least 1"));
     }
+    let registry = if args.clippers.is_empty() {
+        registry
+    } else {
+        let mut names = args.clippers.clone();
+        names.push(BASELINE.to_owned());
+        registry.select(&names)?
+    };
+    let registry = &registry;
     if registry.find_polygon(BASELINE).is_none() {
         return Err(CliError::failed(format!("the baseline clipper '{BASELINE}' is not registered")));
     }
     let out = ready_out_dir(&args.out)?;
-    let groups = plan::groups(args.quick);
+    let groups = plan::select(plan::groups(args.quick), &args.workloads)?;
     let settings = rounds::Settings { seed: args.seed, rounds, cap_seconds: cap, quick: args.quick };
     let measured = rounds::run(&groups, registry, &settings)?;
 
@@ -80,6 +99,14 @@ pub fn run(args: &BenchArgs, registry: &Registry) -> Result<PathBuf, CliError> {
         "baseline": BASELINE,
     });
     let mut provenance = Provenance::now(if args.quick { "bench --quick" } else { "bench" }, args.seed, parameters);
+    if registry.polygon.iter().any(|e| e.own_time.is_some()) {
+        provenance.notes.push(
+            "External clippers (docs/PROTOCOL.md) are timed by round trip through their pipe and JSON under their own \
+             name, and by the time they report for themselves as `NAME (own time)`; their peak memory is their \
+             process's and is not measured."
+                .to_owned(),
+        );
+    }
     provenance.notes.push(
         "The rectangle-window groups also time Clipper2's dedicated rectangle clipper (RectClip64, through its C \
          API: the clip-clipper2-rect crate) as `clipper2-rect`; ratios in the tables stay against Clipper2's \

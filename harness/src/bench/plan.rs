@@ -2,6 +2,8 @@
 
 use clip_core::{BoolOp, WindowKind};
 
+use crate::cli_error::CliError;
+
 /// One group of the benchmark: a plot and a table each.
 #[derive(Clone, Debug)]
 pub struct Group {
@@ -97,4 +99,13 @@ pub fn groups(quick: bool) -> Vec<Group> {
             memory: true,
         },
     ]
+}
+
+/// The groups labelled `names` (all when empty), in plan order, or a usage error listing the labels.
+pub fn select(groups: Vec<Group>, names: &[String]) -> Result<Vec<Group>, CliError> {
+    if let Some(unknown) = names.iter().find(|n| !groups.iter().any(|g| g.label == n.as_str())) {
+        let labels: Vec<&str> = groups.iter().map(|g| g.label).collect();
+        return Err(CliError::usage(format!("unknown bench workload '{unknown}' (groups: {})", labels.join(", "))));
+    }
+    Ok(groups.into_iter().filter(|g| names.is_empty() || names.iter().any(|n| n == g.label)).collect())
 }

@@ -14,7 +14,7 @@ use crate::cli_error::CliError;
 use crate::measure::progress::bar;
 use crate::measure::raw::Measurement;
 use crate::measure::timing::{iterations_for, per_call_ns, timed};
-use crate::registry::Registry;
+use crate::registry::{PolygonEntry, Registry};
 use crate::results_files::bench::MemoryRecord;
 
 /// Every case is read under this rule (the papers' parity rule, and every clipper supports it).
@@ -72,17 +72,17 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 .map_err(|e| CliError::failed(e.to_string()))?;
             for &op in &group.ops {
                 progress.set_message(format!("{} {size} {}", group.label, op.name()));
-                let clippers: Vec<&dyn PolygonClipper> = registry
+                let clippers: Vec<&PolygonEntry> = registry
                     .polygon
                     .iter()
-                    .map(|e| e.clipper.as_ref())
-                    .filter(|c| {
-                        let caps = c.capabilities();
+                    .filter(|e| {
+                        let caps = e.clipper.capabilities();
                         caps.supports(op, FILL) && cases.iter().all(|k| caps.window.accepts(&k.clip))
                     })
                     .collect();
                 let mut timed_here = Vec::new();
-                for c in clippers {
+                for entry in clippers {
+                    let c = entry.clipper.as_ref();
                     if stopped.contains_key(c.name()) {
                         continue;
                     }
@@ -101,7 +101,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                         Ok(single) => {
                             last.insert(c.name(), (size, single));
                             let over = single.as_secs_f64() > settings.cap_seconds;
-                            timed_here.push((c, single, over));
+                            timed_here.push((entry, single, over));
                             if over {
                                 let reason = format!(
                                     "one call took {single:.2?} at {size} edges, over the {} s cap",
@@ -117,21 +117,22 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 }
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
                 if group.memory && op == BoolOp::Intersection {
-                    for (c, _, _) in &timed_here {
+                    // An external clipper's memory is its own process's, not this one's.
+                    for (c, _, _) in timed_here.iter().filter(|(e, _, _)| e.own_time.is_none()) {
                         for index in &group.indices {
                             let probe = Probe {
                                 workload: group.workload.to_owned(),
                                 window: group.window,
                                 index: *index,
                                 size,
-                                clipper: c.name().to_owned(),
+                                clipper: c.clipper.name().to_owned(),
                                 op,
                             };
                             match probe.run_in_child(settings.seed) {
                                 Some((rss_before_kib, peak_extra_kib)) => measured.memory.push(MemoryRecord {
                                     workload: group.label.to_owned(),
                                     case: index.to_string(),
-                                    clipper: c.name().to_owned(),
+                                    clipper: c.clipper.name().to_owned(),
                                     size,
                                     op: op.name().to_owned(),
                                     rss_before_kib,
@@ -176,13 +177,14 @@ fn calibrate(c: &dyn PolygonClipper, cases: &[PolygonCase], op: BoolOp) -> Resul
     Ok(slowest)
 }
 
-/// Interleaved rounds over cases and clippers; a clipper over the cap is timed once.
+/// Interleaved rounds over cases and clippers; a clipper over the cap is timed once. An external
+/// clipper that reports its own time gets a second row, `NAME (own time)`, beside the round trip.
 fn measure_point(
     group: &Group,
     size: usize,
     op: BoolOp,
     cases: &[PolygonCase],
-    clippers: &[(&dyn PolygonClipper, Duration, bool)],
+    clippers: &[(&PolygonEntry, Duration, bool)],
     settings: &Settings,
     rows: &mut Vec<Measurement>,
 ) {
@@ -191,16 +193,20 @@ fn measure_point(
         for (k, (index, case)) in group.indices.iter().zip(cases).enumerate() {
             let n = clippers.len();
             for j in 0..n {
-                let (c, single, over) = clippers[(j + round + k) % n.max(1)];
+                let (entry, single, over) = clippers[(j + round + k) % n.max(1)];
                 if over && round > 0 {
                     continue;
                 }
+                let c = entry.clipper.as_ref();
                 let iterations = iterations_for(single, target);
+                if let Some(own) = &entry.own_time {
+                    own.take();
+                }
                 let time_ns = per_call_ns(iterations, || c.clip(black_box(&case.subject), &case.clip, op, FILL));
-                rows.push(Measurement {
+                let row = |clipper: String, time_ns: f64| Measurement {
                     workload: group.label.to_owned(),
                     case: index.to_string(),
-                    clipper: c.name().to_owned(),
+                    clipper,
                     phase: "clip".to_owned(),
                     size,
                     op: op.name().to_owned(),
@@ -208,8 +214,17 @@ fn measure_point(
                     repetition: round,
                     iterations,
                     time_ns,
-                });
+                };
+                rows.push(row(c.name().to_owned(), time_ns));
+                if let Some(own_ns) = entry.own_time.as_ref().and_then(|own| own.take()) {
+                    rows.push(row(own_time_name(c.name()), own_ns));
+                }
             }
         }
     }
+}
+
+/// The raw-file name of an external clipper's own times (the round trip keeps its plain name).
+pub fn own_time_name(clipper: &str) -> String {
+    format!("{clipper} (own time)")
 }

@@ -4,6 +4,7 @@
 pub mod bench_tables;
 pub mod document;
 pub mod markdown;
+mod oracle_failures;
 mod provenance_line;
 pub mod table3;
 pub mod table4;

@@ -3,4 +3,5 @@
 
 pub mod bench;
 pub mod vatti_table3;
+pub mod verify;
 pub mod wang_table4;
