@@ -145,8 +145,9 @@ impl Registry {
         self.line.iter().find(|e| e.clipper.name() == name)
     }
 
-    /// Keeps only the named clippers (all of them when `names` is empty); an unknown name is a
-    /// usage error listing the valid ones.
+    /// Keeps only the named clippers (all of them when `names` is empty) and every external one
+    /// (naming it on the command line selected it); an unknown name is a usage error listing the
+    /// valid ones.
     pub fn select(mut self, names: &[String]) -> Result<Registry, CliError> {
         if names.is_empty() {
             return Ok(self);
@@ -155,8 +156,9 @@ impl Registry {
         if let Some(unknown) = names.iter().find(|n| !valid.contains(&n.as_str())) {
             return Err(unknown_clipper(unknown, &valid));
         }
-        self.polygon.retain(|e| names.iter().any(|n| n == e.clipper.name()));
-        self.line.retain(|e| names.iter().any(|n| n == e.clipper.name()));
+        let external = |o: Origin| matches!(o, Origin::External | Origin::Strict);
+        self.polygon.retain(|e| external(e.origin) || names.iter().any(|n| n == e.clipper.name()));
+        self.line.retain(|e| external(e.origin) || names.iter().any(|n| n == e.clipper.name()));
         Ok(self)
     }
 }

@@ -70,7 +70,7 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
             )));
         }
         let blame = |what: String| {
-            CliError::usage(format!("external clipper '{}' ({}): {what}", spec.name, spec.command.join(" ")))
+            CliError::usage(format!("external clipper '{}' ({}): {what}", spec.name, spec::shown(&spec.command)))
         };
         let (worker, handshake) = Worker::start(&spec, timeout).map_err(blame)?;
         let (polygon, line) = declared(&handshake).map_err(blame)?;

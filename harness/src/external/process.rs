@@ -38,7 +38,8 @@ impl Worker {
         if let Some(dir) = &spec.dir {
             command.current_dir(dir);
         }
-        let mut child = command.spawn().map_err(|e| format!("cannot start '{}': {e}", spec.command.join(" ")))?;
+        let mut child =
+            command.spawn().map_err(|e| format!("cannot start {}: {e}", super::spec::shown(&spec.command)))?;
         let (Some(stdin), Some(stdout), Some(stderr)) = (child.stdin.take(), child.stdout.take(), child.stderr.take())
         else {
             let _ = child.kill();

@@ -89,6 +89,11 @@ fn checked_name(name: &str) -> Result<String, String> {
     Ok(name.to_owned())
 }
 
+/// A command as a shell would need it typed, for messages.
+pub fn shown(command: &[String]) -> String {
+    shlex::try_join(command.iter().map(String::as_str)).unwrap_or_else(|_| command.join(" "))
+}
+
 /// A command line split into words, or why it cannot be.
 fn split_command(command: &str) -> Result<Vec<String>, String> {
     let words =
