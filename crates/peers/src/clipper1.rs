@@ -12,8 +12,8 @@ use geo_clipper::Clipper;
 ///
 /// `geo-clipper` always calls Clipper 1 with `pftNonZero` for both operands, so this adapter
 /// declares non-zero alone: `verify`, `conformance` and `bench` run it only under that rule
-/// (`bench` reads its cases under even-odd, so Clipper 1 appears only where a run asks for
-/// non-zero). Coordinates go through the same fitted integer grid as the Clipper2 peers (step
+/// (`bench`, which reads its cases under even-odd, times it under non-zero only where every
+/// operand covers the same region under both rules). Coordinates go through the same fitted integer grid as the Clipper2 peers (step
 /// about extent x 2^-30, inside Clipper 1's fast 2^30 range); `geo-clipper` is given them as
 /// whole numbers with a factor of 1, so its truncation to integers changes nothing. Each of our
 /// rings becomes the exterior of its own polygon, in order, orientation kept. Output: every
