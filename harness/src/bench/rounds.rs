@@ -129,7 +129,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
                 if group.memory && op == BoolOp::Intersection {
                     // An external clipper's memory is its own process's, not this one's.
-                    for (c, _, _, _) in timed_here.iter().filter(|(e, _, _, _)| e.own_time.is_none()) {
+                    for (c, fill, _, _) in timed_here.iter().filter(|(e, _, _, _)| e.own_time.is_none()) {
                         for index in &group.indices {
                             let probe = Probe {
                                 workload: group.workload.to_owned(),
@@ -138,6 +138,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                                 size,
                                 clipper: c.clipper.name().to_owned(),
                                 op,
+                                fill: *fill,
                             };
                             match probe.run_in_child(settings.seed) {
                                 Some((rss_before_kib, peak_extra_kib)) => measured.memory.push(MemoryRecord {
