@@ -5,7 +5,7 @@ use std::cell::Cell;
 use std::panic::AssertUnwindSafe;
 use std::sync::Once;
 
-use clip_core::{BoolOp, FillRule, Polygons, Segment, VisiblePiece};
+use clip_core::{BoolOp, ClipError, FillRule, Polygons, Segment, VisiblePiece};
 use clip_oracle::line::{check_line_batch, pieces_to_intervals};
 use clip_oracle::polygon::{OutputRules, check_area_identities_given, check_polygon_result, same_region, tolerance};
 
@@ -86,7 +86,7 @@ pub fn run_polygon(
     op: BoolOp,
     fill: FillRule,
 ) -> Result<Polygons, String> {
-    guarded(|| entry.clipper.clip(subject, clip, op, fill).map_err(|e| format!("refused: {e}")))
+    guarded(|| entry.clipper.clip(subject, clip, op, fill).map_err(failure_message))
 }
 
 /// The oracle's verdict on one polygon result; when it passes, the area by which it differs from
@@ -145,12 +145,27 @@ pub fn polygons_agree(
     })
 }
 
+/// A clipper's error as a failure message: a refusal of input, or a failure to answer (a
+/// library's internal error, an external process that crashed, hung or answered garbage).
+fn failure_message(e: ClipError) -> String {
+    match e {
+        ClipError::Failed { .. } => e.to_string(),
+        _ => format!("refused: {e}"),
+    }
+}
+
 /// Runs a line clipper on a batch; a refusal of a valid window is a failure message.
 pub fn run_line(entry: &LineEntry, window: &Polygons, segments: &[Segment]) -> Result<Vec<VisiblePiece>, String> {
     guarded(|| {
-        let prepared = entry.clipper.prepare(window).map_err(|e| format!("refused the window: {e}"))?;
+        let prepared = entry.clipper.prepare(window).map_err(|e| match e {
+            ClipError::Failed { .. } => e.to_string(),
+            _ => format!("refused the window: {e}"),
+        })?;
         let mut pieces = Vec::new();
-        prepared.clip_batch(segments, &mut pieces).map_err(|e| format!("refused the segments: {e}"))?;
+        prepared.clip_batch(segments, &mut pieces).map_err(|e| match e {
+            ClipError::Failed { .. } => e.to_string(),
+            _ => format!("refused the segments: {e}"),
+        })?;
         Ok(pieces)
     })
 }

@@ -39,6 +39,9 @@ pub struct ClipArgs {
     /// Write here instead of printing WKT: .wkt, .geojson/.json, or .svg for a picture.
     #[arg(short, long)]
     pub out: Option<PathBuf>,
+    /// External clippers (docs/PROTOCOL.md).
+    #[command(flatten)]
+    pub external: crate::external::ExternalArgs,
 }
 
 /// Runs the command.

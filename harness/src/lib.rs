@@ -6,7 +6,6 @@
 //! and write the raw files (`results_files`), then this dispatcher has `report` turn them into
 //! REPORT.md. The conventions every check relies on are set out in the repository's
 //! `docs/DESIGN.md`.
-
 //!
 //! The commands live in this library so that its readers (`read`, the conformance suites'
 //! readers, `verify`'s case files) can be fuzzed (`fuzz/`, through `clip-fuzz-checks`); the
@@ -18,6 +17,7 @@ pub mod cli_error;
 pub mod clip;
 pub mod conformance;
 pub mod console;
+pub mod external;
 pub mod measure;
 pub mod papers;
 pub mod plot;

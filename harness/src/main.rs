@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand};
 
 use clipbench::cli_error::CliError;
 use clipbench::registry::Registry;
-use clipbench::{bench, checks, clip, conformance, registry, report, reproduce, verify};
+use clipbench::{bench, checks, clip, conformance, external, registry, report, reproduce, verify};
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
 /// Clipper2), and one-off clipping of WKT/GeoJSON files.
@@ -43,9 +43,15 @@ fn main() -> ExitCode {
     checks::quiet_clipper_panics();
     let registry = registry::registry();
     let result = match &cli.command {
-        Command::Verify(args) => verify::run(args, registry),
-        Command::Conformance(args) => conformance::run(args, registry),
-        Command::Clip(args) => clip::run(args, &registry).map(|()| ExitCode::SUCCESS),
+        Command::Verify(args) => {
+            external::add_external(registry, &args.external).and_then(|registry| verify::run(args, registry))
+        }
+        Command::Conformance(args) => {
+            external::add_external(registry, &args.external).and_then(|registry| conformance::run(args, registry))
+        }
+        Command::Clip(args) => external::add_external(registry, &args.external)
+            .and_then(|registry| clip::run(args, &registry))
+            .map(|()| ExitCode::SUCCESS),
         Command::Reproduce(args) => reproduce_then_report(args),
         Command::Bench(args) => bench_then_report(args, registry),
         Command::Report(args) => report::run(args),
@@ -81,6 +87,7 @@ fn bench_then_report(args: &bench::BenchArgs, registry: Registry) -> Result<Exit
     if let Some(spec) = &args.memory_probe {
         return bench::run_memory_probe(spec, args.seed, &registry);
     }
+    let registry = external::add_external(registry, &args.external)?;
     let out = bench::run(args, registry)?;
     report::bench_tables::write(&out)?;
     report::write_report(&out)?;

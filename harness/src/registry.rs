@@ -7,17 +7,23 @@
 //! fill rules and windows come from its own `name()` and `capabilities()`, so every command runs
 //! it only where it applies.
 
+use std::sync::Arc;
+
 use clip_core::{LineClipper, PolygonClipper};
 use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_line_index::LineIndex;
 use clip_oracle::polygon::{GEO_TOLERANCE, REGION_TOLERANCE};
-use clip_peers::{Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, GeoClipper, GeoLineClipper};
+use clip_peers::{
+    Clipper1Clipper, Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, Clipper2RustClipper, GeoClipper,
+    GeoLineClipper, GeosClipper, IOverlayClipper,
+};
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
 use clip_vatti::Vatti;
 use clip_virtual_box::VirtualBox;
 
 use crate::cli_error::CliError;
+use crate::external::OwnTime;
 
 /// Tolerance of our exact line clippers on the parameter `t` of piece end points.
 pub const LINE_TOLERANCE: f64 = 1e-9;
@@ -38,15 +44,40 @@ pub fn registry() -> Registry {
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RectClipper)
         .line(Origin::Peer, GEO_TOLERANCE, Clipper2RectLines)
+        .polygon(Origin::Peer, GEO_TOLERANCE, GeosClipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, IOverlayClipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, Clipper1Clipper::new())
+        .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RustClipper::new())
 }
 
-/// Whether a clipper is this project's (its failures fail a run) or a peer library (reported only).
+/// Where a clipper comes from, which decides whether its failures fail a run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Origin {
-    /// One of this project's algorithm crates.
+    /// One of this project's algorithm crates: its failures fail a run.
     Ours,
-    /// A library we compare against (`geo`, Clipper2).
+    /// A library we compare against (`geo`, Clipper2, GEOS, ...): failures are reported only.
     Peer,
+    /// An external clipper process (`--external`): a peer, failures reported only.
+    External,
+    /// An external clipper under `--strict`: its failures fail a run like ours.
+    Strict,
+}
+
+impl Origin {
+    /// True when a failure of a clipper of this origin fails the run.
+    pub fn fails_run(self) -> bool {
+        matches!(self, Origin::Ours | Origin::Strict)
+    }
+
+    /// `ours`, `peer`, `external` or `strict`, as summaries print it.
+    pub fn label(self) -> &'static str {
+        match self {
+            Origin::Ours => "ours",
+            Origin::Peer => "peer",
+            Origin::External => "external",
+            Origin::Strict => "strict",
+        }
+    }
 }
 
 /// A registered polygon clipper.
@@ -57,6 +88,9 @@ pub struct PolygonEntry {
     pub origin: Origin,
     /// Relative area tolerance its output is checked with (see `clip_oracle::polygon`).
     pub tolerance: f64,
+    /// For an external clipper, the times it reports for itself (bench shows them beside the
+    /// round trip).
+    pub own_time: Option<Arc<OwnTime>>,
 }
 
 /// A registered line clipper.
@@ -81,7 +115,7 @@ pub struct Registry {
 impl Registry {
     /// Adds a polygon clipper.
     pub fn polygon(mut self, origin: Origin, tolerance: f64, clipper: impl PolygonClipper + 'static) -> Registry {
-        self.polygon.push(PolygonEntry { clipper: Box::new(clipper), origin, tolerance });
+        self.polygon.push(PolygonEntry { clipper: Box::new(clipper), origin, tolerance, own_time: None });
         self
     }
 
@@ -113,8 +147,9 @@ impl Registry {
         self.line.iter().find(|e| e.clipper.name() == name)
     }
 
-    /// Keeps only the named clippers (all of them when `names` is empty); an unknown name is a
-    /// usage error listing the valid ones.
+    /// Keeps only the named clippers (all of them when `names` is empty) and every external one
+    /// (naming it on the command line selected it); an unknown name is a usage error listing the
+    /// valid ones.
     pub fn select(mut self, names: &[String]) -> Result<Registry, CliError> {
         if names.is_empty() {
             return Ok(self);
@@ -123,8 +158,9 @@ impl Registry {
         if let Some(unknown) = names.iter().find(|n| !valid.contains(&n.as_str())) {
             return Err(unknown_clipper(unknown, &valid));
         }
-        self.polygon.retain(|e| names.iter().any(|n| n == e.clipper.name()));
-        self.line.retain(|e| names.iter().any(|n| n == e.clipper.name()));
+        let external = |o: Origin| matches!(o, Origin::External | Origin::Strict);
+        self.polygon.retain(|e| external(e.origin) || names.iter().any(|n| n == e.clipper.name()));
+        self.line.retain(|e| external(e.origin) || names.iter().any(|n| n == e.clipper.name()));
         Ok(self)
     }
 }

@@ -111,6 +111,15 @@ pub enum ClipError {
         /// What was asked for.
         what: String,
     },
+    /// The clipper did not produce a result for valid, supported input: a library reported an
+    /// internal error, or an external clipper process crashed, hung or answered garbage.
+    #[error("{clipper} failed: {reason}")]
+    Failed {
+        /// The clipper's name.
+        clipper: &'static str,
+        /// What went wrong, in the clipper's or the harness's words.
+        reason: String,
+    },
 }
 
 fn check_point(p: Point, operand: Operand, part: usize, vertex: usize) -> Result<(), ClipError> {

@@ -25,23 +25,33 @@ pub struct Probe {
     pub clipper: String,
     /// The operation.
     pub op: BoolOp,
+    /// The fill rule the call reads its operands under (as timed).
+    pub fill: FillRule,
 }
 
 impl Probe {
-    /// The probe as one command-line word: `workload/window/index/size/clipper/op`.
+    /// The probe as one command-line word: `workload/window/index/size/clipper/op/fill`.
     pub fn spec(&self) -> String {
         let window = match self.window {
             WindowKind::Any => "any",
             WindowKind::Convex => "convex",
             WindowKind::Rectangle => "rectangle",
         };
-        format!("{}/{window}/{}/{}/{}/{}", self.workload, self.index, self.size, self.clipper, self.op.name())
+        format!(
+            "{}/{window}/{}/{}/{}/{}/{}",
+            self.workload,
+            self.index,
+            self.size,
+            self.clipper,
+            self.op.name(),
+            self.fill.name()
+        )
     }
 
     /// Reads [`Probe::spec`] back.
     pub fn parse(spec: &str) -> Option<Probe> {
         let parts: Vec<&str> = spec.split('/').collect();
-        let [workload, window, index, size, clipper, op] = parts[..] else { return None };
+        let [workload, window, index, size, clipper, op, fill] = parts[..] else { return None };
         let window = match window {
             "any" => WindowKind::Any,
             "convex" => WindowKind::Convex,
@@ -55,6 +65,7 @@ impl Probe {
             size: size.parse().ok()?,
             clipper: clipper.to_owned(),
             op: op.parse().ok()?,
+            fill: fill.parse().ok()?,
         })
     }
 
@@ -84,7 +95,7 @@ pub fn child(spec: &str, seed: u64, registry: &Registry) -> Result<ExitCode, Cli
     let case = polygon_case_sized(&probe.workload, seed, probe.index, probe.size, probe.window)
         .map_err(|e| CliError::usage(e.to_string()))?;
     let peak = PeakMemory::start().ok_or_else(|| CliError::failed("peak memory is not available here"))?;
-    let result = entry.clipper.clip(&case.subject, &case.clip, probe.op, FillRule::EvenOdd);
+    let result = entry.clipper.clip(&case.subject, &case.clip, probe.op, probe.fill);
     let extra = peak.extra_kib().ok_or_else(|| CliError::failed("peak memory is not available here"))?;
     result.map_err(|e| CliError::failed(format!("memory probe: {e}")))?;
     println!("{} {extra}", peak.rss_before_kib());
@@ -104,9 +115,11 @@ mod tests {
             size: 100_000,
             clipper: "virtual-box-no45".into(),
             op: BoolOp::Difference,
+            fill: FillRule::NonZero,
         };
-        assert_eq!(p.spec(), "large/rectangle/1/100000/virtual-box-no45/difference");
+        assert_eq!(p.spec(), "large/rectangle/1/100000/virtual-box-no45/difference/non-zero");
         assert_eq!(Probe::parse(&p.spec()), Some(p));
-        assert_eq!(Probe::parse("large/any/x/1/vatti/union"), None);
+        assert_eq!(Probe::parse("large/any/x/1/vatti/union/even-odd"), None);
+        assert_eq!(Probe::parse("large/any/1/1/vatti/union"), None);
     }
 }

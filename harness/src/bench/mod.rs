@@ -50,6 +50,9 @@ pub struct BenchArgs {
     /// Operation to time (repeat; default: all four).
     #[arg(long = "op", value_name = "OP")]
     pub ops: Vec<BoolOp>,
+    /// External clippers (docs/PROTOCOL.md).
+    #[command(flatten)]
+    pub external: crate::external::ExternalArgs,
     /// Internal: measure one call's peak memory in this fresh process and print it (the bench
     /// runs itself with this, so no earlier allocation hides the peak).
     #[arg(long, hide = true, value_name = "SPEC")]
@@ -94,6 +97,14 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
         "baseline": BASELINE,
     });
     let mut provenance = Provenance::now(if args.quick { "bench --quick" } else { "bench" }, args.seed, parameters);
+    if registry.polygon.iter().any(|e| e.own_time.is_some()) {
+        provenance.notes.push(
+            "External clippers (docs/PROTOCOL.md) are timed by round trip through their pipe and JSON under their own \
+             name, and by the time they report for themselves as `NAME (own time)`; their peak memory is their \
+             process's and is not measured."
+                .to_owned(),
+        );
+    }
     provenance.notes.push(
         "The rectangle-window groups also time Clipper2's dedicated rectangle clipper (RectClip64, through its C \
          API: the clip-clipper2-rect crate) as `clipper2-rect`; ratios in the tables stay against Clipper2's \

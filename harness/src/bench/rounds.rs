@@ -1,11 +1,13 @@
 //! The bench's measuring loop: per group, size and operation, every applicable clipper on every
 //! case in interleaved rounds, with a time cap per point and peak memory for large cases.
 
+use std::cell::OnceCell;
 use std::collections::BTreeMap;
 use std::hint::black_box;
 use std::time::Duration;
 
-use clip_core::{BoolOp, FillRule, PolygonClipper};
+use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons};
+use clip_oracle::polygon::same_region;
 use clip_testkit::workload::{PolygonCase, polygon_case_sized};
 
 use super::memory_probe::Probe;
@@ -14,10 +16,12 @@ use crate::cli_error::CliError;
 use crate::measure::progress::bar;
 use crate::measure::raw::Measurement;
 use crate::measure::timing::{iterations_for, per_call_ns, timed};
-use crate::registry::Registry;
+use crate::registry::{PolygonEntry, Registry};
 use crate::results_files::bench::MemoryRecord;
 
-/// Every case is read under this rule (the papers' parity rule, and every clipper supports it).
+/// Every case is read under this rule (the papers' parity rule). A clipper that reads only
+/// non-zero (Clipper 1) is timed under non-zero where every operand covers the same region under
+/// both rules, so it does the same operation as the others.
 const FILL: FillRule = FillRule::EvenOdd;
 
 /// A clipper whose time, extrapolated linearly from its last size, exceeds this many caps is not
@@ -70,19 +74,26 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 .map(|&i| polygon_case_sized(group.workload, settings.seed, i, size, group.window))
                 .collect::<Result<_, _>>()
                 .map_err(|e| CliError::failed(e.to_string()))?;
+            let reads_alike = OnceCell::new();
             for &op in &group.ops {
                 progress.set_message(format!("{} {size} {}", group.label, op.name()));
-                let clippers: Vec<&dyn PolygonClipper> = registry
+                let clippers: Vec<(&PolygonEntry, FillRule)> = registry
                     .polygon
                     .iter()
-                    .map(|e| e.clipper.as_ref())
-                    .filter(|c| {
-                        let caps = c.capabilities();
-                        caps.supports(op, FILL) && cases.iter().all(|k| caps.window.accepts(&k.clip))
+                    .filter(|e| cases.iter().all(|k| e.clipper.capabilities().window.accepts(&k.clip)))
+                    .filter_map(|e| {
+                        let caps = e.clipper.capabilities();
+                        if caps.supports(op, FILL) {
+                            Some((e, FILL))
+                        } else {
+                            let alike = || *reads_alike.get_or_init(|| cases.iter().all(read_alike));
+                            (caps.supports(op, FillRule::NonZero) && alike()).then_some((e, FillRule::NonZero))
+                        }
                     })
                     .collect();
                 let mut timed_here = Vec::new();
-                for c in clippers {
+                for (entry, fill) in clippers {
+                    let c = entry.clipper.as_ref();
                     if stopped.contains_key(c.name()) {
                         continue;
                     }
@@ -97,11 +108,11 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                             continue;
                         }
                     }
-                    match calibrate(c, &cases, op) {
+                    match calibrate(c, &cases, op, fill) {
                         Ok(single) => {
                             last.insert(c.name(), (size, single));
                             let over = single.as_secs_f64() > settings.cap_seconds;
-                            timed_here.push((c, single, over));
+                            timed_here.push((entry, fill, single, over));
                             if over {
                                 let reason = format!(
                                     "one call took {single:.2?} at {size} edges, over the {} s cap",
@@ -117,21 +128,23 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 }
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
                 if group.memory && op == BoolOp::Intersection {
-                    for (c, _, _) in &timed_here {
+                    // An external clipper's memory is its own process's, not this one's.
+                    for (c, fill, _, _) in timed_here.iter().filter(|(e, _, _, _)| e.own_time.is_none()) {
                         for index in &group.indices {
                             let probe = Probe {
                                 workload: group.workload.to_owned(),
                                 window: group.window,
                                 index: *index,
                                 size,
-                                clipper: c.name().to_owned(),
+                                clipper: c.clipper.name().to_owned(),
                                 op,
+                                fill: *fill,
                             };
                             match probe.run_in_child(settings.seed) {
                                 Some((rss_before_kib, peak_extra_kib)) => measured.memory.push(MemoryRecord {
                                     workload: group.label.to_owned(),
                                     case: index.to_string(),
-                                    clipper: c.name().to_owned(),
+                                    clipper: c.clipper.name().to_owned(),
                                     size,
                                     op: op.name().to_owned(),
                                     rss_before_kib,
@@ -166,23 +179,24 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
 }
 
 /// One untimed warm-up call per case, then the slowest case's time for one call.
-fn calibrate(c: &dyn PolygonClipper, cases: &[PolygonCase], op: BoolOp) -> Result<Duration, String> {
+fn calibrate(c: &dyn PolygonClipper, cases: &[PolygonCase], op: BoolOp, fill: FillRule) -> Result<Duration, String> {
     let mut slowest = Duration::ZERO;
     for case in cases {
-        let (result, took) = timed(|| c.clip(&case.subject, &case.clip, op, FILL));
+        let (result, took) = timed(|| c.clip(&case.subject, &case.clip, op, fill));
         result.map_err(|e| format!("{} on {}: {e}", c.name(), case.description))?;
         slowest = slowest.max(took);
     }
     Ok(slowest)
 }
 
-/// Interleaved rounds over cases and clippers; a clipper over the cap is timed once.
+/// Interleaved rounds over cases and clippers; a clipper over the cap is timed once. An external
+/// clipper that reports its own time gets a second row, `NAME (own time)`, beside the round trip.
 fn measure_point(
     group: &Group,
     size: usize,
     op: BoolOp,
     cases: &[PolygonCase],
-    clippers: &[(&dyn PolygonClipper, Duration, bool)],
+    clippers: &[(&PolygonEntry, FillRule, Duration, bool)],
     settings: &Settings,
     rows: &mut Vec<Measurement>,
 ) {
@@ -191,25 +205,45 @@ fn measure_point(
         for (k, (index, case)) in group.indices.iter().zip(cases).enumerate() {
             let n = clippers.len();
             for j in 0..n {
-                let (c, single, over) = clippers[(j + round + k) % n.max(1)];
+                let (entry, fill, single, over) = clippers[(j + round + k) % n.max(1)];
                 if over && round > 0 {
                     continue;
                 }
+                let c = entry.clipper.as_ref();
                 let iterations = iterations_for(single, target);
-                let time_ns = per_call_ns(iterations, || c.clip(black_box(&case.subject), &case.clip, op, FILL));
-                rows.push(Measurement {
+                if let Some(own) = &entry.own_time {
+                    own.take();
+                }
+                let time_ns = per_call_ns(iterations, || c.clip(black_box(&case.subject), &case.clip, op, fill));
+                let row = |clipper: String, time_ns: f64| Measurement {
                     workload: group.label.to_owned(),
                     case: index.to_string(),
-                    clipper: c.name().to_owned(),
+                    clipper,
                     phase: "clip".to_owned(),
                     size,
                     op: op.name().to_owned(),
-                    fill_rule: FILL.name().to_owned(),
+                    fill_rule: fill.name().to_owned(),
                     repetition: round,
                     iterations,
                     time_ns,
-                });
+                };
+                rows.push(row(c.name().to_owned(), time_ns));
+                if let Some(own_ns) = entry.own_time.as_ref().and_then(|own| own.take()) {
+                    rows.push(row(own_time_name(c.name()), own_ns));
+                }
             }
         }
     }
+}
+
+/// The raw-file name of an external clipper's own times (the round trip keeps its plain name).
+pub fn own_time_name(clipper: &str) -> String {
+    format!("{clipper} (own time)")
+}
+
+/// True when both operands of `case` cover exactly the same region under even-odd and non-zero
+/// (no point is wound twice).
+fn read_alike(case: &PolygonCase) -> bool {
+    let alike = |p: &Polygons| same_region((p, FillRule::EvenOdd), (p, FillRule::NonZero), 0.0).is_ok();
+    alike(&case.subject) && alike(&case.clip)
 }

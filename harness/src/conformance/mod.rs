@@ -54,6 +54,9 @@ pub struct ConformanceArgs {
     /// CLIPBENCH_TESTDATA names).
     #[arg(long, value_name = "DIR", default_value_os_t = clip_testkit::testdata_dir())]
     pub testdata: PathBuf,
+    /// External clippers (docs/PROTOCOL.md).
+    #[command(flatten)]
+    pub external: crate::external::ExternalArgs,
 }
 
 /// One clipper's verdict on one case.
@@ -138,7 +141,7 @@ pub fn run(args: &ConformanceArgs, registry: Registry) -> Result<ExitCode, CliEr
     if let (Some(path), Some(case)) = (&args.svg, cases.first()) {
         write_file(path, &picture(&registry, case))?;
     }
-    let ours_failed = clippers.iter().zip(&tally).any(|((_, origin), t)| *origin == Origin::Ours && t.1 > 0);
+    let ours_failed = clippers.iter().zip(&tally).any(|((_, origin), t)| origin.fails_run() && t.1 > 0);
     Ok(if ours_failed { ExitCode::FAILURE } else { ExitCode::SUCCESS })
 }
 

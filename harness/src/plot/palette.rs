@@ -3,7 +3,7 @@
 use plotters::style::RGBColor;
 
 /// Every clipper's colour, so a clipper looks the same in every plot.
-const CLIPPERS: [(&str, RGBColor); 10] = [
+const CLIPPERS: [(&str, RGBColor); 14] = [
     ("vatti", RGBColor(31, 119, 180)),
     ("sutherland-hodgman", RGBColor(255, 127, 14)),
     ("rect-four-state", RGBColor(44, 160, 44)),
@@ -14,11 +14,15 @@ const CLIPPERS: [(&str, RGBColor); 10] = [
     ("virtual-box-no45", RGBColor(127, 127, 127)),
     ("cyrus-beck", RGBColor(188, 189, 34)),
     ("indexed", RGBColor(23, 190, 207)),
+    ("geos", RGBColor(0, 128, 128)),
+    ("i_overlay", RGBColor(0, 0, 0)),
+    ("clipper2-rust", RGBColor(255, 152, 150)),
+    ("clipper1", RGBColor(140, 140, 60)),
 ];
 
 /// Colours for clippers not in the table, in order of first request by name hash.
 const SPARE: [RGBColor; 4] =
-    [RGBColor(0, 0, 0), RGBColor(255, 187, 120), RGBColor(152, 223, 138), RGBColor(174, 199, 232)];
+    [RGBColor(255, 187, 120), RGBColor(152, 223, 138), RGBColor(197, 176, 213), RGBColor(158, 218, 229)];
 
 /// The colour of a clipper's series.
 pub fn clipper_colour(name: &str) -> RGBColor {

@@ -251,7 +251,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         "## Bench: the polygon clippers against geo and Clipper2\n\n\
          Time per call (mean over the group's cases of the median over interleaved rounds) and, in brackets, the \
          ratio to `{BASELINE}` measured in the same run (geometric mean over cases; below 1 is faster than \
-         Clipper2). Operands read under even-odd. ¹ marks a point over the time cap, timed once; n/a: not run (the \
+         Clipper2). Operands read under even-odd (`clipper1`, which reads only non-zero, is timed where every operand covers the same region under both rules). ¹ marks a point over the time cap, timed once; n/a: not run (the \
          clipper does not take that window, or it was skipped after the cap: see the notes).\n\n\
          Ratios of `vatti` at 4, 20, 100, 200 edges and the largest size (intersection):\n\n{}\n\
          Sutherland-Hodgman and four-state on rectangle windows against Clipper2's rectangle clipper \

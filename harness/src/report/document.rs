@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use super::{bench_tables, beyond_paper, table3, table4};
+use super::{bench_tables, beyond_paper, oracle_failures, table3, table4};
 use crate::cli_error::CliError;
 use crate::write::write_file;
 
@@ -11,8 +11,15 @@ pub const REPORT_FILE: &str = "REPORT.md";
 
 /// Writes REPORT.md from the CSVs in `out` (re-drawing the plots it links).
 pub fn write(out: &Path) -> Result<(), CliError> {
+    // The oracle failures first: the table a user opens to learn which clipper to trust.
     let sections: Vec<String> =
-        [table3::section(out)?, table4::section(out)?, beyond_paper::section(out)?, bench_tables::section(out)?]
+        [
+            oracle_failures::section(out)?,
+            table3::section(out)?,
+            table4::section(out)?,
+            beyond_paper::section(out)?,
+            bench_tables::section(out)?,
+        ]
             .into_iter()
             .flatten()
             .collect();

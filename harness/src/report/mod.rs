@@ -5,6 +5,7 @@ pub mod bench_tables;
 pub mod beyond_paper;
 pub mod document;
 pub mod markdown;
+mod oracle_failures;
 mod provenance_line;
 pub mod table3;
 pub mod table4;

@@ -4,4 +4,5 @@
 pub mod bench;
 pub mod beyond_paper;
 pub mod vatti_table3;
+pub mod verify;
 pub mod wang_table4;

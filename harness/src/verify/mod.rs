@@ -19,6 +19,7 @@ use clip_core::{BoolOp, FillRule};
 use clip_testkit::workload::{LINE_WORKLOADS, POLYGON_WORKLOADS};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
+use serde_json::json;
 
 use self::finding::{CaseOutcome, Finding};
 use self::line_runs::LinePlan;
@@ -26,7 +27,10 @@ use self::polygon_runs::PolygonPlan;
 use self::summary::{Row, Summary, table};
 use crate::cli_error::CliError;
 use crate::console;
-use crate::registry::{Origin, Registry};
+use crate::measure::out_dir::ready_out_dir;
+use crate::measure::provenance::Provenance;
+use crate::registry::Registry;
+use crate::results_files::verify::{self as verify_files, CaseEntry};
 use crate::write::write_file;
 
 /// Arguments of `clipbench verify`.
@@ -54,9 +58,10 @@ pub struct VerifyArgs {
     /// Segments per line case.
     #[arg(long, default_value_t = 100)]
     pub segments: usize,
-    /// Folder the failure cases are written to, one sub-folder each.
-    #[arg(long, default_value = "verify-failures")]
-    pub out: PathBuf,
+    /// Folder the failure cases are written to, one sub-folder each (default: verify-failures,
+    /// or RESULTS/verify-failures with --results).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
     /// Failures shrunk and written per clipper, workload and check (0: all of them).
     #[arg(long, default_value_t = 10)]
     pub max_records: usize,
@@ -66,6 +71,15 @@ pub struct VerifyArgs {
     /// Also write the summary as JSON to this file.
     #[arg(long, value_name = "FILE")]
     pub json: Option<PathBuf>,
+    /// Write the run as a result for `clipbench report` into this folder: verify.json (the
+    /// summary and the failure cases), its verify.meta.json sidecar, and the shrunk cases under
+    /// verify-failures/ (replacing that folder). REPORT.md's "Where the clippers disagree with
+    /// the oracle" is drawn from them.
+    #[arg(long, value_name = "DIR", conflicts_with = "out")]
+    pub results: Option<PathBuf>,
+    /// External clippers (docs/PROTOCOL.md).
+    #[command(flatten)]
+    pub external: crate::external::ExternalArgs,
     /// Re-run one saved failure (the case.json of a failure folder) instead of a verify run.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["workloads", "cases", "json", "threads"])]
     pub replay: Option<PathBuf>,
@@ -76,6 +90,18 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
     if let Some(path) = &args.replay {
         return replay::replay(path, &registry);
     }
+    let out = match (&args.out, &args.results) {
+        (Some(out), _) => out.clone(),
+        (None, Some(dir)) => {
+            let failures = ready_out_dir(dir)?.join(verify_files::FAILURES);
+            if failures.exists() {
+                std::fs::remove_dir_all(&failures)
+                    .map_err(|e| CliError::failed(format!("{}: cannot clear it ({e})", failures.display())))?;
+            }
+            failures
+        }
+        (None, None) => PathBuf::from("verify-failures"),
+    };
     let registry = registry.select(&args.clippers)?;
     let workloads = select_workloads(&args.workloads)?;
     let polygon = PolygonPlan {
@@ -129,22 +155,22 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
     let ours: Vec<&str> = registry
         .polygon
         .iter()
-        .filter(|e| e.origin == Origin::Ours)
+        .filter(|e| e.origin.fails_run())
         .map(|e| e.clipper.name())
-        .chain(registry.line.iter().filter(|e| e.origin == Origin::Ours).map(|e| e.clipper.name()))
+        .chain(registry.line.iter().filter(|e| e.origin.fails_run()).map(|e| e.clipper.name()))
         .collect();
     let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures > 0);
 
     // Shrink and write the first failures of each clipper and workload.
     let (chosen, skipped) = choose(&findings, args.max_records);
-    let records: Vec<Result<record::Record, String>> = pool.install(|| {
-        chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &args.out)).collect()
-    });
+    let records: Vec<Result<record::Record, String>> = pool
+        .install(|| chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &out)).collect());
     let mut written = Vec::new();
+    let mut cases = Vec::new();
     for r in records {
         let r = r.map_err(CliError::failed)?;
-        let dir = r.write(&args.out)?;
-        written.push(dir);
+        written.push(r.write(&out)?);
+        cases.push(case_entry(&r));
     }
 
     let summary = Summary {
@@ -163,20 +189,51 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         console::print_line(format_args!(
             "{} failure case(s) shrunk and written under {}{}; replay one with: clipbench verify --replay {}",
             written.len(),
-            args.out.display(),
+            out.display(),
             if skipped > 0 { format!(" ({skipped} more not written: --max-records)") } else { String::new() },
             written[0].join("case.json").display()
         ))?;
     }
+    let results = summary.to_file(cases);
+    let text = serde_json::to_string_pretty(&results).map_err(|e| CliError::failed(e.to_string()))? + "\n";
     if let Some(path) = &args.json {
-        let text = serde_json::to_string_pretty(&summary).map_err(|e| CliError::failed(e.to_string()))?;
-        write_file(path, &(text + "\n"))?;
+        write_file(path, &text)?;
+    }
+    if let Some(dir) = &args.results {
+        write_file(&dir.join(verify_files::JSON), &text)?;
+        let parameters = json!({
+            "cases_per_workload": args.cases,
+            "segments": args.segments,
+            "max_records": args.max_records,
+            "clippers": registry.names(),
+            "workloads": workloads,
+            "ops": polygon.ops.iter().map(|o| o.name()).collect::<Vec<_>>(),
+            "fill_rules": polygon.fills.iter().map(|f| f.name()).collect::<Vec<_>>(),
+        });
+        Provenance::now("verify", args.seed, parameters).write(&dir.join(verify_files::META))?;
     }
     if ours_failed {
         console::print_line("FAILED: a clipper of this project failed the oracle")?;
         Ok(ExitCode::FAILURE)
     } else {
         Ok(ExitCode::SUCCESS)
+    }
+}
+
+/// The summary entry of a written failure folder.
+fn case_entry(r: &record::Record) -> CaseEntry {
+    let c = &r.case;
+    CaseEntry {
+        folder: r.folder.clone(),
+        kind: c.kind.clone(),
+        clipper: c.clipper.clone(),
+        workload: c.workload.clone(),
+        check: c.check.clone(),
+        other: c.other.clone(),
+        op: c.op.clone(),
+        fill: c.fill.clone(),
+        shrunk_vertices: c.shrunk_vertices,
+        shrunk: c.shrunk.clone(),
     }
 }
 

@@ -62,6 +62,8 @@ pub struct Record {
     pub folder: String,
     /// File name and contents.
     pub files: Vec<(String, String)>,
+    /// What its case.json says.
+    pub case: CaseFile,
 }
 
 impl Record {
@@ -118,7 +120,7 @@ pub fn record(
     };
     files.push(("case.json".into(), serde_json::to_string_pretty(&case).map_err(|e| e.to_string())? + "\n"));
     files.push(("replay.txt".into(), case.replay.clone() + "\n"));
-    Ok(Record { folder, files })
+    Ok(Record { folder, files, case })
 }
 
 fn polygon_files(

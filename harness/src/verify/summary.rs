@@ -2,16 +2,15 @@
 
 use std::collections::BTreeMap;
 
-use serde::Serialize;
-
 use crate::registry::Origin;
+use crate::results_files::verify::{CaseEntry, VerifyResults, VerifyRow};
 
 /// The counts of one clipper on one workload.
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Row {
     /// Clipper name.
     pub clipper: &'static str,
-    /// `ours` or `peer`.
+    /// `ours`, `peer`, `external` or `strict` ([`Origin::label`]).
     pub origin: &'static str,
     /// `polygon` or `line`.
     pub kind: &'static str,
@@ -34,11 +33,7 @@ pub struct Row {
 impl Row {
     /// An empty row.
     pub fn new(clipper: &'static str, origin: Origin, kind: &'static str, workload: &'static str) -> Row {
-        let origin = match origin {
-            Origin::Ours => "ours",
-            Origin::Peer => "peer",
-        };
-        Row { clipper, origin, kind, workload, ..Row::default() }
+        Row { clipper, origin: origin.label(), kind, workload, ..Row::default() }
     }
 
     /// Adds another row's counts (same clipper and workload) to this one.
@@ -55,8 +50,8 @@ impl Row {
     }
 }
 
-/// The whole run, as `--json` writes it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// The whole run.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Summary {
     /// The seed every case was generated from.
     pub seed: u64,
@@ -70,6 +65,35 @@ pub struct Summary {
     pub failures_not_recorded: usize,
     /// True when a clipper of this project failed the oracle (the run exits non-zero).
     pub ours_failed: bool,
+}
+
+impl Summary {
+    /// The summary as its results file, with the failure cases written.
+    pub fn to_file(&self, cases: Vec<CaseEntry>) -> VerifyResults {
+        VerifyResults {
+            seed: self.seed,
+            cases_per_workload: self.cases_per_workload,
+            rows: self
+                .rows
+                .iter()
+                .map(|r| VerifyRow {
+                    clipper: r.clipper.to_owned(),
+                    origin: r.origin.to_owned(),
+                    kind: r.kind.to_owned(),
+                    workload: r.workload.to_owned(),
+                    cases: r.cases,
+                    runs: r.runs,
+                    oracle_failures: r.oracle_failures,
+                    disagreements: r.disagreements.iter().map(|(k, v)| ((*k).to_owned(), *v)).collect(),
+                    bridges: r.bridges,
+                })
+                .collect(),
+            failures_recorded: self.failures_recorded,
+            failures_not_recorded: self.failures_not_recorded,
+            ours_failed: self.ours_failed,
+            cases,
+        }
+    }
 }
 
 /// The table: one line per row; a column of disagreements for each other clipper that appears.

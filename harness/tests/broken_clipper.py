@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""A deliberately broken external clipper for harness/tests/cli.rs (protocol version 1).
+
+It clips polygons against rectangle windows correctly (Sutherland-Hodgman, each subject ring on
+its own, so its output is declared "bridged"), except on three requests, counted across all its
+restarts in a state file: on the CRASH-th it exits, on the HANG-th it never answers, on the
+GARBAGE-th it writes a line that is not JSON.
+
+Usage: broken_clipper.py STATE_FILE CRASH HANG GARBAGE
+"""
+
+import json
+import os
+import sys
+import time
+
+
+def next_request_number(state):
+    n = int(open(state).read()) + 1 if os.path.exists(state) else 1
+    with open(state, "w") as f:
+        f.write(str(n))
+    return n
+
+
+def clip_ring(ring, xmin, ymin, xmax, ymax):
+    """One ring against the four sides of the rectangle, in turn."""
+    sides = [
+        (lambda p: p[0] >= xmin, lambda p, q: [xmin, p[1] + (q[1] - p[1]) * (xmin - p[0]) / (q[0] - p[0])]),
+        (lambda p: p[0] <= xmax, lambda p, q: [xmax, p[1] + (q[1] - p[1]) * (xmax - p[0]) / (q[0] - p[0])]),
+        (lambda p: p[1] >= ymin, lambda p, q: [p[0] + (q[0] - p[0]) * (ymin - p[1]) / (q[1] - p[1]), ymin]),
+        (lambda p: p[1] <= ymax, lambda p, q: [p[0] + (q[0] - p[0]) * (ymax - p[1]) / (q[1] - p[1]), ymax]),
+    ]
+    for keep, cut in sides:
+        out = []
+        for i, q in enumerate(ring):
+            p = ring[i - 1]
+            if keep(q):
+                if not keep(p):
+                    out.append(cut(p, q))
+                out.append(q)
+            elif keep(p):
+                out.append(cut(p, q))
+        ring = out
+        if not ring:
+            break
+    return ring
+
+
+def clip(request):
+    window = request["clip"][0]
+    xs, ys = [p[0] for p in window], [p[1] for p in window]
+    area = sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(window, window[1:] + window[:1]))
+    # Under positive (negative) fill a clockwise (counter-clockwise) window covers nothing.
+    if (request["fill"] == "positive" and area < 0) or (request["fill"] == "negative" and area > 0):
+        return []
+    rings = [clip_ring(r, min(xs), min(ys), max(xs), max(ys)) for r in request["subject"]]
+    return [r for r in rings if len(r) >= 3]
+
+
+def main():
+    state, crash, hang, garbage = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+    print(
+        json.dumps(
+            {
+                "protocol": 1,
+                "name": "broken test clipper",
+                "polygon": {
+                    "ops": ["intersection"],
+                    "fill_rules": ["even-odd", "non-zero", "positive", "negative"],
+                    "window": "rectangle",
+                    "output": "bridged",
+                },
+            }
+        ),
+        flush=True,
+    )
+    for line in sys.stdin:
+        request = json.loads(line)
+        n = next_request_number(state)
+        if n == crash:
+            print("broken test clipper: crashing on purpose", file=sys.stderr, flush=True)
+            sys.exit(3)
+        if n == hang:
+            time.sleep(3600)
+        if n == garbage:
+            print("this is not a reply", flush=True)
+            continue
+        print(json.dumps({"id": request["id"], "rings": clip(request)}), flush=True)
+
+
+if __name__ == "__main__":
+    main()

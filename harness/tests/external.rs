@@ -1,0 +1,121 @@
+//! External clippers end to end: a deliberately broken one (crash, hang, garbage) fails only its
+//! three cases and every other case is judged; bad commands, handshakes and files are refused
+//! with the clipper's name and what it said.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn clipbench(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_clipbench")).args(args).output().expect("the clipbench binary runs")
+}
+
+/// A fresh folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("external").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn a_broken_clipper_fails_its_three_cases_and_every_other_case_is_judged() {
+    let dir = scratch("broken");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("broken_clipper.py");
+    let state = dir.join("requests");
+    // Requests 5, 9 and 13 crash, hang and answer garbage; one thread keeps the order fixed.
+    let external = format!("broken=python3 '{}' '{}' 5 9 13", script.display(), state.display());
+    let json = dir.join("summary.json");
+    let o = clipbench(&[
+        "verify",
+        "--external",
+        &external,
+        "--clipper",
+        "broken",
+        "--workload",
+        "star",
+        "--cases",
+        "6",
+        "--threads",
+        "1",
+        "--call-timeout",
+        "2",
+        "--max-records",
+        "0",
+        "--out",
+        dir.join("failures").to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    // A peer: its failures are reported, the run succeeds.
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let summary: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let rows = summary["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 1, "{rows:?}");
+    assert_eq!(rows[0]["origin"], "external");
+    // 6 cases x intersection x 4 fill rules, every one judged; only the three broken ones fail.
+    assert_eq!(rows[0]["runs"], 24);
+    assert_eq!(rows[0]["oracle_failures"], 3, "{}", text(&o.stdout));
+    let found: Vec<String> = summary["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            let case: serde_json::Value = serde_json::from_str(
+                &std::fs::read_to_string(dir.join("failures").join(c["folder"].as_str().unwrap()).join("case.json"))
+                    .unwrap(),
+            )
+            .unwrap();
+            case["found"].as_str().unwrap().to_owned()
+        })
+        .collect();
+    assert_eq!(found.len(), 3, "{found:?}");
+    assert!(found[0].contains("exited") && found[0].contains("crashing on purpose"), "{}", found[0]);
+    assert!(found[1].contains("no answer within 2.0 s"), "{}", found[1]);
+    assert!(found[2].contains("not a reply") && found[2].contains("this is not a reply"), "{}", found[2]);
+    assert!(found.iter().all(|f| f.starts_with("broken failed: ")), "{found:?}");
+}
+
+/// Runs `verify` with one external clipper and returns its exit code and error line.
+fn refused(external: &str) -> (Option<i32>, String) {
+    let o = clipbench(&["verify", "--external", external, "--workload", "star", "--cases", "1"]);
+    (o.status.code(), text(&o.stderr))
+}
+
+#[test]
+fn bad_commands_and_handshakes_name_the_clipper_and_what_it_said() {
+    let (code, e) = refused("gone=./no-such-clipper --json");
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("external clipper 'gone'") && e.contains("cannot start ./no-such-clipper --json"), "{e}");
+
+    let (code, e) = refused("dies=sh -c 'echo missing licence file >&2; exit 4'");
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("'dies'") && e.contains("at the handshake") && e.contains("missing licence file"), "{e}");
+
+    let (code, e) = refused(r#"talks=sh -c 'echo hello; sleep 1'"#);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("'talks'") && e.contains("not a protocol handshake") && e.contains("'hello'"), "{e}");
+
+    let curve = r#"{"protocol":1,"name":"c","polygon":{"ops":["union"],"fill_rules":["even-odd"],"window":"circle"}}"#;
+    let (code, e) = refused(&format!("curvy=sh -c 'echo {}; cat >/dev/null'", curve.replace('"', "\\\"")));
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("'curvy'") && e.contains("unknown window kind 'circle'"), "{e}");
+
+    let (code, e) = refused("vatti=sh -c 'exit 0'");
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("'vatti': the name is taken"), "{e}");
+}
+
+#[test]
+fn a_clippers_file_with_an_unknown_key_is_refused_with_its_line() {
+    let dir = scratch("toml");
+    let file = dir.join("clippers.toml");
+    std::fs::write(&file, "[[clipper]]\nname = \"mine\"\ncommand = \"./mine\"\nretries = 3\n").unwrap();
+    let o = clipbench(&["verify", "--clippers", file.to_str().unwrap(), "--cases", "1"]);
+    let e = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert!(e.contains("clippers.toml: line 4") && e.contains("retries"), "{e}");
+}
