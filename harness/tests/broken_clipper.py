@@ -2,11 +2,13 @@
 """A deliberately broken external clipper for harness/tests/cli.rs (protocol version 1).
 
 It clips polygons against rectangle windows correctly (Sutherland-Hodgman, each subject ring on
-its own, so its output is declared "bridged"), except on three requests, counted across all its
-restarts in a state file: on the CRASH-th it exits, on the HANG-th it never answers, on the
-GARBAGE-th it writes a line that is not JSON.
+its own, so its output is declared "bridged"), and segments against rectangle windows
+(Liang-Barsky, boundary included), except on four requests, counted across all its restarts in a
+state file: on the CRASH-th it exits, on the HANG-th it never answers, on the GARBAGE-th it
+writes a line that is not JSON, on the WRONG_ID-th it answers with another request's id. 0 turns
+a fault off.
 
-Usage: broken_clipper.py STATE_FILE CRASH HANG GARBAGE
+Usage: broken_clipper.py STATE_FILE CRASH HANG GARBAGE WRONG_ID
 """
 
 import json
@@ -57,8 +59,39 @@ def clip(request):
     return [r for r in rings if len(r) >= 3]
 
 
+def clip_segment(a, b, xmin, ymin, xmax, ymax):
+    """The closed part of segment a-b inside the rectangle, as [from, to], or None."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    if dx == 0 and dy == 0:
+        return None
+    t0, t1 = 0.0, 1.0
+    for p, q in [(-dx, a[0] - xmin), (dx, xmax - a[0]), (-dy, a[1] - ymin), (dy, ymax - a[1])]:
+        if p == 0:
+            if q < 0:
+                return None
+        elif p < 0:
+            t0 = max(t0, q / p)
+        else:
+            t1 = min(t1, q / p)
+    if t0 >= t1:
+        return None
+    point = lambda t: a if t == 0 else b if t == 1 else [a[0] + t * dx, a[1] + t * dy]
+    return [point(t0), point(t1)]
+
+
+def clip_lines(request):
+    window = request["window"][0]
+    xs, ys = [p[0] for p in window], [p[1] for p in window]
+    pieces = []
+    for i, (a, b) in enumerate(request["segments"]):
+        piece = clip_segment(a, b, min(xs), min(ys), max(xs), max(ys))
+        if piece:
+            pieces.append({"segment": i, "from": piece[0], "to": piece[1]})
+    return pieces
+
+
 def main():
-    state, crash, hang, garbage = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+    state, crash, hang, garbage, wrong_id = sys.argv[1], *map(int, sys.argv[2:6])
     print(
         json.dumps(
             {
@@ -70,6 +103,7 @@ def main():
                     "window": "rectangle",
                     "output": "bridged",
                 },
+                "line": {"window": "rectangle"},
             }
         ),
         flush=True,
@@ -85,7 +119,13 @@ def main():
         if n == garbage:
             print("this is not a reply", flush=True)
             continue
-        print(json.dumps({"id": request["id"], "rings": clip(request)}), flush=True)
+        if n == wrong_id:
+            print(json.dumps({"id": request["id"] + 1000, "rings": []}), flush=True)
+            continue
+        if "segments" in request:
+            print(json.dumps({"id": request["id"], "pieces": clip_lines(request)}), flush=True)
+        else:
+            print(json.dumps({"id": request["id"], "rings": clip(request)}), flush=True)
 
 
 if __name__ == "__main__":

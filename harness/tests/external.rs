@@ -1,6 +1,6 @@
-//! External clippers end to end: a deliberately broken one (crash, hang, garbage) fails only its
-//! three cases and every other case is judged; bad commands, handshakes and files are refused
-//! with the clipper's name and what it said.
+//! External clippers end to end: a deliberately broken one (crash, hang, garbage, wrong id) fails
+//! only those cases and every other case is judged; its line clipping is judged by the line
+//! oracle; bad commands, handshakes and files are refused with the clipper's name and what it said.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -22,12 +22,11 @@ fn text(bytes: &[u8]) -> String {
 }
 
 #[test]
-fn a_broken_clipper_fails_its_three_cases_and_every_other_case_is_judged() {
+fn a_broken_clipper_fails_its_broken_cases_and_every_other_case_is_judged() {
     let dir = scratch("broken");
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("broken_clipper.py");
-    let state = dir.join("requests");
-    // Requests 5, 9 and 13 crash, hang and answer garbage; one thread keeps the order fixed.
-    let external = format!("broken=python3 '{}' '{}' 5 9 13", script.display(), state.display());
+    // Requests 5, 9, 13 and 17 crash, hang, answer garbage and answer the wrong id; one thread
+    // keeps the order fixed.
+    let external = broken_clipper(&dir, [5, 9, 13, 17]);
     let json = dir.join("summary.json");
     let o = clipbench(&[
         "verify",
@@ -56,9 +55,9 @@ fn a_broken_clipper_fails_its_three_cases_and_every_other_case_is_judged() {
     let rows = summary["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 1, "{rows:?}");
     assert_eq!(rows[0]["origin"], "external");
-    // 6 cases x intersection x 4 fill rules, every one judged; only the three broken ones fail.
+    // 6 cases x intersection x 4 fill rules, every one judged; only the four broken ones fail.
     assert_eq!(rows[0]["runs"], 24);
-    assert_eq!(rows[0]["oracle_failures"], 3, "{}", text(&o.stdout));
+    assert_eq!(rows[0]["oracle_failures"], 4, "{}", text(&o.stdout));
     let found: Vec<String> = summary["cases"]
         .as_array()
         .unwrap()
@@ -72,11 +71,53 @@ fn a_broken_clipper_fails_its_three_cases_and_every_other_case_is_judged() {
             case["found"].as_str().unwrap().to_owned()
         })
         .collect();
-    assert_eq!(found.len(), 3, "{found:?}");
+    assert_eq!(found.len(), 4, "{found:?}");
     assert!(found[0].contains("exited") && found[0].contains("crashing on purpose"), "{}", found[0]);
     assert!(found[1].contains("no answer within 2.0 s"), "{}", found[1]);
     assert!(found[2].contains("not a reply") && found[2].contains("this is not a reply"), "{}", found[2]);
+    assert!(found[3].contains("answered id") && found[3].contains("to request"), "{}", found[3]);
     assert!(found.iter().all(|f| f.starts_with("broken failed: ")), "{found:?}");
+}
+
+/// `--external broken=...` running tests/broken_clipper.py with the given faults (0: none).
+fn broken_clipper(dir: &Path, faults: [u32; 4]) -> String {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("broken_clipper.py");
+    let state = dir.join("requests");
+    let [crash, hang, garbage, wrong_id] = faults;
+    format!("broken=python3 '{}' '{}' {crash} {hang} {garbage} {wrong_id}", script.display(), state.display())
+}
+
+#[test]
+fn an_external_line_clipper_is_judged_by_the_line_oracle() {
+    let dir = scratch("lines");
+    let json = dir.join("summary.json");
+    let o = clipbench(&[
+        "verify",
+        "--external",
+        &broken_clipper(&dir, [0, 0, 0, 0]),
+        "--clipper",
+        "broken",
+        "--workload",
+        "lines-degenerate",
+        "--workload",
+        "wang-t4",
+        "--cases",
+        "10",
+        "--segments",
+        "30",
+        "--out",
+        dir.join("failures").to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let summary: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let lines: Vec<&serde_json::Value> =
+        summary["rows"].as_array().unwrap().iter().filter(|r| r["kind"] == "line").collect();
+    assert_eq!(lines.len(), 2, "{}", text(&o.stdout));
+    for row in lines {
+        assert_eq!((row["runs"].as_u64(), row["oracle_failures"].as_u64()), (Some(10), Some(0)), "{row}");
+    }
 }
 
 /// Runs `verify` with one external clipper and returns its exit code and error line.
