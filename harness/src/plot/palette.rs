@@ -13,12 +13,12 @@ const CLIPPERS: [(&str, RGBColor); 10] = [
     ("virtual-box", RGBColor(227, 119, 194)),
     ("virtual-box-no45", RGBColor(127, 127, 127)),
     ("cyrus-beck", RGBColor(188, 189, 34)),
-    ("indexed", RGBColor(23, 190, 207)),
+    ("indexed", RGBColor(128, 0, 0)),
 ];
 
 /// Colours for clippers not in the table, in order of first request by name hash.
 const SPARE: [RGBColor; 4] =
-    [RGBColor(0, 0, 0), RGBColor(255, 187, 120), RGBColor(152, 223, 138), RGBColor(174, 199, 232)];
+    [RGBColor(23, 190, 207), RGBColor(0, 0, 0), RGBColor(255, 187, 120), RGBColor(152, 223, 138)];
 
 /// The colour of a clipper's series.
 pub fn clipper_colour(name: &str) -> RGBColor {
