@@ -8,10 +8,10 @@ mod wang;
 mod windows;
 
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
-pub use shapes::convex_hull;
 pub use large_lines::{
     BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,
 };
+pub use shapes::convex_hull;
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};

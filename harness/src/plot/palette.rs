@@ -13,7 +13,7 @@ const CLIPPERS: [(&str, RGBColor); 14] = [
     ("virtual-box", RGBColor(227, 119, 194)),
     ("virtual-box-no45", RGBColor(127, 127, 127)),
     ("cyrus-beck", RGBColor(188, 189, 34)),
-    ("indexed", RGBColor(23, 190, 207)),
+    ("indexed", RGBColor(128, 0, 0)),
     ("geos", RGBColor(0, 128, 128)),
     ("i_overlay", RGBColor(0, 0, 0)),
     ("clipper2-rust", RGBColor(255, 152, 150)),
@@ -22,7 +22,7 @@ const CLIPPERS: [(&str, RGBColor); 14] = [
 
 /// Colours for clippers not in the table, in order of first request by name hash.
 const SPARE: [RGBColor; 4] =
-    [RGBColor(255, 187, 120), RGBColor(152, 223, 138), RGBColor(197, 176, 213), RGBColor(158, 218, 229)];
+    [RGBColor(23, 190, 207), RGBColor(255, 187, 120), RGBColor(152, 223, 138), RGBColor(197, 176, 213)];
 
 /// The colour of a clipper's series.
 pub fn clipper_colour(name: &str) -> RGBColor {
