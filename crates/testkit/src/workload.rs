@@ -1,11 +1,13 @@
 //! Seeded workload generators: every case is a pure function of (workload name, seed, index).
 
+mod curves;
 mod degenerate_lines;
 mod hard_cases;
 mod shapes;
 mod wang;
 mod windows;
 
+pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case};
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
