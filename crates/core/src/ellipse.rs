@@ -161,6 +161,10 @@ impl Ellipse {
     /// between two consecutive ones the ellipse is monotone in both coordinates, so the box of
     /// an arc's two ends is its bounding box. For an axis-aligned ellipse they are 0, π/2, π, 3π/2.
     pub fn extreme_parameters(&self) -> [f64; 4] {
+        if self.sin == 0.0 || self.cos == 0.0 {
+            // Axes along x and y (every circle): no trigonometry needed.
+            return [0.0, 0.5 * PI, PI, 1.5 * PI];
+        }
         // x'(θ) = 0 and y'(θ) = 0 with x(θ) = cx + rx cos φ cos θ - ry sin φ sin θ, y likewise.
         let tx = (-self.ry * self.sin).atan2(self.rx * self.cos).rem_euclid(TAU);
         let ty = (self.ry * self.cos).atan2(self.rx * self.sin).rem_euclid(TAU);

@@ -5,7 +5,7 @@ use core::f64::consts::TAU;
 use clip_core::{Ellipse, EllipseArc, Location, Point, Rect};
 
 use crate::crossings::{AxisForm, ENDPOINT_SLACK, line_roots, reach};
-use crate::preliminary::{OCTANT_BREAKS, Piece, Stage, Verdict, box_verdict, pieces};
+use crate::preliminary::{Breaks, OCTANT_BREAKS, Piece, Stage, Verdict, box_verdict, circle_octant_points, pieces};
 use crate::window::{CurveWindow, PolygonWindow, locate_in_rect};
 
 /// Parameters closer than this (radians) are one point: rounding of crossings computed from
@@ -31,44 +31,55 @@ pub fn visible(window: &CurveWindow, arc: &EllipseArc, tests: bool) -> Visible {
         CurveWindow::Rectangle(r) => rectangle(r, arc, tests, &mut raw),
         CurveWindow::Polygon(w) => polygon(w, window, arc, tests, &mut raw),
     };
-    Visible { intervals: merged(raw, arc), stage }
+    Visible { intervals: merged(raw, arc, resolution(arc.ellipse())), stage }
 }
 
 /// The lecture's rectangle clipper: the bounding rectangle, quadrants, octants (circles), and
 /// the equations only for what is left.
 fn rectangle(r: &Rect, arc: &EllipseArc, tests: bool, out: &mut Vec<(f64, f64)>) -> Stage {
     let e = arc.ellipse();
-    let whole = Piece { from: arc.start(), to: arc.end(), verdict: Verdict::Unsettled };
+    let range = (arc.start(), arc.end());
     if !tests {
-        equations(r, e, &whole, false, out);
+        let whole = Piece { from: range.0, to: range.1, bounds: Rect::EMPTY, verdict: Verdict::Unsettled };
+        equations(r, e, &[whole], false, out);
         return Stage::Equations;
     }
     match box_verdict(r, &arc.bounds()) {
         Verdict::Inside => {
-            out.push((arc.start(), arc.end()));
+            out.push(range);
             return Stage::BoxAccept;
         }
         Verdict::Outside => return Stage::BoxReject,
         Verdict::Unsettled => {}
     }
-    let mut quadrants = Vec::with_capacity(6);
-    pieces(e, (arc.start(), arc.end()), &e.extreme_parameters(), r, &mut quadrants);
+    let mut left = Vec::with_capacity(8);
     let mut stage = Stage::Quadrants;
-    let mut left = settle(&quadrants, out);
-    if !left.is_empty() && e.is_circle() {
-        stage = Stage::Octants;
-        let mut octants = Vec::with_capacity(2 * left.len());
-        for p in &left {
-            pieces(e, (p.from, p.to), &OCTANT_BREAKS, r, &mut octants);
+    if e.is_circle() {
+        let points = circle_octant_points(e);
+        let quadrant_points = [points[0], points[2], points[4], points[6]];
+        let quarters = [0.0, OCTANT_BREAKS[2], OCTANT_BREAKS[4], OCTANT_BREAKS[6]];
+        let mut quadrants = Vec::with_capacity(5);
+        pieces(e, range, Breaks { at: &quarters, points: &quadrant_points }, r, &mut quadrants);
+        let unsettled = settle(&quadrants, out);
+        if !unsettled.is_empty() {
+            stage = Stage::Octants;
+            let mut octants = Vec::with_capacity(2 * unsettled.len() + 1);
+            for p in &unsettled {
+                pieces(e, (p.from, p.to), Breaks { at: &OCTANT_BREAKS, points: &points }, r, &mut octants);
+            }
+            left = settle(&octants, out);
         }
-        left = settle(&octants, out);
+    } else {
+        let at = e.extreme_parameters();
+        let points = at.map(|t| e.point_at(t));
+        let mut quadrants = Vec::with_capacity(5);
+        pieces(e, range, Breaks { at: &at, points: &points }, r, &mut quadrants);
+        left = settle(&quadrants, out);
     }
     if left.is_empty() {
         return stage;
     }
-    for p in &left {
-        equations(r, e, p, true, out);
-    }
+    equations(r, e, &left, true, out);
     Stage::Equations
 }
 
@@ -86,26 +97,29 @@ fn settle(pieces: &[Piece], out: &mut Vec<(f64, f64)>) -> Vec<Piece> {
 }
 
 /// Solves the ellipse against the rectangle's four lines (with `only_near`, only the lines that
-/// cross the piece's box) and keeps the parts of the piece between crossings whose midpoints lie
-/// in the closed rectangle.
-fn equations(r: &Rect, e: &Ellipse, piece: &Piece, only_near: bool, out: &mut Vec<(f64, f64)>) {
+/// cross some piece's box: the others cannot meet what is left) and keeps the parts of each
+/// piece between crossings that lie in the closed rectangle.
+fn equations(r: &Rect, e: &Ellipse, left: &[Piece], only_near: bool, out: &mut Vec<(f64, f64)>) {
     let form = AxisForm::new(e);
     let mut roots = Vec::with_capacity(8);
-    let b = if only_near { Rect::from_points(e.point_at(piece.from), e.point_at(piece.to)) } else { Rect::EMPTY };
-    let near = |k: f64, lo: f64, hi: f64| !only_near || (lo <= k && k <= hi);
-    if near(r.min.x, b.min.x, b.max.x) {
-        form.vertical(r.min.x, &mut roots);
+    let near_x = |k: f64| !only_near || left.iter().any(|p| p.bounds.min.x <= k && k <= p.bounds.max.x);
+    let near_y = |k: f64| !only_near || left.iter().any(|p| p.bounds.min.y <= k && k <= p.bounds.max.y);
+    for k in [r.min.x, r.max.x] {
+        if near_x(k) {
+            form.vertical(k, &mut roots);
+        }
     }
-    if near(r.max.x, b.min.x, b.max.x) {
-        form.vertical(r.max.x, &mut roots);
+    for k in [r.min.y, r.max.y] {
+        if near_y(k) {
+            form.horizontal(k, &mut roots);
+        }
     }
-    if near(r.min.y, b.min.y, b.max.y) {
-        form.horizontal(r.min.y, &mut roots);
+    let mut here = Vec::with_capacity(roots.len());
+    for p in left {
+        here.clear();
+        here.extend_from_slice(&roots);
+        classify_between(e, (p.from, p.to), &mut here, |q| locate_in_rect(r, q), out);
     }
-    if near(r.max.y, b.min.y, b.max.y) {
-        form.horizontal(r.max.y, &mut roots);
-    }
-    classify_between(e, (piece.from, piece.to), &mut roots, |p| locate_in_rect(r, p), out);
 }
 
 /// A polygon window: the bounding rectangles (the object's against the window's, and each
@@ -169,27 +183,42 @@ fn classify_between(
     }
 }
 
-/// Sorts and merges the raw intervals: touching ones joined, points dropped; for a whole
-/// ellipse the piece ending at 2π is joined with the one starting at 0.
-fn merged(mut raw: Vec<(f64, f64)>, arc: &EllipseArc) -> Vec<(f64, f64)> {
+/// Distance from the window boundary below which a curve's rounded points cannot tell inside
+/// from outside: 64 ulps of the ellipse's coordinates.
+const RESOLUTION_ULPS: f64 = 64.0;
+
+/// The parameter span below which a gap or a piece is no wider than rounding: a span `δ` of the
+/// curve strays at most `a δ² / 8` from its chord (`a` the long radius), so where an edge grazes
+/// the curve the two crossings `δ` apart enclose a sliver that deep. Such gaps are joined and such
+/// pieces dropped, as touch points are (never below [`ANGLE_SNAP`]).
+fn resolution(e: &Ellipse) -> f64 {
+    let c = e.center();
+    let depth = RESOLUTION_ULPS * f64::EPSILON * (c.x.abs().max(c.y.abs()) + e.max_radius());
+    (8.0 * depth / e.max_radius()).sqrt().max(ANGLE_SNAP)
+}
+
+/// Sorts and merges the raw intervals: touching ones (and those a gap below `snap` apart) joined,
+/// points and pieces below `snap` dropped; for a whole ellipse the piece ending at 2π is joined
+/// with the one starting at 0.
+fn merged(mut raw: Vec<(f64, f64)>, arc: &EllipseArc, snap: f64) -> Vec<(f64, f64)> {
     raw.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out: Vec<(f64, f64)> = Vec::with_capacity(raw.len());
     for (a, b) in raw {
         match out.last_mut() {
-            Some(last) if a <= last.1 + ANGLE_SNAP => last.1 = last.1.max(b),
+            Some(last) if a <= last.1 + snap => last.1 = last.1.max(b),
             _ => out.push((a, b)),
         }
     }
-    out.retain(|(a, b)| b - a > ANGLE_SNAP);
+    out.retain(|(a, b)| b - a > snap);
     if arc.is_closed() && out.len() > 1 {
         let (first, last) = (out[0], out[out.len() - 1]);
-        if first.0 <= arc.start() + ANGLE_SNAP && last.1 >= arc.end() - ANGLE_SNAP {
+        if first.0 <= arc.start() + snap && last.1 >= arc.end() - snap {
             out.remove(0);
             let n = out.len();
             out[n - 1] = (last.0, first.1 + TAU);
         }
     }
-    if arc.is_closed() && out.len() == 1 && out[0].1 - out[0].0 >= TAU - ANGLE_SNAP {
+    if arc.is_closed() && out.len() == 1 && out[0].1 - out[0].0 >= TAU - snap {
         out[0] = (0.0, TAU);
     }
     out

@@ -3,7 +3,7 @@
 
 use core::f64::consts::TAU;
 
-use clip_core::{BoundaryPiece, CurveRegion, Ellipse, EllipseArc, Segment};
+use clip_core::{BoundaryPiece, CurveRegion, Ellipse, EllipseArc, Point, Segment};
 
 use crate::crossings::{line_roots, reach};
 use crate::outline::{ANGLE_SNAP, visible};
@@ -58,7 +58,16 @@ fn edges_inside(window: &CurveWindow, e: &Ellipse, tests: bool) -> Vec<BoundaryP
     let around = reach(e);
     let bounds = e.bounds();
     let mut out = Vec::new();
-    for s in window.oriented_boundary() {
+    let rectangle: [Segment; 4];
+    let boundary: &[Segment] = match window {
+        CurveWindow::Rectangle(r) => {
+            let [a, b, c, d] = [r.min, Point::new(r.max.x, r.min.y), r.max, Point::new(r.min.x, r.max.y)];
+            rectangle = [Segment::new(a, b), Segment::new(b, c), Segment::new(c, d), Segment::new(d, a)];
+            &rectangle
+        }
+        CurveWindow::Polygon(w) => &w.boundary,
+    };
+    for &s in boundary {
         if tests && !s.bounds().intersects(&bounds) {
             continue;
         }

@@ -293,11 +293,12 @@ pub fn check_region(window: &Polygons, region: &CurveRegion) -> Result<(), Curve
     Ok(())
 }
 
-/// The window's complement around `e`: the window's rings plus a rectangle holding both, read
-/// even-odd. Clipping against it and against the window splits the curve between the two, so
-/// visible spans add up to the arc's sweep and clipped areas to the ellipse's.
-pub fn complement_window(window: &Polygons, e: &Ellipse) -> Polygons {
-    let b = window.bounds().union(e.bounds());
+/// The window's complement around `around` (a box holding the curves to clip): the window's
+/// rings plus a rectangle holding both, read even-odd. Clipping against it and against the
+/// window splits a curve between the two, so visible spans add up to the arc's sweep and clipped
+/// areas to the ellipse's.
+pub fn complement_window(window: &Polygons, around: &Rect) -> Polygons {
+    let b = window.bounds().union(*around);
     let mut rings = window.rings.clone();
     rings.push(b.inflate(0.1 * b.extent() + 1.0).to_ring());
     Polygons::new(rings)
