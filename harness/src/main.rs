@@ -11,7 +11,9 @@ mod bench;
 mod checks;
 mod cli_error;
 mod clip;
+mod clip_curves;
 mod conformance;
+mod curve_input;
 mod measure;
 mod papers;
 mod plot;
@@ -89,6 +91,7 @@ fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, Cl
         match table {
             reproduce::Table::VattiTable3 => report::table3::write(&plan.out)?,
             reproduce::Table::WangTable4 => report::table4::write(&plan.out)?,
+            reproduce::Table::Lecture => report::lecture_curves::write(&plan.out)?,
         }
     }
     report::write_report(&plan.out)?;

@@ -3,7 +3,7 @@
 use plotters::style::RGBColor;
 
 /// Every clipper's colour, so a clipper looks the same in every plot.
-const CLIPPERS: [(&str, RGBColor); 9] = [
+const CLIPPERS: [(&str, RGBColor); 13] = [
     ("vatti", RGBColor(31, 119, 180)),
     ("sutherland-hodgman", RGBColor(255, 127, 14)),
     ("rect-four-state", RGBColor(44, 160, 44)),
@@ -13,6 +13,10 @@ const CLIPPERS: [(&str, RGBColor); 9] = [
     ("virtual-box", RGBColor(227, 119, 194)),
     ("virtual-box-no45", RGBColor(127, 127, 127)),
     ("cyrus-beck", RGBColor(188, 189, 34)),
+    ("curve", RGBColor(0, 128, 128)),
+    ("curve-no-tests", RGBColor(64, 64, 64)),
+    ("curve-outline", RGBColor(102, 194, 165)),
+    ("curve-no-tests-outline", RGBColor(170, 170, 170)),
 ];
 
 /// Colours for clippers not in the table, in order of first request by name hash.

@@ -3,6 +3,7 @@
 
 pub mod bench_tables;
 pub mod document;
+pub mod lecture_curves;
 pub mod markdown;
 mod provenance_line;
 pub mod table3;
@@ -33,6 +34,7 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     let out = ready_out_dir(&args.out)?;
     table3::write(&out)?;
     table4::write(&out)?;
+    lecture_curves::write(&out)?;
     bench_tables::write(&out)?;
     write_report(&out)?;
     Ok(ExitCode::SUCCESS)

@@ -2,5 +2,6 @@
 //! `reproduce`, read by `report`, so neither side imports the other.
 
 pub mod bench;
+pub mod lecture_curves;
 pub mod vatti_table3;
 pub mod wang_table4;

@@ -5,10 +5,12 @@ use std::process::ExitCode;
 
 use clip_core::{BoolOp, FillRule, Operand};
 
+use super::curve_runs::curve_failure;
 use super::recheck::{Target, line_failure, polygon_failure};
 use super::record::CaseFile;
 use crate::checks::Check;
 use crate::cli_error::{CliError, InputError};
+use crate::curve_input::read_curves;
 use crate::read::{read_polygons, read_segments};
 use crate::registry::{Registry, unknown_clipper};
 
@@ -38,7 +40,12 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
         fill: case.fill.as_ref().map(parse_fill).transpose()?,
     };
     let (first, second) = (dir.join(&case.inputs[0]), dir.join(&case.inputs[1]));
-    let failure = if case.kind == "line" {
+    let failure = if case.kind == "curve" {
+        let window = read_polygons(&first, Operand::Window)?;
+        let objects =
+            read_curves(&second)?.ok_or_else(|| InputError::new(&second, "holds no circle, ellipse or arc".into()))?;
+        curve_failure(&registry.curve, clipper, check, &window, &objects)
+    } else if case.kind == "line" {
         let window = read_polygons(&first, Operand::Window)?;
         let segments = read_segments(&second)?;
         line_failure(registry, target, &window, &segments)
