@@ -304,7 +304,10 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          with Vatti or geo. Workloads `circles` and `ellipses`: {} cases per workload and window, {} objects each \
          (whole circles and ellipses only), long radius 5-600 in a 1000 x 1000 frame. Times are ns per object: per \
          radius bin the median over {} interleaved rounds (geo: {}), weighted by the bin's objects. Ratios above 1 \
-         are what the tests (or the exact clipper) save.\n\n{}\n{}\n\
+         are what the tests (or the exact clipper) save. A stage's share counts the objects it settled whole; the \
+         four quadrant boxes of a whole circle or ellipse tile its bounding box, so once that box overlaps the \
+         window some quadrant box does too, and quadrants alone never settle a whole curve: they settle quadrants, \
+         cutting down what the octants and the equations see.\n\n{}\n{}\n\
          ### Circles against a rectangle, by radius\n\n{}\n![ns per object against radius]({PLOT})\n\n\
          ### Circles against a concave window with holes, by radius\n\n{}\n{figure}{}\n",
         param("cases_per_workload_and_window"),

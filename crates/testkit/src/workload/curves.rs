@@ -42,8 +42,8 @@ pub struct CurveCase {
 /// star over it, so rings cross each other). Objects: centres uniform over the window's box grown
 /// by half, long radius log-uniform from 0.5% to 60% of the frame; `circles` draws circles,
 /// `ellipses` radius ratios up to 10, half of them rotated. One object in three is an arc (random
-/// start and sweep); one in ten is placed tangent to a side of the window's box and one in twenty
-/// through one of its corners, the inputs where crossings meet or merge.
+/// start and sweep). Of the circles, one in ten is placed tangent to a side of the window's box and
+/// one in twenty through one of its corners, the inputs where crossings meet or merge.
 pub fn curve_case(
     workload: &str,
     seed: u64,
