@@ -64,7 +64,7 @@ pub fn quiet_clipper_panics() {
 
 /// Runs a clipper call; a panic (a peer library's bug, or ours) becomes a failure message, so one
 /// bad case does not end a whole run.
-fn guarded<T>(call: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+pub(crate) fn guarded<T>(call: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
     INSIDE_CLIPPER.with(|c| c.set(true));
     let result = std::panic::catch_unwind(AssertUnwindSafe(call));
     INSIDE_CLIPPER.with(|c| c.set(false));

@@ -6,6 +6,8 @@ use clip_core::{BoolOp, FillRule, Operand, validate_polygons, validate_segments}
 
 use crate::cli_error::{CliError, InputError};
 use crate::console;
+use crate::clip_curves::clip_curves;
+use crate::curve_input::read_curves;
 use crate::read::{read_polygons, read_shapes};
 use crate::registry::{Registry, unknown_clipper};
 use crate::write::{OutputFormat, line_result, polygon_result, write_file};
@@ -32,7 +34,9 @@ pub struct ClipArgs {
     #[arg(long, default_value = "even-odd")]
     pub fill: FillRule,
     /// Subject file (WKT, or GeoJSON when named .geojson/.json). Polygons, or line strings to
-    /// clip with a line clipper (intersection only; the window is read under even-odd).
+    /// clip with a line clipper (intersection only; the window is read under even-odd), or
+    /// circles, ellipses and arcs for a curve clipper (the curve text format, or GeoJSON Point
+    /// features with a `circle` or `ellipse` property; see the README).
     pub subject: PathBuf,
     /// Clip file (WKT or GeoJSON): polygons, every ring kept with its orientation.
     pub clip: PathBuf,
@@ -42,6 +46,10 @@ pub struct ClipArgs {
     /// External clippers (docs/PROTOCOL.md).
     #[command(flatten)]
     pub external: crate::external::ExternalArgs,
+    /// Curves only: the flattening tolerance of WKT and GeoJSON output (default: 1e-4 of the
+    /// window's extent); SVG draws exact arcs.
+    #[arg(long)]
+    pub tolerance: Option<f64>,
 }
 
 /// Runs the command.
@@ -50,6 +58,13 @@ pub fn run(args: &ClipArgs, registry: &Registry) -> Result<(), CliError> {
         Some(path) => OutputFormat::of(path)?,
         None => OutputFormat::Wkt,
     };
+    if let Some(objects) = read_curves(&args.subject)? {
+        if args.op != BoolOp::Intersection {
+            return Err(CliError::usage(format!("curves can only be clipped by intersection, not {}", args.op)));
+        }
+        let text = clip_curves(registry, &args.clipper, &objects, &args.clip, args.tolerance, format)?;
+        return emit(args, &text);
+    }
     let subject = read_shapes(&args.subject)?;
     let clip = read_polygons(&args.clip, Operand::Clip)?;
     let text = if subject.rings.is_empty() && !subject.segments.is_empty() {
@@ -75,9 +90,14 @@ pub fn run(args: &ClipArgs, registry: &Registry) -> Result<(), CliError> {
             entry.clipper.clip(&subject, &clip, args.op, args.fill).map_err(|e| CliError::usage(e.to_string()))?;
         polygon_result(format, entry.clipper.name(), &subject, &clip, &result)
     };
+    emit(args, &text)
+}
+
+/// Writes the output file, or prints the text.
+fn emit(args: &ClipArgs, text: &str) -> Result<(), CliError> {
     match &args.out {
-        Some(path) => write_file(path, &text),
-        None => console::print(&text),
+        Some(path) => write_file(path, text),
+        None => console::print(text),
     }
 }
 

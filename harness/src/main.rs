@@ -75,6 +75,7 @@ fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, Cl
             reproduce::Table::VattiTable3 => report::table3::write(&plan.out)?,
             reproduce::Table::WangTable4 => report::table4::write(&plan.out)?,
             reproduce::Table::BeyondPaper => report::beyond_paper::write(&plan.out)?,
+            reproduce::Table::Lecture => report::lecture_curves::write(&plan.out)?,
         }
     }
     report::write_report(&plan.out)?;

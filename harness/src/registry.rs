@@ -5,11 +5,13 @@
 //! clipper, `.line(Origin::Ours, LINE_TOLERANCE, ...)` for a line clipper (its tolerance is on the
 //! parameter `t` of piece end points). Its name, operations,
 //! fill rules and windows come from its own `name()` and `capabilities()`, so every command runs
-//! it only where it applies.
+//! it only where it applies. Curve clippers (`.curve(...)`) take any window and run on the curve
+//! workloads.
 
 use std::sync::Arc;
 
 use clip_core::{LineClipper, PolygonClipper};
+use clip_curve::CurveClipper;
 use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_line_index::LineIndex;
 use clip_oracle::polygon::{GEO_TOLERANCE, REGION_TOLERANCE};
@@ -39,6 +41,8 @@ pub fn registry() -> Registry {
         .line(Origin::Ours, LINE_TOLERANCE, VirtualBox::NEW2)
         .line(Origin::Ours, LINE_TOLERANCE, VirtualBox::NEW1)
         .line(Origin::Ours, LINE_TOLERANCE, LineIndex)
+        .curve(Origin::Ours, CurveClipper::WITH_TESTS)
+        .curve(Origin::Ours, CurveClipper::WITHOUT_TESTS)
         .polygon(Origin::Peer, GEO_TOLERANCE, GeoClipper::new())
         .line(Origin::Peer, GEO_TOLERANCE, GeoLineClipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
@@ -103,13 +107,24 @@ pub struct LineEntry {
     pub tolerance: f64,
 }
 
-/// The polygon and line clippers, in registration order (a name may be both: `geo`).
+/// A registered curve clipper (circles, ellipses, arcs; any window, read even-odd).
+pub struct CurveEntry {
+    /// The clipper.
+    pub clipper: CurveClipper,
+    /// Ours or a peer.
+    pub origin: Origin,
+}
+
+/// The polygon, line and curve clippers, in registration order (a name may be both polygon and
+/// line: `geo`).
 #[derive(Default)]
 pub struct Registry {
     /// Polygon clippers.
     pub polygon: Vec<PolygonEntry>,
     /// Line clippers.
     pub line: Vec<LineEntry>,
+    /// Curve clippers.
+    pub curve: Vec<CurveEntry>,
 }
 
 impl Registry {
@@ -125,10 +140,21 @@ impl Registry {
         self
     }
 
+    /// Adds a curve clipper.
+    pub fn curve(mut self, origin: Origin, clipper: CurveClipper) -> Registry {
+        self.curve.push(CurveEntry { clipper, origin });
+        self
+    }
+
     /// Every name, each once, in registration order.
     pub fn names(&self) -> Vec<&'static str> {
         let mut names: Vec<&'static str> = Vec::new();
-        let all = self.polygon.iter().map(|e| e.clipper.name()).chain(self.line.iter().map(|e| e.clipper.name()));
+        let all = self
+            .polygon
+            .iter()
+            .map(|e| e.clipper.name())
+            .chain(self.line.iter().map(|e| e.clipper.name()))
+            .chain(self.curve.iter().map(|e| e.clipper.name()));
         for name in all {
             if !names.contains(&name) {
                 names.push(name);
@@ -161,6 +187,7 @@ impl Registry {
         let external = |o: Origin| matches!(o, Origin::External | Origin::Strict);
         self.polygon.retain(|e| external(e.origin) || names.iter().any(|n| n == e.clipper.name()));
         self.line.retain(|e| external(e.origin) || names.iter().any(|n| n == e.clipper.name()));
+        self.curve.retain(|e| names.iter().any(|n| n == e.clipper.name()));
         Ok(self)
     }
 }
@@ -184,6 +211,9 @@ mod tests {
         assert_eq!(geo.line.len(), 1);
         let rect = registry().select(&["clipper2-rect".to_owned()]).unwrap();
         assert_eq!((rect.polygon.len(), rect.line.len()), (1, 1));
+        let curve = registry().select(&["curve-no-tests".to_owned()]).unwrap();
+        assert_eq!((curve.polygon.len(), curve.line.len(), curve.curve.len()), (0, 0, 1));
+        assert!(!curve.curve[0].clipper.preliminary_tests);
     }
 
     #[test]

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::str::FromStr;
 
-use clip_testkit::workload::{LINE_WORKLOADS, POLYGON_WORKLOADS};
+use clip_testkit::workload::{CURVE_WORKLOADS, LINE_WORKLOADS, POLYGON_WORKLOADS};
 
 fn clipbench(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_clipbench")).args(args).output().expect("the clipbench binary runs")
@@ -369,10 +369,25 @@ fn verify_prints_a_table_writes_json_and_does_not_depend_on_the_thread_count() {
 #[test]
 fn verify_passes_every_clipper_of_ours_on_every_workload() {
     let dir = scratch("verify-ours");
-    let ours =
-        ["vatti", "sutherland-hodgman", "rect-four-state", "cyrus-beck", "liu", "virtual-box", "virtual-box-no45"];
+    let ours = [
+        "vatti",
+        "sutherland-hodgman",
+        "rect-four-state",
+        "cyrus-beck",
+        "liu",
+        "virtual-box",
+        "virtual-box-no45",
+        "curve",
+        "curve-no-tests",
+    ];
     // Every workload the testkit names, so a new one is verified here from the day it exists.
-    let small: Vec<&str> = POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).copied().filter(|&w| w != "large").collect();
+    let small: Vec<&str> = POLYGON_WORKLOADS
+        .iter()
+        .chain(LINE_WORKLOADS)
+        .chain(CURVE_WORKLOADS)
+        .copied()
+        .filter(|&w| w != "large")
+        .collect();
     for (workloads, cases) in [(&small[..], 120), (&["large"][..], 4)] {
         let json = dir.join(format!("{}.json", workloads[0]));
         let mut args = vec!["verify".to_owned(), "--cases".to_owned(), cases.to_string()];
@@ -393,6 +408,38 @@ fn verify_passes_every_clipper_of_ours_on_every_workload() {
             }
         }
     }
+}
+
+#[test]
+fn clip_takes_circles_ellipses_and_arcs_as_text_and_geojson() {
+    let dir = scratch("clip-curves");
+    let window = write(&dir, "window.wkt", "POLYGON((0 0,10 0,10 10,0 10,0 0))");
+    // A circle centred on the right edge: half of it, 2π, inside.
+    let text = write(&dir, "shapes.curve", "# one circle\ncircle 10 5 2\n");
+    let o = clipbench(&["clip", "--clipper", "curve", &text, &window, "--tolerance", "1e-6"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let area = wkt_area(&stdout(&o));
+    assert!((area - 2.0 * std::f64::consts::PI).abs() < 1e-5, "{area}");
+    let geojson = write(
+        &dir,
+        "shapes.geojson",
+        r#"{"type":"Feature","geometry":{"type":"Point","coordinates":[10,5]},"properties":{"circle":{"radius":2}}}"#,
+    );
+    let o = clipbench(&["clip", "--clipper", "curve-no-tests", &geojson, &window, "--tolerance", "1e-6"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!((wkt_area(&stdout(&o)) - area).abs() < 1e-9);
+    let svg = dir.join("out.svg");
+    let o = clipbench(&["clip", "--clipper", "curve", &text, &window, "-o", svg.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(&svg).unwrap().contains(" 0 0 "), "SVG arcs expected");
+    // Bad curves and a non-curve clipper: exit 2 with a line naming the problem.
+    let bad = write(&dir, "bad.curve", "circle 1 1 0\n");
+    let o = clipbench(&["clip", "--clipper", "curve", &bad, &window]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("bad.curve") && stderr(&o).contains("positive"), "{}", stderr(&o));
+    let o = clipbench(&["clip", "--clipper", "vatti", &text, &window]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("curve clippers"), "{}", stderr(&o));
 }
 
 #[test]

@@ -103,6 +103,18 @@ pub enum ClipError {
         /// The clipper's name.
         clipper: &'static str,
     },
+    /// A curve (circle, ellipse, arc) or a flattening tolerance with an unusable parameter: a
+    /// radius that is not positive, a non-finite centre, radius, angle or tolerance, a sweep
+    /// outside `(0, 2π]`, an ellipse too eccentric or too small for its coordinates.
+    #[error("curve {parameter} = {value:e}: {reason}")]
+    InvalidCurve {
+        /// Which parameter (`radius`, `centre x`, `rotation`, `sweep`, `tolerance`, ...).
+        parameter: &'static str,
+        /// The value given.
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// The clipper does not do this operation, fill rule or output form.
     #[error("{clipper} does not support {what}")]
     Unsupported {

@@ -1,8 +1,10 @@
 //! clip-core: the shared vocabulary of clipbench.
 //!
-//! Points, segments, rings and polygon sets; the boolean operations and fill rules; one module
-//! of exact predicates (Shewchuk's adaptive arithmetic through the `robust` crate) through which
-//! every orientation and in/out decision goes; typed errors for bad input; and the
+//! Points, segments, rings and polygon sets; circles, ellipses and their arcs ([`Ellipse`],
+//! [`EllipseArc`]) and the regions a clipped filled ellipse leaves ([`CurveRegion`]); the boolean
+//! operations and fill rules; one module of exact predicates (Shewchuk's adaptive arithmetic
+//! through the `robust` crate) through which every orientation and in/out decision goes; typed
+//! errors for bad input; and the
 //! [`PolygonClipper`], [`LineClipper`] and [`PreparedWindow`] traits the harness registers
 //! clippers behind. Conventions (output orientation, the closed-set rule for lines) are set out
 //! in the repository's `docs/DESIGN.md` and are restated where each applies.
@@ -38,6 +40,8 @@ pub struct ReadmeDoctests;
 
 mod area;
 mod clipper;
+mod curve_region;
+mod ellipse;
 mod error;
 #[cfg(feature = "geo")]
 mod geo;
@@ -59,6 +63,8 @@ pub use area::signed_area;
 pub use clipper::{
     LineCapabilities, LineClipper, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece, WindowKind,
 };
+pub use curve_region::{BoundaryPiece, CurveRegion};
+pub use ellipse::{Ellipse, EllipseArc, MIN_AXIS_RATIO, MIN_RADIUS_TO_CENTRE};
 pub use error::{
     ClipError, MAX_COORDINATE, MIN_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
     validate_segments, validate_window, window_covers,

@@ -13,6 +13,12 @@
 //! - [`line`]: [`visible_intervals`], the closed-set visible part of a segment in a window (even-odd
 //!   interior, boundary included) from exact incidences, and [`check_line_batch`] for a line
 //!   clipper's pieces.
+//! - [`curve`]: [`curve::check_visible`] for the visible parameter intervals of a circle, ellipse
+//!   or arc (samples of the curve against exact even-odd point location, interval ends on the
+//!   window's boundary), [`curve::check_region`] for a clipped filled ellipse (samples of the plane
+//!   against a careful point-in-ellipse test and exact location in the window, winding number of
+//!   the region's arcs and segments), and [`curve::check_identities`] (spans and areas in a window
+//!   and in its complement add up to the whole).
 //!
 //! The conventions it checks (output form, the closed-set rule, tolerances) are set out in the
 //! repository's `docs/DESIGN.md`.
@@ -65,6 +71,7 @@
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+pub mod curve;
 pub mod line;
 pub mod polygon;
 

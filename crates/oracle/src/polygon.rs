@@ -5,7 +5,7 @@
 //! of the symmetric difference between the output and the exact answer ([`region_area`]).
 
 mod region_area;
-mod sampling;
+pub(crate) mod sampling;
 mod validity;
 
 pub use region_area::{region_area, region_area_with_witness};

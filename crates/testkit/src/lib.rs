@@ -8,8 +8,9 @@
 //!   `rand_pcg::Pcg64` from a hash of the three, so cases do not depend on iteration order or
 //!   thread count. Polygon workloads [`workload::POLYGON_WORKLOADS`] (`vatti-t3`, `star`,
 //!   `scribble`, `holes`, `multi`, `grid`, `large`), line workloads [`workload::LINE_WORKLOADS`]
-//!   (`wang-t4`, `lines-degenerate`, `lines-large`), and [`workload::hard_cases`], inputs the
-//!   mature clippers' bug trackers are full of.
+//!   (`wang-t4`, `lines-degenerate`, `lines-large`), curve workloads
+//!   [`workload::CURVE_WORKLOADS`] (`circles`, `ellipses`), and [`workload::hard_cases`], inputs
+//!   the mature clippers' bug trackers are full of.
 //! - [`line_probe`]: named singular line cases (through a vertex, along an edge, endpoint on the
 //!   boundary, ...) with hand-computed answers, run through any line clipper in both directions
 //!   and both window orientations, checked against the answers and against the line oracle.

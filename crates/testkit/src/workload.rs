@@ -1,5 +1,6 @@
 //! Seeded workload generators: every case is a pure function of (workload name, seed, index).
 
+mod curves;
 mod degenerate_lines;
 mod hard_cases;
 mod large_lines;
@@ -7,6 +8,7 @@ mod shapes;
 mod wang;
 mod windows;
 
+pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case};
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
 pub use large_lines::{
     BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,

@@ -4,6 +4,7 @@
 pub mod bench_tables;
 pub mod beyond_paper;
 pub mod document;
+pub mod lecture_curves;
 pub mod markdown;
 mod oracle_failures;
 mod provenance_line;
@@ -36,6 +37,7 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     table3::write(&out)?;
     table4::write(&out)?;
     beyond_paper::write(&out)?;
+    lecture_curves::write(&out)?;
     bench_tables::write(&out)?;
     write_report(&out)?;
     Ok(ExitCode::SUCCESS)

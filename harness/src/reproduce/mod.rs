@@ -3,6 +3,7 @@
 //! into markdown tables and plots beside the papers' own numbers.
 
 mod beyond_paper;
+mod lecture;
 mod pixel_check;
 mod table3;
 mod table4;
@@ -13,14 +14,14 @@ use crate::cli_error::CliError;
 use crate::measure::out_dir::ready_out_dir;
 
 /// The tables `reproduce` knows, by name.
-pub const TABLES: [&str; 4] = ["vatti-table3", "wang-table4", "beyond-paper", "all"];
+pub const TABLES: [&str; 5] = ["vatti-table3", "wang-table4", "beyond-paper", "lecture", "all"];
 
 /// Arguments of `clipbench reproduce`.
 #[derive(Debug, clap::Args)]
 pub struct ReproduceArgs {
     /// Which table: vatti-table3 (Vatti 1992, Table 3), wang-table4 (Wang et al. 2005, Table 4),
     /// beyond-paper (line clipping against windows of 6 to 10^4 edges, and 10^6 segments on every
-    /// core) or all.
+    /// core), lecture (the lecture notes' figures and the curve clipping bench) or all.
     #[arg(value_name = "TABLE")]
     pub table: String,
     /// The papers' repetition counts (1000 per point) instead of a quick run's.
@@ -46,6 +47,8 @@ pub enum Table {
     WangTable4,
     /// Line clipping beyond Table 4's window sizes (issue 20).
     BeyondPaper,
+    /// The lecture notes' figures and claims (curve clipping's preliminary tests).
+    Lecture,
 }
 
 /// What a run is asked to do: its tables in measuring order, and the output folder, made ready.
@@ -63,7 +66,8 @@ pub fn plan(args: &ReproduceArgs) -> Result<Plan, CliError> {
         "vatti-table3" => vec![Table::VattiTable3],
         "wang-table4" => vec![Table::WangTable4],
         "beyond-paper" => vec![Table::BeyondPaper],
-        "all" => vec![Table::VattiTable3, Table::WangTable4, Table::BeyondPaper],
+        "lecture" => vec![Table::Lecture],
+        "all" => vec![Table::VattiTable3, Table::WangTable4, Table::BeyondPaper, Table::Lecture],
         other => {
             return Err(CliError::usage(format!("unknown table '{other}' (valid: {})", TABLES.join(", "))));
         }
@@ -83,5 +87,6 @@ pub fn measure(table: Table, args: &ReproduceArgs, out: &Path) -> Result<(), Cli
         Table::BeyondPaper => {
             beyond_paper::measure(&beyond_paper::Settings::new(args.seed, args.full, args.repetitions), out)
         }
+        Table::Lecture => lecture::measure(&lecture::Settings::new(args.seed, args.full, args.repetitions), out),
     }
 }

@@ -3,6 +3,7 @@
 
 pub mod bench;
 pub mod beyond_paper;
+pub mod lecture_curves;
 pub mod vatti_table3;
 pub mod verify;
 pub mod wang_table4;

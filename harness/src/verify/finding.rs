@@ -14,6 +14,8 @@ pub enum Kind {
     Polygon,
     /// Line clipping against a window.
     Line,
+    /// Circles, ellipses and arcs clipped against a window.
+    Curve,
 }
 
 impl Kind {
@@ -22,6 +24,7 @@ impl Kind {
         match self {
             Kind::Polygon => "polygon",
             Kind::Line => "line",
+            Kind::Curve => "curve",
         }
     }
 }

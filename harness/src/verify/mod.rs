@@ -2,6 +2,7 @@
 //! supports, against the exact oracles and against each other, in parallel and deterministic per
 //! seed whatever the thread count.
 
+mod curve_runs;
 mod finding;
 mod line_runs;
 mod polygon_runs;
@@ -16,11 +17,12 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clip_core::{BoolOp, FillRule};
-use clip_testkit::workload::{LINE_WORKLOADS, POLYGON_WORKLOADS};
+use clip_testkit::workload::{CURVE_WORKLOADS, LINE_WORKLOADS, POLYGON_WORKLOADS};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde_json::json;
 
+use self::curve_runs::CurvePlan;
 use self::finding::{CaseOutcome, Finding};
 use self::line_runs::LinePlan;
 use self::polygon_runs::PolygonPlan;
@@ -40,7 +42,8 @@ pub struct VerifyArgs {
     #[arg(long = "clipper", value_name = "NAME")]
     pub clippers: Vec<String>,
     /// Workload to run (repeat for several; default: every workload). Polygon workloads run
-    /// the polygon clippers, line workloads the line clippers.
+    /// the polygon clippers, line workloads the line clippers, curve workloads (`circles`,
+    /// `ellipses`) the curve clippers.
     #[arg(long = "workload", value_name = "NAME")]
     pub workloads: Vec<String>,
     /// Generated cases per workload; each case runs every supported operation and fill rule.
@@ -111,10 +114,19 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         seed: args.seed,
     };
     let line = LinePlan { entries: registry.line.iter().collect(), segments: args.segments, seed: args.seed };
+    let curve = CurvePlan { entries: registry.curve.iter().collect(), seed: args.seed };
     // Work items in a fixed order: (workload, case index).
     let items: Vec<(&'static str, usize)> = workloads
         .iter()
-        .filter(|w| if POLYGON_WORKLOADS.contains(w) { !polygon.entries.is_empty() } else { !line.entries.is_empty() })
+        .filter(|w| {
+            if POLYGON_WORKLOADS.contains(w) {
+                !polygon.entries.is_empty()
+            } else if CURVE_WORKLOADS.contains(w) {
+                !curve.entries.is_empty()
+            } else {
+                !line.entries.is_empty()
+            }
+        })
         .flat_map(|&w| (0..args.cases).map(move |i| (w, i)))
         .collect();
     if items.is_empty() {
@@ -129,7 +141,13 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         items
             .par_iter()
             .map(|&(w, i)| {
-                let outcome = if POLYGON_WORKLOADS.contains(&w) { polygon.run(w, i) } else { line.run(w, i) };
+                let outcome = if POLYGON_WORKLOADS.contains(&w) {
+                    polygon.run(w, i)
+                } else if CURVE_WORKLOADS.contains(&w) {
+                    curve.run(w, i)
+                } else {
+                    line.run(w, i)
+                };
                 progress.inc(1);
                 outcome
             })
@@ -158,6 +176,7 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         .filter(|e| e.origin.fails_run())
         .map(|e| e.clipper.name())
         .chain(registry.line.iter().filter(|e| e.origin.fails_run()).map(|e| e.clipper.name()))
+        .chain(registry.curve.iter().filter(|e| e.origin.fails_run()).map(|e| e.clipper.name()))
         .collect();
     let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures > 0);
 
@@ -239,7 +258,8 @@ fn case_entry(r: &record::Record) -> CaseEntry {
 
 /// The workloads named (all when none), or a usage error listing the valid names.
 fn select_workloads(names: &[String]) -> Result<Vec<&'static str>, CliError> {
-    let all: Vec<&'static str> = POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).copied().collect();
+    let all: Vec<&'static str> =
+        POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).chain(CURVE_WORKLOADS).copied().collect();
     if names.is_empty() {
         return Ok(all);
     }

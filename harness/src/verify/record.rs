@@ -4,16 +4,18 @@
 use std::path::{Path, PathBuf};
 
 use clip_core::{BoolOp, Polygons, Segment, VisiblePiece};
-use clip_testkit::case_record::{lines_svg, polygons_svg, polygons_to_wkt, segments_to_wkt};
+use clip_testkit::case_record::{CurvePicture, curves_svg, lines_svg, polygons_svg, polygons_to_wkt, segments_to_wkt};
 use clip_testkit::shrink::{shrink_polygons, shrink_segments};
-use clip_testkit::workload::{line_case, polygon_case};
+use clip_testkit::workload::{CURVES_PER_CASE, curve_case, line_case, polygon_case};
 use serde::{Deserialize, Serialize};
 
+use super::curve_runs::{case_objects, curve_failure, run_objects};
 use super::finding::{Finding, Kind, window_name};
 use super::polygon_runs::takes;
 use super::recheck::{Target, line_failure, polygon_failure};
 use crate::checks::{Check, run_line, run_polygon};
 use crate::cli_error::CliError;
+use crate::curve_input::curves_to_text;
 use crate::registry::Registry;
 use crate::write::write_file;
 
@@ -117,6 +119,7 @@ pub fn record(
     let mut files = match finding.kind {
         Kind::Polygon => polygon_files(registry, seed, finding, target, &mut case)?,
         Kind::Line => line_files(registry, (seed, segments), finding, target, &mut case)?,
+        Kind::Curve => curve_files(registry, seed, finding, &mut case)?,
     };
     files.push(("case.json".into(), serde_json::to_string_pretty(&case).map_err(|e| e.to_string())? + "\n"));
     files.push(("replay.txt".into(), case.replay.clone() + "\n"));
@@ -198,5 +201,50 @@ fn line_files(
     }
     let named: Vec<(&str, &[VisiblePiece])> = outputs.iter().map(|(n, p)| (*n, p.as_slice())).collect();
     files.push(("picture.svg".into(), lines_svg(&window, &segments, &named)));
+    Ok(files)
+}
+
+/// A curve failure's files: the case regenerated and cut down to the first object that still
+/// fails the same check on its own, the window as WKT, the object(s) in the curve text format,
+/// and a picture of the clipper's answers.
+fn curve_files(
+    registry: &Registry,
+    seed: u64,
+    finding: &Finding,
+    case: &mut CaseFile,
+) -> Result<Vec<(String, String)>, String> {
+    let generated = curve_case(finding.workload, seed, finding.index, finding.window, CURVES_PER_CASE)
+        .map_err(|e| e.to_string())?;
+    let all = case_objects(&generated.objects);
+    let fails =
+        |objects: &[_]| curve_failure(&registry.curve, finding.clipper, finding.check, &generated.window, objects);
+    let one = all.iter().find(|o| fails(std::slice::from_ref(*o)).is_some());
+    let objects = one.map_or(all.clone(), |o| vec![*o]);
+    case.generated_vertices = [generated.window.vertex_count(), all.len()];
+    case.shrunk_vertices = [generated.window.vertex_count(), objects.len()];
+    case.shrunk = fails(&objects).unwrap_or_else(|| "passes on its own".into());
+    case.inputs = ["window.wkt".into(), "objects.txt".into()];
+    let mut files = vec![
+        ("window.wkt".to_owned(), polygons_to_wkt(&generated.window, false) + "\n"),
+        ("objects.txt".to_owned(), curves_to_text(&objects)),
+    ];
+    if let Some(entry) = registry.curve.iter().find(|e| e.clipper.name() == finding.clipper)
+        && let Ok((answers, _)) = run_objects(entry.clipper, &generated.window, &objects)
+    {
+        let regions: Vec<_> = objects
+            .iter()
+            .map(|o| {
+                let prepared = entry.clipper.prepare(&generated.window).ok()?;
+                o.filled.then(|| prepared.clip_filled(o.arc.ellipse()).region)
+            })
+            .collect();
+        let pictures: Vec<CurvePicture<'_>> = objects
+            .iter()
+            .zip(&answers)
+            .zip(&regions)
+            .map(|((o, a), r)| CurvePicture { arc: &o.arc, visible: &a.intervals, region: r.as_ref() })
+            .collect();
+        files.push(("picture.svg".into(), curves_svg(&generated.window, &pictures, finding.clipper)));
+    }
     Ok(files)
 }

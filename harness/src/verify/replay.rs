@@ -5,12 +5,14 @@ use std::process::ExitCode;
 
 use clip_core::{Operand, validate_window};
 
+use super::curve_runs::curve_failure;
 use super::finding::Kind;
 use super::recheck::{line_failure, polygon_failure};
 use super::record::CaseFile;
 use super::replay_case::{self, Replay};
 use crate::cli_error::{CliError, InputError};
 use crate::console;
+use crate::curve_input::read_curves;
 use crate::read::{read_polygons, read_segments};
 use crate::registry::Registry;
 
@@ -21,6 +23,13 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
     let dir = path.parent().unwrap_or(Path::new("."));
     let (first, second) = (dir.join(&case.inputs[0]), dir.join(&case.inputs[1]));
     let failure = match replay.kind {
+        Kind::Curve => {
+            let window = read_polygons(&first, Operand::Window)?;
+            validate_window(&window).map_err(|e| InputError::new(&first, e.to_string()))?;
+            let objects = read_curves(&second)?
+                .ok_or_else(|| InputError::new(&second, "holds no circle, ellipse or arc".into()))?;
+            curve_failure(&registry.curve, replay.target.clipper, replay.target.check, &window, &objects)
+        }
         Kind::Line => {
             let window = read_polygons(&first, Operand::Window)?;
             validate_window(&window).map_err(|e| InputError::new(&first, e.to_string()))?;

@@ -17,7 +17,7 @@ use crate::registry::{Registry, unknown_clipper};
 
 /// What a case file asks to re-run, checked.
 pub struct Replay {
-    /// Polygon or line case.
+    /// Polygon, line or curve case.
     pub kind: Kind,
     /// The clipper, check, operation and fill rule.
     pub target: Target<'static>,
@@ -48,7 +48,8 @@ pub fn checked(case: &CaseFile, registry: &Registry, path: &Path) -> Result<Repl
     let kind = match case.kind.as_str() {
         "polygon" => Kind::Polygon,
         "line" => Kind::Line,
-        other => return Err(bad(format!("unknown kind '{other}' (a case is a polygon or a line case)"))),
+        "curve" => Kind::Curve,
+        other => return Err(bad(format!("unknown kind '{other}' (a case is a polygon, line or curve case)"))),
     };
     let clipper = clipper_of(kind, &case.clipper, registry, path)?;
     let mut clippers = vec![clipper];
@@ -72,19 +73,19 @@ pub fn checked(case: &CaseFile, registry: &Registry, path: &Path) -> Result<Repl
         ("oracle", None) => Check::Oracle,
         ("area-identities", None) if kind == Kind::Polygon => Check::AreaIdentities,
         ("area-identities", None) => {
-            return Err(bad("area identities are a polygon check, and this is a line case".into()));
+            return Err(bad(format!("area identities are a polygon check, and this is a {} case", kind.name())));
         }
         (other, _) => return Err(bad(format!("unknown check '{other}' (oracle, area-identities or disagreement)"))),
     };
     let op = case.op.as_deref().map(|s| s.parse::<BoolOp>().map_err(|e| bad(e.to_string()))).transpose()?;
     let fill = case.fill.as_deref().map(|s| s.parse::<FillRule>().map_err(|e| bad(e.to_string()))).transpose()?;
     match kind {
-        Kind::Line => {
+        Kind::Line | Kind::Curve => {
             if let Some(op) = op {
-                return Err(bad(format!("a line case has no 'op', and this one says {op}")));
+                return Err(bad(format!("a {} case has no 'op', and this one says {op}", kind.name())));
             }
             if let Some(fill) = fill {
-                return Err(bad(format!("a line case has no 'fill', and this one says {fill}")));
+                return Err(bad(format!("a {} case has no 'fill', and this one says {fill}", kind.name())));
             }
         }
         Kind::Polygon => {
@@ -134,9 +135,13 @@ fn clipper_of(
 ) -> Result<(&'static str, WindowKind), CliError> {
     let polygon = registry.find_polygon(name).map(|e| (e.clipper.name(), e.clipper.capabilities().window));
     let line = registry.find_line(name).map(|e| (e.clipper.name(), e.clipper.capabilities().window));
+    // Curve clippers take rectangle and polygon windows alike.
+    let curve = registry.curve.iter().find(|e| e.clipper.name() == name).map(|e| (e.clipper.name(), WindowKind::Any));
+    let kind_of = |found: Option<_>, k: Kind| found.map(|_: (&str, WindowKind)| k);
     let (wanted, other_kind) = match kind {
-        Kind::Polygon => (polygon, line.map(|_| Kind::Line)),
-        Kind::Line => (line, polygon.map(|_| Kind::Polygon)),
+        Kind::Polygon => (polygon, kind_of(line, Kind::Line).or(kind_of(curve, Kind::Curve))),
+        Kind::Line => (line, kind_of(polygon, Kind::Polygon).or(kind_of(curve, Kind::Curve))),
+        Kind::Curve => (curve, kind_of(polygon, Kind::Polygon).or(kind_of(line, Kind::Line))),
     };
     match (wanted, other_kind) {
         (Some(found), _) => Ok(found),

@@ -12,14 +12,14 @@ const PAD: f64 = 20.0;
 const DOTTED_VERTICES: usize = 400;
 
 /// Maps plane coordinates to picture coordinates: scaled to 800 px wide, y flipped.
-struct View {
+pub(super) struct View {
     bounds: Rect,
-    scale: f64,
+    pub(super) scale: f64,
     height: f64,
 }
 
 impl View {
-    fn new(bounds: Rect) -> View {
+    pub(super) fn new(bounds: Rect) -> View {
         let b = if bounds.is_empty() { Rect::new(0.0, 0.0, 1.0, 1.0) } else { bounds };
         let extent = b.extent().max(f64::MIN_POSITIVE);
         let b = b.inflate(extent * 0.02);
@@ -29,11 +29,11 @@ impl View {
         View { bounds: Rect::new(b.min.x, b.min.y, b.min.x + w, b.min.y + h), scale, height }
     }
 
-    fn map(&self, p: Point) -> (f64, f64) {
+    pub(super) fn map(&self, p: Point) -> (f64, f64) {
         (PAD + (p.x - self.bounds.min.x) * self.scale, PAD + (self.bounds.max.y - p.y) * self.scale)
     }
 
-    fn open(&self) -> String {
+    pub(super) fn open(&self) -> String {
         format!(
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{WIDTH}\" height=\"{h:.0}\" viewBox=\"0 0 {WIDTH} {h:.0}\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
             h = self.height
@@ -41,12 +41,12 @@ impl View {
     }
 }
 
-fn escape(text: &str) -> String {
+pub(super) fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
 /// One `<path>` for all rings of a polygon set.
-fn polygons_path(
+pub(super) fn polygons_path(
     out: &mut String,
     view: &View,
     p: &Polygons,
@@ -93,7 +93,7 @@ fn vertex_dots(out: &mut String, view: &View, p: &Polygons, colour: &str) {
     }
 }
 
-fn legend(out: &mut String, entries: &[(String, &str)]) {
+pub(super) fn legend(out: &mut String, entries: &[(String, &str)]) {
     let h = 8.0 + 18.0 * entries.len() as f64;
     let _ = writeln!(
         out,
