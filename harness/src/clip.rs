@@ -5,8 +5,8 @@ use std::path::PathBuf;
 use clip_core::{BoolOp, FillRule, Operand, validate_polygons, validate_segments};
 
 use crate::cli_error::{CliError, InputError};
-use crate::console;
 use crate::clip_curves::clip_curves;
+use crate::console;
 use crate::curve_input::read_curves;
 use crate::read::{read_polygons, read_shapes};
 use crate::registry::{Registry, unknown_clipper};

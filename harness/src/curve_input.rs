@@ -114,7 +114,7 @@ pub fn parse_curve_text(text: &str) -> Result<Option<Vec<CurveObject>>, String> 
 /// `arc: {start, sweep}` (degrees) and `filled` (default true for whole curves). `None` when no
 /// feature has a curve property.
 pub fn parse_curve_geojson(text: &str) -> Result<Option<Vec<CurveObject>>, String> {
-    let json: Value = serde_json::from_str(text).map_err(|e| format!("not valid GeoJSON: {e}"))?;
+    let json: Value = serde_json::from_str(text).map_err(crate::read::not_valid_geojson)?;
     let features: Vec<&Value> = match json.get("type").and_then(Value::as_str) {
         Some("FeatureCollection") => {
             json.get("features").and_then(Value::as_array).map(|f| f.iter().collect()).unwrap_or_default()

@@ -131,16 +131,21 @@ pub fn parse_wkt(text: &str) -> Result<Parsed, String> {
     Ok(Parsed { geometries: vec![Placed::whole(geometry)], dropped })
 }
 
-/// Parses GeoJSON text into its geometries: a FeatureCollection's one per feature with a
-/// geometry (a feature whose geometry is null holds nothing), else the one.
-fn parse_geojson(text: &str) -> Result<Parsed, String> {
-    let json = geojson::GeoJson::from_str(text).map_err(|e| match e.to_string() {
+/// The message for GeoJSON text that does not parse, for every reader of GeoJSON.
+pub fn not_valid_geojson(e: impl std::fmt::Display) -> String {
+    match e.to_string() {
         // serde_json stops at 128 levels rather than overflow the stack: say what the limit is.
         e if e.contains("recursion limit exceeded") => {
             format!("not valid GeoJSON: nested deeper than 128 levels ({e})")
         }
         e => format!("not valid GeoJSON: {e}"),
-    })?;
+    }
+}
+
+/// Parses GeoJSON text into its geometries: a FeatureCollection's one per feature with a
+/// geometry (a feature whose geometry is null holds nothing), else the one.
+fn parse_geojson(text: &str) -> Result<Parsed, String> {
+    let json = geojson::GeoJson::from_str(text).map_err(not_valid_geojson)?;
     let found: Vec<(Place, Option<&geojson::Geometry>)> = match &json {
         geojson::GeoJson::FeatureCollection(fc) => fc
             .features
