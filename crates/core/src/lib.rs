@@ -56,7 +56,8 @@ mod window_rings;
 
 pub use area::signed_area;
 pub use clipper::{
-    LineCapabilities, LineClipper, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece, WindowKind,
+    LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
+    WindowKind,
 };
 pub use error::{
     ClipError, MAX_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,

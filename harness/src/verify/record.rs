@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use super::finding::{Finding, Kind, window_name};
 use super::polygon_runs::takes;
 use super::recheck::{Target, line_failure, polygon_failure};
-use crate::checks::{Check, run_line, run_polygon};
+use crate::checks::{Check, output_rules, run_line, run_polygon};
 use crate::cli_error::CliError;
 use crate::registry::Registry;
 use crate::write::write_file;
@@ -144,7 +144,8 @@ fn polygon_files(
         ("clip.wkt".to_owned(), polygons_to_wkt(&clip, false) + "\n"),
     ];
     for e in registry.polygon.iter().filter(|e| takes(e.clipper.capabilities().window, finding.window)) {
-        let bridged = e.clipper.capabilities().bridges;
+        // Outputs read under the input's rule keep their orientation in the WKT.
+        let bridged = !output_rules(e, &subject, fill).conventional;
         for &op in ops.iter().filter(|&&op| e.clipper.capabilities().supports(op, fill)) {
             let label = if ops.len() == 1 { e.clipper.name().to_owned() } else { format!("{}-{op}", e.clipper.name()) };
             let text = match run_polygon(e, &subject, &clip, op, fill) {
