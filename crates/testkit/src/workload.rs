@@ -3,10 +3,12 @@
 mod degenerate_lines;
 mod hard_cases;
 mod shapes;
+mod text;
 mod wang;
 mod windows;
 
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
+pub use text::{TEXT_CHARSET, TextCase, text_case};
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};
@@ -24,6 +26,9 @@ pub const FAR_OFFSET: Point = Point::new(1.0e9, 1.0e9);
 
 /// The line workloads, by name.
 pub const LINE_WORKLOADS: &[&str] = &["wang-t4", "lines-degenerate"];
+
+/// The text workloads, by name: strings, sizes, positions and windows for clip-text's strategies.
+pub const TEXT_WORKLOADS: &[&str] = &["text"];
 
 /// The subject sizes of Vatti's Table 3.
 pub const VATTI_EDGES: [usize; 6] = [4, 10, 20, 40, 100, 200];
