@@ -25,7 +25,8 @@ pub struct Glyph {
 /// What a glyph draws.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
-    /// Flattened contours, read under non-zero (TrueType's rule).
+    /// Flattened contours, read under non-zero (TrueType's rule), turned so the glyph's signed
+    /// area is positive (outer contours counter-clockwise).
     Outline(Polygons),
     /// Lit pixels `(i, j)`, each the square `[i, i + 1) x [j, j + 1)`.
     Pixels(Vec<(i64, i64)>),
@@ -79,7 +80,13 @@ impl Text {
             let mut flattener = Flattener::new(scale, pen, tolerance);
             // A glyph with no outline (a space) draws nothing.
             let _ = face.outline_glyph(id, &mut flattener);
-            let shape = Polygons::new(flattener.rings);
+            // TrueType runs outer contours clockwise, CFF counter-clockwise: turn each glyph so its
+            // outers run counter-clockwise, as a polygon clipper's output does, so a kept glyph and
+            // a clipped piece that overlap add up under non-zero instead of cancelling.
+            let mut shape = Polygons::new(flattener.rings);
+            if shape.signed_area() < 0.0 {
+                shape = Polygons::new(shape.rings.iter().map(|r| r.reversed()).collect());
+            }
             let bounds = shape.bounds();
             glyphs.push(Glyph { ch, shape: Shape::Outline(shape), bounds });
             pen.x += scale * f64::from(face.glyph_hor_advance(id).unwrap_or(0));

@@ -65,3 +65,17 @@ fn a_wrong_output_is_caught() {
     chars.kept.push(cut);
     assert!(check_clipped_text(&text, &window, Strategy::Character, &chars).is_err());
 }
+
+/// `text` case 2070 of seed 1: the underscore, kept whole, overlaps a neighbour the window cuts.
+/// Glyphs are turned counter-clockwise like the clipper's pieces, so the overlap adds up instead
+/// of cancelling to a hole.
+#[test]
+fn a_kept_glyph_overlapping_a_clipped_one_stays_filled() {
+    let font = common::dejavu();
+    let case = text_case(1, 2070);
+    let window = TextWindow::new(&case.window).unwrap();
+    let text = Text::outline(&font, &case.string, case.size, case.origin, DEFAULT_TOLERANCE).unwrap();
+    assert!(text.glyphs.iter().all(|g| !matches!(&g.shape, clip_text::Shape::Outline(p) if p.signed_area() < 0.0)));
+    let clipped = clip_text(&text, &window, Strategy::Components, &Vatti).unwrap();
+    check_clipped_text(&text, &window, Strategy::Components, &clipped).unwrap();
+}

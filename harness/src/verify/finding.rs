@@ -14,6 +14,8 @@ pub enum Kind {
     Polygon,
     /// Line clipping against a window.
     Line,
+    /// Text clipping (clip-text's strategies).
+    Text,
 }
 
 impl Kind {
@@ -22,6 +24,7 @@ impl Kind {
         match self {
             Kind::Polygon => "polygon",
             Kind::Line => "line",
+            Kind::Text => "text",
         }
     }
 }

@@ -9,13 +9,15 @@ mod recheck;
 mod record;
 mod replay;
 mod summary;
+mod text_runs;
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clip_core::{BoolOp, FillRule};
-use clip_testkit::workload::{LINE_WORKLOADS, POLYGON_WORKLOADS};
+use clip_testkit::workload::{LINE_WORKLOADS, POLYGON_WORKLOADS, TEXT_WORKLOADS};
+use clip_text::{DEJAVU_SANS, OutlineFont};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 
@@ -23,6 +25,7 @@ use self::finding::{CaseOutcome, Finding};
 use self::line_runs::LinePlan;
 use self::polygon_runs::PolygonPlan;
 use self::summary::{Row, Summary, table};
+use self::text_runs::{TEXT_STRATEGIES, TextPlan};
 use crate::cli_error::CliError;
 use crate::registry::{Origin, Registry};
 use crate::write::write_file;
@@ -30,7 +33,8 @@ use crate::write::write_file;
 /// Arguments of `clipbench verify`.
 #[derive(Debug, clap::Args)]
 pub struct VerifyArgs {
-    /// Clipper to verify (repeat for several; default: every registered clipper).
+    /// Clipper to verify (repeat for several; default: every registered clipper). The text
+    /// workload's rows are named text-string, text-char, text-outline and text-bitmap.
     #[arg(long = "clipper", value_name = "NAME")]
     pub clippers: Vec<String>,
     /// Workload to run (repeat for several; default: every workload). Polygon workloads run
@@ -74,8 +78,20 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
     if let Some(path) = &args.replay {
         return replay::replay(path, &registry);
     }
-    let registry = registry.select(&args.clippers)?;
+    // Text strategies are named beside the registry's clippers; naming only them selects no clipper.
+    let (text_names, clipper_names): (Vec<String>, Vec<String>) =
+        args.clippers.iter().cloned().partition(|n| TEXT_STRATEGIES.contains(&n.as_str()));
+    let registry = if !text_names.is_empty() && clipper_names.is_empty() {
+        Registry::default()
+    } else {
+        registry.select(&clipper_names)?
+    };
     let workloads = select_workloads(&args.workloads)?;
+    let text_names: Vec<&'static str> =
+        TEXT_STRATEGIES.into_iter().filter(|n| args.clippers.is_empty() || text_names.iter().any(|t| t == n)).collect();
+    let wants_text = !text_names.is_empty() && workloads.iter().any(|w| TEXT_WORKLOADS.contains(w));
+    let text =
+        TextPlan { font: if wants_text { Some(load_dejavu()?) } else { None }, names: text_names, seed: args.seed };
     let polygon = PolygonPlan {
         entries: registry.polygon.iter().collect(),
         ops: if args.ops.is_empty() { BoolOp::ALL.to_vec() } else { args.ops.clone() },
@@ -86,7 +102,15 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
     // Work items in a fixed order: (workload, case index).
     let items: Vec<(&'static str, usize)> = workloads
         .iter()
-        .filter(|w| if POLYGON_WORKLOADS.contains(w) { !polygon.entries.is_empty() } else { !line.entries.is_empty() })
+        .filter(|w| {
+            if POLYGON_WORKLOADS.contains(w) {
+                !polygon.entries.is_empty()
+            } else if TEXT_WORKLOADS.contains(w) {
+                !text.names.is_empty()
+            } else {
+                !line.entries.is_empty()
+            }
+        })
         .flat_map(|&w| (0..args.cases).map(move |i| (w, i)))
         .collect();
     if items.is_empty() {
@@ -101,7 +125,13 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         items
             .par_iter()
             .map(|&(w, i)| {
-                let outcome = if POLYGON_WORKLOADS.contains(&w) { polygon.run(w, i) } else { line.run(w, i) };
+                let outcome = if POLYGON_WORKLOADS.contains(&w) {
+                    polygon.run(w, i)
+                } else if TEXT_WORKLOADS.contains(&w) {
+                    text.run(w, i)
+                } else {
+                    line.run(w, i)
+                };
                 progress.inc(1);
                 outcome
             })
@@ -130,13 +160,14 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         .filter(|e| e.origin == Origin::Ours)
         .map(|e| e.clipper.name())
         .chain(registry.line.iter().filter(|e| e.origin == Origin::Ours).map(|e| e.clipper.name()))
+        .chain(text.names.iter().copied())
         .collect();
     let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures > 0);
 
     // Shrink and write the first failures of each clipper and workload.
     let (chosen, skipped) = choose(&findings, args.max_records);
     let records: Vec<Result<record::Record, String>> = pool.install(|| {
-        chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &args.out)).collect()
+        chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &args.out, &text)).collect()
     });
     let mut written = Vec::new();
     for r in records {
@@ -178,9 +209,17 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
     }
 }
 
+/// DejaVu Sans, which the text workload's outline rows draw with.
+fn load_dejavu() -> Result<OutlineFont, CliError> {
+    OutlineFont::from_file(std::path::Path::new(DEJAVU_SANS)).map_err(|e| {
+        CliError::failed(format!("the text workload needs DejaVu Sans (Debian package fonts-dejavu-core): {e}"))
+    })
+}
+
 /// The workloads named (all when none), or a usage error listing the valid names.
 fn select_workloads(names: &[String]) -> Result<Vec<&'static str>, CliError> {
-    let all: Vec<&'static str> = POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).copied().collect();
+    let all: Vec<&'static str> =
+        POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).chain(TEXT_WORKLOADS).copied().collect();
     if names.is_empty() {
         return Ok(all);
     }

@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 use super::finding::{Finding, Kind, window_name};
 use super::polygon_runs::takes;
 use super::recheck::{Target, line_failure, polygon_failure};
+use super::text_runs::TextPlan;
 use crate::checks::{Check, output_rules, run_line, run_polygon};
 use crate::cli_error::CliError;
 use crate::registry::Registry;
@@ -85,6 +86,7 @@ pub fn record(
     segments: usize,
     finding: &Finding,
     out: &Path,
+    text: &TextPlan,
 ) -> Result<Record, String> {
     let folder = finding.folder_name();
     let case_path = out.join(&folder).join("case.json");
@@ -115,10 +117,26 @@ pub fn record(
     let mut files = match finding.kind {
         Kind::Polygon => polygon_files(registry, seed, finding, target, &mut case)?,
         Kind::Line => line_files(registry, (seed, segments), finding, target, &mut case)?,
+        Kind::Text => text_files(seed, finding, text, &mut case),
     };
     files.push(("case.json".into(), serde_json::to_string_pretty(&case).map_err(|e| e.to_string())? + "\n"));
     files.push(("replay.txt".into(), case.replay.clone() + "\n"));
     Ok(Record { folder, files })
+}
+
+/// A text failure is not shrunk: the case (string, size, origin) is in the message, the window
+/// is saved, and `--replay` regenerates the case from its seed and index.
+fn text_files(seed: u64, finding: &Finding, text: &TextPlan, case: &mut CaseFile) -> Vec<(String, String)> {
+    let generated = clip_testkit::workload::text_case(seed, finding.index);
+    let still = text.failures(finding.clipper, finding.index).into_iter().flatten().next();
+    case.shrunk = still.unwrap_or_else(|| "passes when rerun".into());
+    case.generated_vertices = [generated.window.vertex_count(), generated.string.chars().count()];
+    case.shrunk_vertices = case.generated_vertices;
+    case.inputs = ["window.wkt".into(), "string.txt".into()];
+    vec![
+        ("window.wkt".into(), polygons_to_wkt(&generated.window, false) + "\n"),
+        ("string.txt".into(), generated.string + "\n"),
+    ]
 }
 
 fn polygon_files(

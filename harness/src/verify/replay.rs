@@ -7,6 +7,7 @@ use clip_core::{BoolOp, FillRule, Operand};
 
 use super::recheck::{Target, line_failure, polygon_failure};
 use super::record::CaseFile;
+use super::text_runs::{TEXT_STRATEGIES, TextPlan};
 use crate::checks::Check;
 use crate::cli_error::{CliError, InputError};
 use crate::read::{read_polygons, read_segments};
@@ -18,6 +19,9 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
     let case: CaseFile =
         serde_json::from_str(&text).map_err(|e| InputError::new(path, format!("not a verify case file: {e}")))?;
     let dir = path.parent().unwrap_or(Path::new("."));
+    if case.kind == "text" {
+        return replay_text(&case);
+    }
     let known = |name: &str| {
         registry.names().into_iter().find(|n| *n == name).ok_or_else(|| unknown_clipper(name, &registry.names()))
     };
@@ -59,6 +63,27 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
         case.fill.map(|f| format!(", {f}")).unwrap_or_default(),
     );
     match failure {
+        Some(message) => {
+            println!("still fails: {what}: {message}");
+            Ok(ExitCode::FAILURE)
+        }
+        None => {
+            println!("passes now: {what}");
+            Ok(ExitCode::SUCCESS)
+        }
+    }
+}
+
+/// Replays a text failure: the case regenerated from its seed and index, the strategy rerun.
+fn replay_text(case: &CaseFile) -> Result<ExitCode, CliError> {
+    let name = TEXT_STRATEGIES.into_iter().find(|n| *n == case.clipper).ok_or_else(|| {
+        CliError::usage(format!("unknown text row '{}' ({})", case.clipper, TEXT_STRATEGIES.join(", ")))
+    })?;
+    let font = clip_text::OutlineFont::from_file(Path::new(clip_text::DEJAVU_SANS))
+        .map_err(|e| CliError::failed(e.to_string()))?;
+    let plan = TextPlan { font: Some(font), names: vec![name], seed: case.seed };
+    let what = format!("text {} ({} case {} of seed {})", case.clipper, case.workload, case.index, case.seed);
+    match plan.failures(name, case.index).into_iter().flatten().next() {
         Some(message) => {
             println!("still fails: {what}: {message}");
             Ok(ExitCode::FAILURE)
