@@ -20,6 +20,8 @@ mod registry;
 mod report;
 mod reproduce;
 mod results_files;
+mod text_cmd;
+mod text_svg;
 mod verify;
 mod write;
 
@@ -57,6 +59,8 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Recompute the tables and plots from the raw CSVs of a results folder into REPORT.md.
     Report(report::ReportArgs),
+    /// One string clipped to a window by one of the lecture's text strategies, drawn as SVG.
+    Text(text_cmd::TextArgs),
 }
 
 fn main() -> ExitCode {
@@ -70,6 +74,7 @@ fn main() -> ExitCode {
         Command::Reproduce(args) => reproduce_then_report(args),
         Command::Bench(args) => bench_then_report(args, &registry),
         Command::Report(args) => report::run(args),
+        Command::Text(args) => text_cmd::run(args).map(|()| ExitCode::SUCCESS),
     };
     match result {
         Ok(code) => code,
