@@ -94,6 +94,7 @@ fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, Cl
         match table {
             reproduce::Table::VattiTable3 => report::table3::write(&plan.out)?,
             reproduce::Table::WangTable4 => report::table4::write(&plan.out)?,
+            reproduce::Table::Lecture => report::lecture_text::write(&plan.out)?,
         }
     }
     report::write_report(&plan.out)?;

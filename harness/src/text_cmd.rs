@@ -73,7 +73,9 @@ pub fn run(args: &TextArgs) -> Result<(), CliError> {
         "vatti" => &Vatti,
         "sutherland-hodgman-split" => &SutherlandHodgman::SPLIT,
         other => {
-            return Err(CliError::usage(format!("unknown outline clipper '{other}' (vatti, sutherland-hodgman-split)")));
+            return Err(CliError::usage(format!(
+                "unknown outline clipper '{other}' (vatti, sutherland-hodgman-split)"
+            )));
         }
     };
     let text = match args.strategy {

@@ -3,6 +3,8 @@
 
 pub mod bench_tables;
 pub mod document;
+pub mod lecture_sh;
+pub mod lecture_text;
 pub mod markdown;
 mod provenance_line;
 pub mod table3;
@@ -34,6 +36,7 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     table3::write(&out)?;
     table4::write(&out)?;
     bench_tables::write(&out)?;
+    lecture_text::write(&out)?;
     write_report(&out)?;
     Ok(ExitCode::SUCCESS)
 }

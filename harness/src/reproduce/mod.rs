@@ -1,6 +1,7 @@
 //! `clipbench reproduce`: the papers' performance tables measured here, written as raw CSV (and
 //! sidecars); `report` turns them into markdown tables and plots beside the papers' own numbers.
 
+pub mod lecture;
 mod pixel_check;
 mod table3;
 mod table4;
@@ -11,13 +12,14 @@ use crate::cli_error::CliError;
 use crate::measure::out_dir::ready_out_dir;
 
 /// The tables `reproduce` knows, by name.
-pub const TABLES: [&str; 3] = ["vatti-table3", "wang-table4", "all"];
+pub const TABLES: [&str; 4] = ["vatti-table3", "wang-table4", "lecture", "all"];
 
 /// Arguments of `clipbench reproduce`.
 #[derive(Debug, clap::Args)]
 pub struct ReproduceArgs {
-    /// Which table: vatti-table3 (Vatti 1992, Table 3), wang-table4 (Wang et al. 2005, Table 4)
-    /// or all.
+    /// Which table: vatti-table3 (Vatti 1992, Table 3), wang-table4 (Wang et al. 2005, Table 4),
+    /// all (both papers' tables), or lecture (the lecture notes' figures redrawn, and what the text
+    /// strategies cost).
     #[arg(value_name = "TABLE")]
     pub table: String,
     /// The papers' repetition counts (1000 per point) instead of a quick run's.
@@ -41,6 +43,8 @@ pub enum Table {
     VattiTable3,
     /// Wang et al. 2005, Table 4.
     WangTable4,
+    /// The lecture notes' figures (Figs. 6-24, 6-28 to 6-30) and the text strategies' cost.
+    Lecture,
 }
 
 /// What a run is asked to do: its tables in measuring order, and the output folder, made ready.
@@ -58,6 +62,7 @@ pub fn plan(args: &ReproduceArgs) -> Result<Plan, CliError> {
         "vatti-table3" => vec![Table::VattiTable3],
         "wang-table4" => vec![Table::WangTable4],
         "all" => vec![Table::VattiTable3, Table::WangTable4],
+        "lecture" => vec![Table::Lecture],
         other => {
             return Err(CliError::usage(format!("unknown table '{other}' (valid: {})", TABLES.join(", "))));
         }
@@ -74,5 +79,6 @@ pub fn measure(table: Table, args: &ReproduceArgs, out: &Path) -> Result<(), Cli
     match table {
         Table::VattiTable3 => table3::measure(&table3::Settings::new(args.seed, args.full, args.repetitions), out),
         Table::WangTable4 => table4::measure(&table4::Settings::new(args.seed, args.full, args.repetitions), out),
+        Table::Lecture => lecture::measure(args.seed, lecture::rounds(args.full, args.repetitions), out),
     }
 }

@@ -2,5 +2,7 @@
 //! `reproduce`, read by `report`, so neither side imports the other.
 
 pub mod bench;
+pub mod lecture_sh;
+pub mod lecture_text;
 pub mod vatti_table3;
 pub mod wang_table4;
