@@ -33,14 +33,9 @@ impl Check {
     }
 }
 
-/// How the oracle reads a polygon clipper's output under input fill rule `fill`.
-pub fn output_rules(entry: &PolygonEntry, fill: FillRule) -> OutputRules {
-    let bridged = entry.clipper.capabilities().bridges;
-    OutputRules {
-        conventional: !bridged,
-        output_fill: if bridged { fill } else { FillRule::NonZero },
-        relative_tolerance: entry.tolerance,
-    }
+/// How the oracle reads a polygon clipper's output on `subject` under input fill rule `fill`.
+pub fn output_rules(entry: &PolygonEntry, subject: &Polygons, fill: FillRule) -> OutputRules {
+    OutputRules::for_form(entry.clipper.capabilities().output, subject, fill, entry.tolerance)
 }
 
 thread_local! {
@@ -99,7 +94,8 @@ pub fn polygon_oracle(
     fill: FillRule,
     output: &Polygons,
 ) -> Result<f64, String> {
-    check_polygon_result(subject, clip, op, fill, output, &output_rules(entry, fill)).map_err(|f| f.to_string())
+    check_polygon_result(subject, clip, op, fill, output, &output_rules(entry, subject, fill))
+        .map_err(|f| f.to_string())
 }
 
 /// The area identities on the four operations' results; `operands` are |A| and |B| under `fill`
@@ -112,7 +108,7 @@ pub fn area_identities(
     operands: (f64, f64),
     outputs: &[(BoolOp, &Polygons)],
 ) -> Result<(), String> {
-    let rules = output_rules(entry, fill);
+    let rules = output_rules(entry, subject, fill);
     let tol = tolerance(subject, clip, rules.relative_tolerance);
     check_area_identities_given(operands, tol, outputs, &rules).map_err(|f| f.to_string())
 }
@@ -135,7 +131,7 @@ pub fn polygons_agree(
     if off_exact.is_some_and(|(a, b)| a + b <= allowed) {
         return Ok(());
     }
-    let read = |e: &PolygonEntry| output_rules(e, fill).output_fill;
+    let read = |e: &PolygonEntry| output_rules(e, subject, fill).output_fill;
     same_region((x.1, read(x.0)), (y.1, read(y.0)), allowed).map_err(|area| {
         format!(
             "{} and {} differ by region: symmetric difference area {area:e} > tolerance {allowed:e}",

@@ -28,5 +28,7 @@ pub mod registry;
 pub mod report;
 pub mod reproduce;
 pub mod results_files;
+pub mod text_cmd;
+pub mod text_svg;
 pub mod verify;
 pub mod write;

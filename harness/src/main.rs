@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand};
 
 use clipbench::cli_error::CliError;
 use clipbench::registry::Registry;
-use clipbench::{bench, checks, clip, conformance, external, registry, report, reproduce, verify};
+use clipbench::{bench, checks, clip, conformance, external, registry, report, reproduce, text_cmd, verify};
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
 /// Clipper2), and one-off clipping of WKT/GeoJSON files.
@@ -36,6 +36,8 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Recompute the tables and plots from the raw CSVs of a results folder into REPORT.md.
     Report(report::ReportArgs),
+    /// One string clipped to a window by one of the lecture's text strategies, drawn as SVG.
+    Text(text_cmd::TextArgs),
 }
 
 fn main() -> ExitCode {
@@ -55,6 +57,7 @@ fn main() -> ExitCode {
         Command::Reproduce(args) => reproduce_then_report(args),
         Command::Bench(args) => bench_then_report(args, registry),
         Command::Report(args) => report::run(args),
+        Command::Text(args) => text_cmd::run(args).map(|()| ExitCode::SUCCESS),
     };
     match result {
         Ok(code) => code,
@@ -75,7 +78,10 @@ fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, Cl
             reproduce::Table::VattiTable3 => report::table3::write(&plan.out)?,
             reproduce::Table::WangTable4 => report::table4::write(&plan.out)?,
             reproduce::Table::BeyondPaper => report::beyond_paper::write(&plan.out)?,
-            reproduce::Table::Lecture => report::lecture_curves::write(&plan.out)?,
+            reproduce::Table::Lecture => {
+                report::lecture_curves::write(&plan.out)?;
+                report::lecture_text::write(&plan.out)?;
+            }
         }
     }
     report::write_report(&plan.out)?;

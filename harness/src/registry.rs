@@ -35,6 +35,7 @@ pub fn registry() -> Registry {
     Registry::default()
         .polygon(Origin::Ours, REGION_TOLERANCE, Vatti)
         .polygon(Origin::Ours, REGION_TOLERANCE, SutherlandHodgman::default())
+        .polygon(Origin::Ours, REGION_TOLERANCE, SutherlandHodgman::SPLIT)
         .polygon(Origin::Ours, REGION_TOLERANCE, FourState)
         .line(Origin::Ours, LINE_TOLERANCE, CyrusBeck)
         .line(Origin::Ours, LINE_TOLERANCE, Liu)

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::str::FromStr;
 
-use clip_testkit::workload::{CURVE_WORKLOADS, LINE_WORKLOADS, POLYGON_WORKLOADS};
+use clip_testkit::workload::{CURVE_WORKLOADS, LINE_WORKLOADS, POLYGON_WORKLOADS, TEXT_WORKLOADS};
 
 fn clipbench(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_clipbench")).args(args).output().expect("the clipbench binary runs")
@@ -372,6 +372,7 @@ fn verify_passes_every_clipper_of_ours_on_every_workload() {
     let ours = [
         "vatti",
         "sutherland-hodgman",
+        "sutherland-hodgman-split",
         "rect-four-state",
         "cyrus-beck",
         "liu",
@@ -379,12 +380,17 @@ fn verify_passes_every_clipper_of_ours_on_every_workload() {
         "virtual-box-no45",
         "curve",
         "curve-no-tests",
+        "text-string",
+        "text-char",
+        "text-outline",
+        "text-bitmap",
     ];
     // Every workload the testkit names, so a new one is verified here from the day it exists.
     let small: Vec<&str> = POLYGON_WORKLOADS
         .iter()
         .chain(LINE_WORKLOADS)
         .chain(CURVE_WORKLOADS)
+        .chain(TEXT_WORKLOADS)
         .copied()
         .filter(|&w| w != "large")
         .collect();
@@ -615,5 +621,79 @@ fn an_empty_operand_is_the_empty_region() {
         let o = clipbench(&["clip", "--clipper", peer, "--op", "union", &subject, &empty]);
         assert!(o.status.success(), "{peer}: {}", stderr(&o));
         assert!((wkt_area(&stdout(&o)) - 4.0).abs() < 1e-9, "{peer}: {}", stdout(&o));
+    }
+}
+
+/// `clipbench text`: each strategy writes a picture; bad input exits 2 with a one-line message.
+#[test]
+fn text_draws_each_strategy_and_refuses_bad_input() {
+    let dir = scratch("text");
+    let font = clip_text::DEJAVU_SANS;
+    let window = "POLYGON((30 0, 150 0, 150 60, 30 60, 30 0))";
+    for (strategy, kept) in [("string", "0 of 8"), ("char", "6 of 8"), ("outline", "6 of 8"), ("bitmap", "2 of 8")] {
+        let svg = dir.join(format!("{strategy}.svg"));
+        let mut args = vec!["text", "Clipping", "--size", "40", "--at", "10,20", "--window", window];
+        args.extend(["--strategy", strategy, "-o", svg.to_str().unwrap()]);
+        if strategy != "bitmap" {
+            args.extend(["--font", font]);
+        }
+        let o = clipbench(&args);
+        assert!(o.status.success(), "{strategy}: {}", stderr(&o));
+        assert!(stdout(&o).starts_with(kept), "{strategy}: {}", stdout(&o));
+        assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"), "{strategy}");
+    }
+    let out = dir.join("bad.svg");
+    let out = out.to_str().unwrap();
+    let bad: [(&[&str], &str); 7] = [
+        (&["text", "", "--font", font, "--size", "20", "--window", window, "--strategy", "char", "-o", out], "empty"),
+        (
+            &[
+                "text",
+                "a",
+                "--font",
+                "no-such.ttf",
+                "--size",
+                "20",
+                "--window",
+                window,
+                "--strategy",
+                "char",
+                "-o",
+                out,
+            ],
+            "no-such.ttf",
+        ),
+        (&["text", "a", "--font", font, "--size", "inf", "--window", window, "--strategy", "char", "-o", out], "size"),
+        (
+            &["text", "a", "--font", font, "--size", "-2", "--window", window, "--strategy", "outline", "-o", out],
+            "size",
+        ),
+        (
+            &["text", "a\u{E000}", "--font", font, "--size", "20", "--window", window, "--strategy", "char", "-o", out],
+            "no glyph",
+        ),
+        (&["text", "é", "--size", "20", "--window", window, "--strategy", "bitmap", "-o", out], "no glyph"),
+        (
+            &[
+                "text",
+                "a",
+                "--font",
+                font,
+                "--size",
+                "20",
+                "--window",
+                "POLYGON((0 0, 1 1, 2 2, 0 0))",
+                "--strategy",
+                "char",
+                "-o",
+                out,
+            ],
+            "degenerate",
+        ),
+    ];
+    for (args, says) in bad {
+        let o = clipbench(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains(says) && stderr(&o).lines().count() == 1, "{args:?}: {}", stderr(&o));
     }
 }

@@ -25,6 +25,21 @@ impl WindowKind {
     }
 }
 
+/// How a polygon clipper's output is to be read (docs/DESIGN.md, "Polygon output" and "Window
+/// clippers and bridges").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum OutputForm {
+    /// Conventional output, read under non-zero, whatever the input.
+    Conventional,
+    /// Each subject ring clipped on its own and kept in its orientation: read under the input's
+    /// fill rule; rings may overlap (Sutherland-Hodgman, four-state, Clipper2's RectClip).
+    InputRule,
+    /// Winding numbers kept, so read under the input's fill rule; and conventional output when
+    /// the subject is itself in conventional form and the rule reads it as its winding-1 region
+    /// (any rule but negative): `sutherland-hodgman-split`.
+    ConventionalForConventionalSubject,
+}
+
 /// What a polygon clipper can do, so the harness runs it only where it applies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PolygonCapabilities {
@@ -39,6 +54,8 @@ pub struct PolygonCapabilities {
     /// True when its output may keep zero-width bridges along the window (Sutherland-Hodgman,
     /// the four-state clipper): such output is compared by region, not checked for simplicity.
     pub bridges: bool,
+    /// How its output is read.
+    pub output: OutputForm,
 }
 
 impl PolygonCapabilities {
@@ -50,6 +67,7 @@ impl PolygonCapabilities {
         window: WindowKind::Any,
         trapezoids: false,
         bridges: false,
+        output: OutputForm::Conventional,
     };
 
     /// A window clipper (Sutherland-Hodgman, four-state, Clipper2's RectClip): intersection
@@ -62,6 +80,7 @@ impl PolygonCapabilities {
             window,
             trapezoids: false,
             bridges: true,
+            output: OutputForm::InputRule,
         }
     }
 

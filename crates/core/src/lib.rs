@@ -61,7 +61,8 @@ mod window_rings;
 
 pub use area::signed_area;
 pub use clipper::{
-    LineCapabilities, LineClipper, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece, WindowKind,
+    LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
+    WindowKind,
 };
 pub use curve_region::{BoundaryPiece, CurveRegion};
 pub use ellipse::{Ellipse, EllipseArc, MIN_AXIS_RATIO, MIN_RADIUS_TO_CENTRE};

@@ -60,8 +60,9 @@
 //!   [`GEO_TOLERANCE`] for libraries that snap to a grid. Membership at sample points and the line
 //!   oracle's in/out decisions are exact. Sample points within a margin of any edge are skipped, so
 //!   a wrong answer thinner than the margin is caught by area only.
-//! - Output validity allows rings to touch at points and different rings to share an edge; it
-//!   rejects proper crossings, crossings at a shared point, and a ring overlapping itself.
+//! - Output validity allows rings to touch at points and different rings to share an edge (run
+//!   both ways); it rejects proper crossings, crossings at a shared point, a ring overlapping
+//!   itself, and two rings running the same way along an edge (their insides overlap).
 //! - [`region_area`] costs O(s m + k log k): s distinct vertex heights, m edges crossing a typical
 //!   horizontal line, k edge crossings (found as order inversions per slab). A 20-edge pair takes
 //!   tens of microseconds, a 200-edge pair about half a millisecond, two 10^5-vertex blobs tens of

@@ -10,10 +10,11 @@ mod validity;
 
 pub use region_area::{region_area, region_area_with_witness};
 pub use validity::{
-    bridge_count, bridge_count_within, check_valid_output, check_valid_output_within, check_valid_result_within,
+    bridge_count, bridge_count_along, bridge_count_within, check_valid_output, check_valid_output_within,
+    check_valid_result_within,
 };
 
-use clip_core::{BoolOp, FillRule, Point, Polygons, Rect};
+use clip_core::{BoolOp, FillRule, OutputForm, Point, Polygons, Rect};
 use core::fmt;
 use sampling::{PointClassifier, sample_points};
 
@@ -95,6 +96,30 @@ impl OutputRules {
     /// Bridged output, read under the input's fill rule.
     pub fn bridged(input_fill: FillRule, relative_tolerance: f64) -> OutputRules {
         OutputRules { conventional: false, output_fill: input_fill, relative_tolerance }
+    }
+
+    /// The rules for a clipper whose output takes `form`, on `subject` read under `input_fill`.
+    /// [`OutputForm::ConventionalForConventionalSubject`] is checked as conventional output when
+    /// the subject passes [`check_valid_output`] (exactly) and the rule is not negative (which
+    /// reads a conventional subject as empty), and by region under the input's rule otherwise.
+    pub fn for_form(
+        form: OutputForm,
+        subject: &Polygons,
+        input_fill: FillRule,
+        relative_tolerance: f64,
+    ) -> OutputRules {
+        let conventional = match form {
+            OutputForm::Conventional => true,
+            OutputForm::InputRule => false,
+            OutputForm::ConventionalForConventionalSubject => {
+                input_fill != FillRule::Negative && check_valid_output(subject).is_ok()
+            }
+        };
+        if conventional {
+            OutputRules::conventional(relative_tolerance)
+        } else {
+            OutputRules::bridged(input_fill, relative_tolerance)
+        }
     }
 }
 

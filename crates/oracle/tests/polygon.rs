@@ -211,6 +211,44 @@ fn bridges_are_counted_and_compared_by_region() {
 }
 
 #[test]
+fn rings_sharing_an_edge_must_run_it_both_ways() {
+    // Two squares side by side share x = 1, one going up and one down: fine.
+    let side_by_side =
+        Polygons::new(vec![Rect::new(0.0, 0.0, 1.0, 1.0).to_ring(), Rect::new(1.0, 0.0, 2.0, 1.0).to_ring()]);
+    check_valid_output(&side_by_side).unwrap();
+    // Two overlapping squares sharing the bottom edge the same way overlap without crossing.
+    let overlapping =
+        Polygons::new(vec![Rect::new(0.0, 0.0, 2.0, 1.0).to_ring(), Rect::new(0.0, 0.0, 1.0, 2.0).to_ring()]);
+    let Err(PolygonFailure::Invalid(why)) = check_valid_output(&overlapping) else {
+        panic!("accepted overlapping rings")
+    };
+    assert!(why.contains("same way"), "{why}");
+}
+
+#[test]
+fn bridges_along_the_window_exclude_the_subjects_own_spikes() {
+    // The bridge of the test above lies along the window's bottom side; a spike inside is not one.
+    let bridged_with_spike = Polygons::from(ring(&[
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 1.0),
+        (3.0, 1.0),
+        (3.0, 0.0),
+        (1.0, 0.0),
+        (1.0, 0.5),
+        (2.0, 0.5),
+        (1.0, 0.5),
+        (1.0, 1.0),
+        (0.0, 1.0),
+    ]));
+    let window = rect(-1.0, 0.0, 5.0, 2.0);
+    assert_eq!(bridge_count(&bridged_with_spike), 2);
+    assert_eq!(bridge_count_along(&bridged_with_spike, &window, 0.0), 1);
+    assert_eq!(bridge_count_along(&bridged_with_spike, &rect(-1.0, -1.0, 5.0, 2.0), 0.0), 0);
+    assert_eq!(bridge_count_along(&bridged_with_spike, &window, 1e-9), 1);
+}
+
+#[test]
 fn tolerance_scales_with_the_inputs_box() {
     let (a, b, _) = squares();
     // 1e-9 of the [0,3]² box, on top of the rounding term (tested below).

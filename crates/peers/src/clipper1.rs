@@ -2,7 +2,7 @@
 
 use clip_clipper2_rect::IntegerGrid;
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Ring, WindowKind,
+    BoolOp, ClipError, FillRule, Operand, OutputForm, PolygonCapabilities, PolygonClipper, Polygons, Ring, WindowKind,
     validate_polygons,
 };
 use geo::{Coord, LineString, MultiPolygon, Polygon};
@@ -69,6 +69,7 @@ impl PolygonClipper for Clipper1Clipper {
             window: WindowKind::Any,
             trapezoids: false,
             bridges: false,
+            output: OutputForm::Conventional,
         }
     }
 

@@ -40,6 +40,14 @@ impl FrameBuffer {
         if i < self.width && j < self.height { self.pixels[j * self.width + i] } else { 0 }
     }
 
+    /// Sets pixel `(i, j)` to `value`; a pixel outside the buffer is skipped, as the fills skip
+    /// rows and columns outside it.
+    pub fn set(&mut self, i: usize, j: usize, value: u8) {
+        if i < self.width && j < self.height {
+            self.pixels[j * self.width + i] = value;
+        }
+    }
+
     /// All pixels, row by row.
     pub fn pixels(&self) -> &[u8] {
         &self.pixels

@@ -2,32 +2,39 @@
 
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, Point, PolygonCapabilities, PolygonClipper, Polygons, Ring, WindowKind,
-    validate_polygons, window_covers,
+    BoolOp, ClipError, FillRule, Operand, OutputForm, Point, PolygonCapabilities, PolygonClipper, Polygons, Ring,
+    WindowKind, validate_polygons, window_covers,
 };
 
 use crate::bridges::bridge_count;
 use crate::list_form::clip_list;
 use crate::pipeline::Pipeline;
+use crate::split::clip_split;
 use crate::window::ConvexWindow;
-use crate::{Form, NAME};
+use crate::{Form, Joins, NAME, SPLIT_NAME};
 
 /// Sutherland-Hodgman reentrant clipping of any subject against a convex window
-/// (intersection only), registered as `sutherland-hodgman`.
+/// (intersection only), registered as `sutherland-hodgman`, or with its pieces rejoined along the
+/// window as `sutherland-hodgman-split` ([`SutherlandHodgman::SPLIT`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SutherlandHodgman {
-    /// Which of the two equivalent forms runs.
+    /// Which of the two equivalent forms runs (the split mode always runs the list form).
     pub form: Form,
+    /// Whether the output lists keep their bridges or are split into separate rings.
+    pub joins: Joins,
 }
 
 impl SutherlandHodgman {
-    /// The clipper running the given form.
+    /// The split mode: output lists cut at the window and rejoined into separate rings.
+    pub const SPLIT: SutherlandHodgman = SutherlandHodgman { form: Form::List, joins: Joins::Split };
+
+    /// The clipper running the given form, keeping the bridges.
     pub fn new(form: Form) -> SutherlandHodgman {
-        SutherlandHodgman { form }
+        SutherlandHodgman { form, joins: Joins::Bridged }
     }
 
-    /// Clips and also returns how many zero-width bridges the output holds
-    /// (see [`crate::bridge_count`]).
+    /// Clips and also returns how many zero-width bridges Sutherland-Hodgman's lists hold
+    /// (see [`crate::bridge_count`]): those in the output, or in the split mode those it removed.
     pub fn clip_counting_bridges(&self, subject: &Polygons, clip: &Polygons) -> Result<(Polygons, usize), ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         let window = ConvexWindow::new(clip)?;
@@ -35,8 +42,12 @@ impl SutherlandHodgman {
     }
 
     /// Clips every ring of `subject` separately and keeps the rings that still enclose area,
-    /// each in its input orientation (so winding numbers inside the window are unchanged).
+    /// each in its input orientation (so winding numbers inside the window are unchanged); in
+    /// the split mode, rejoins the pieces along the window (winding numbers still unchanged).
     fn clip_rings(&self, subject: &Polygons, window: &ConvexWindow) -> Polygons {
+        if self.joins == Joins::Split {
+            return clip_split(subject, window, encloses_area);
+        }
         let rings =
             subject.rings.iter().filter_map(|r| encloses_area(Ring::new(clip_ring(r, window, self.form)))).collect();
         Polygons::new(rings)
@@ -45,15 +56,26 @@ impl SutherlandHodgman {
 
 impl PolygonClipper for SutherlandHodgman {
     fn name(&self) -> &'static str {
-        NAME
+        match self.joins {
+            Joins::Bridged => NAME,
+            Joins::Split => SPLIT_NAME,
+        }
     }
 
     fn capabilities(&self) -> PolygonCapabilities {
-        PolygonCapabilities::window_clipper(WindowKind::Convex)
+        let window_clipper = PolygonCapabilities::window_clipper(WindowKind::Convex);
+        match self.joins {
+            Joins::Bridged => window_clipper,
+            Joins::Split => PolygonCapabilities {
+                bridges: false,
+                output: OutputForm::ConventionalForConventionalSubject,
+                ..window_clipper
+            },
+        }
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        self.capabilities().check(NAME, op, fill)?;
+        self.capabilities().check(self.name(), op, fill)?;
         validate_polygons(subject, Operand::Subject)?;
         let window = ConvexWindow::new(clip)?;
         // Any fill rule: clipping to half-planes keeps every winding number inside the window, so

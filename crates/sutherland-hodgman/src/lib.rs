@@ -22,6 +22,7 @@
 //! | the four cases (out→in, in→in, in→out, out→out) | `stage::step` |
 //! | output vertex list | the returned `Vec<Point>`, one per subject ring |
 //! | extraneous lines of a concave subject | bridges, counted by [`bridge_count`] |
+//! | "check the final vertex list ... and correctly join pairs of vertices" | [`Joins::Split`] |
 //!
 //! # Limits and behaviour
 //!
@@ -40,6 +41,15 @@
 //!   apart, the single output list joins the pieces by zero-width **bridges** along the window.
 //!   They enclose no area, so the harness compares the output by region;
 //!   [`bridge_count`] (or [`SutherlandHodgman::clip_counting_bridges`]) says how many there are.
+//! - The notes' fix is the split mode ([`SutherlandHodgman::SPLIT`], [`Joins::Split`], registered
+//!   as `sutherland-hodgman-split`): every list is cut where it runs along the window and the
+//!   pieces of all lists are rejoined in pairs along the window boundary, so a hole the window
+//!   cuts becomes a notch in its outer. Winding numbers inside the window are kept exactly, so the
+//!   output is the same region under every fill rule; when the subject is in conventional form
+//!   (simple rings that do not cross, outers counter-clockwise, holes clockwise) the output is
+//!   conventional too. A subject that crosses itself gives rings that may cross: the split mode
+//!   removes bridges, it does not resolve crossings. It runs the list form; it costs a sort of the
+//!   pieces' ends along the window on top of the clip.
 //! - Decisions are exact (`orient2d`, Shewchuk's predicates). A point exactly on a boundary is
 //!   inside and is its own crossing (no repeated vertex). A crossing is computed from the edge's
 //!   endpoints in a canonical order, so an edge gives the same point whichever way it is walked;
@@ -64,6 +74,11 @@
 //!
 //! let piped = SutherlandHodgman::new(Form::Pipeline).clip(&subject, &window, BoolOp::Intersection, FillRule::NonZero);
 //! assert_eq!(piped.unwrap(), out);
+//!
+//! // The split mode returns the two arm tops as two rings, with no bridge.
+//! let split = SutherlandHodgman::SPLIT.clip(&subject, &window, BoolOp::Intersection, FillRule::NonZero).unwrap();
+//! assert_eq!(split.rings.len(), 2);
+//! assert_eq!(split.signed_area(), 2.0);
 //! ```
 
 #[cfg(doctest)]
@@ -75,6 +90,7 @@ mod bridges;
 mod clipper;
 mod list_form;
 mod pipeline;
+mod split;
 mod stage;
 mod vertex;
 mod window;
@@ -89,6 +105,23 @@ pub use window::ConvexWindow;
 
 /// The registry name.
 pub const NAME: &str = "sutherland-hodgman";
+
+/// The registry name of the split mode ([`SutherlandHodgman::SPLIT`]).
+pub const SPLIT_NAME: &str = "sutherland-hodgman-split";
+
+/// What becomes of an output list whose part inside the window falls apart.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Joins {
+    /// Kept as one list, its pieces joined by zero-width bridges along the window (the
+    /// algorithm as published; output read under the input's fill rule).
+    #[default]
+    Bridged,
+    /// The notes' fix: every list is cut where it runs along the window, and the pieces of all
+    /// lists are rejoined in pairs along the window boundary into separate rings. No bridges;
+    /// winding numbers are kept, so the output is read under the input's fill rule, and it is
+    /// conventional output when the subject is in conventional form.
+    Split,
+}
 
 /// Which of the notes' two forms of the algorithm runs. Both give the same vertices.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

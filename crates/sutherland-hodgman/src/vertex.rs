@@ -52,6 +52,21 @@ impl TaggedVertex {
         self.on.contains(&k)
     }
 
+    /// The boundaries it lies on (none, one or two).
+    pub fn boundaries(&self) -> impl Iterator<Item = usize> + '_ {
+        self.on.iter().copied().filter(|&k| k != NONE)
+    }
+
+    /// A boundary both `self` and `other` lie on, if any.
+    pub fn shared_boundary(&self, other: &TaggedVertex) -> Option<usize> {
+        self.boundaries().find(|&k| other.is_on(k))
+    }
+
+    /// The same point reached twice in a row: one vertex on the boundaries of both (at most two).
+    pub fn merged(self, other: &TaggedVertex) -> TaggedVertex {
+        other.boundaries().fold(self, |v, k| if v.on[1] == NONE || v.is_on(k) { v.with(k) } else { v })
+    }
+
     fn with(mut self, k: usize) -> TaggedVertex {
         if !self.is_on(k) {
             if self.on[0] == NONE {

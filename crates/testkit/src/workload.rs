@@ -5,6 +5,7 @@ mod degenerate_lines;
 mod hard_cases;
 mod large_lines;
 mod shapes;
+mod text;
 mod wang;
 mod windows;
 
@@ -14,6 +15,7 @@ pub use large_lines::{
     BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,
 };
 pub use shapes::convex_hull;
+pub use text::{TEXT_CHARSET, TextCase, text_case};
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};
@@ -31,6 +33,9 @@ pub const FAR_OFFSET: Point = Point::new(1.0e9, 1.0e9);
 
 /// The line workloads, by name.
 pub const LINE_WORKLOADS: &[&str] = &["wang-t4", "lines-degenerate", "lines-large"];
+
+/// The text workloads, by name: strings, sizes, positions and windows for clip-text's strategies.
+pub const TEXT_WORKLOADS: &[&str] = &["text"];
 
 /// The subject sizes of Vatti's Table 3.
 pub const VATTI_EDGES: [usize; 6] = [4, 10, 20, 40, 100, 200];

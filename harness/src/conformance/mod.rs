@@ -162,11 +162,11 @@ fn judge_polygon(entry: &PolygonEntry, case: &SuiteCase) -> Verdict {
     let judged = match expected {
         PolygonExpectation::Clipper2 { number, area, count } => {
             let record = Record { number: *number, subject, clip, op, fill, area: *area, count: *count };
-            judge(&record, &output, &output_rules(entry, fill), &live_recount)
+            judge(&record, &output, &output_rules(entry, subject, fill), &live_recount)
         }
         PolygonExpectation::Region(want) => {
             let allowed = tolerance(subject, clip, entry.tolerance);
-            same_region((&output, output_rules(entry, fill).output_fill), (want, fill), allowed)
+            same_region((&output, output_rules(entry, subject, fill).output_fill), (want, fill), allowed)
                 .map(|()| Passed::default())
                 .map_err(|area| {
                     ("the expected region".into(), format!("symmetric difference {area:e} > tolerance {allowed:e}"))

@@ -11,7 +11,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::time::Duration;
 
-use clip_core::{LineCapabilities, PolygonCapabilities};
+use clip_core::{LineCapabilities, OutputForm, PolygonCapabilities};
 use clip_oracle::polygon::GEO_TOLERANCE;
 
 pub use self::clipper::OwnTime;
@@ -116,12 +116,15 @@ fn declared(h: &Handshake) -> Result<(Option<PolygonCapabilities>, Option<LineCa
             if ops.is_empty() || fills.is_empty() {
                 return Err("its polygon capabilities list no operation or no fill rule".into());
             }
+            let bridges = parse_output(&p.output)?;
             Some(PolygonCapabilities {
                 ops: ops.leak(),
                 fill_rules: fills.leak(),
                 window: parse_window(&p.window)?,
                 trapezoids: false,
-                bridges: parse_output(&p.output)?,
+                bridges,
+                // Bridged output keeps each subject ring in its orientation: read under the input's rule.
+                output: if bridges { OutputForm::InputRule } else { OutputForm::Conventional },
             })
         }
     };

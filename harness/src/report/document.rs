@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use super::{bench_tables, beyond_paper, lecture_curves, oracle_failures, table3, table4};
+use super::{bench_tables, beyond_paper, lecture_curves, lecture_sh, lecture_text, oracle_failures, table3, table4};
 use crate::cli_error::CliError;
 use crate::write::write_file;
 
@@ -17,8 +17,10 @@ pub fn write(out: &Path) -> Result<(), CliError> {
         table3::section(out)?,
         table4::section(out)?,
         beyond_paper::section(out)?,
-        lecture_curves::section(out)?,
         bench_tables::section(out)?,
+        lecture_sh::section(out),
+        lecture_curves::section(out)?,
+        lecture_text::section(out)?,
     ]
     .into_iter()
     .flatten()

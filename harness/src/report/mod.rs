@@ -5,6 +5,8 @@ pub mod bench_tables;
 pub mod beyond_paper;
 pub mod document;
 pub mod lecture_curves;
+pub mod lecture_sh;
+pub mod lecture_text;
 pub mod markdown;
 mod oracle_failures;
 mod provenance_line;
@@ -39,6 +41,7 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     beyond_paper::write(&out)?;
     lecture_curves::write(&out)?;
     bench_tables::write(&out)?;
+    lecture_text::write(&out)?;
     write_report(&out)?;
     Ok(ExitCode::SUCCESS)
 }

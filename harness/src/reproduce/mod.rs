@@ -3,7 +3,7 @@
 //! into markdown tables and plots beside the papers' own numbers.
 
 mod beyond_paper;
-mod lecture;
+pub mod lecture;
 mod pixel_check;
 mod table3;
 mod table4;
@@ -21,7 +21,8 @@ pub const TABLES: [&str; 5] = ["vatti-table3", "wang-table4", "beyond-paper", "l
 pub struct ReproduceArgs {
     /// Which table: vatti-table3 (Vatti 1992, Table 3), wang-table4 (Wang et al. 2005, Table 4),
     /// beyond-paper (line clipping against windows of 6 to 10^4 edges, and 10^6 segments on every
-    /// core), lecture (the lecture notes' figures and the curve clipping bench) or all.
+    /// core), lecture (the lecture notes' figures redrawn, the curve clipping bench and what the
+    /// text strategies cost) or all.
     #[arg(value_name = "TABLE")]
     pub table: String,
     /// The papers' repetition counts (1000 per point) instead of a quick run's.
@@ -47,7 +48,8 @@ pub enum Table {
     WangTable4,
     /// Line clipping beyond Table 4's window sizes (issue 20).
     BeyondPaper,
-    /// The lecture notes' figures and claims (curve clipping's preliminary tests).
+    /// The lecture notes' figures (Figs. 6-24, 6-27, 6-28 to 6-30), the curve clipping
+    /// preliminary tests' savings and the text strategies' cost.
     Lecture,
 }
 

@@ -4,6 +4,8 @@
 pub mod bench;
 pub mod beyond_paper;
 pub mod lecture_curves;
+pub mod lecture_sh;
+pub mod lecture_text;
 pub mod vatti_table3;
 pub mod verify;
 pub mod wang_table4;

@@ -7,7 +7,7 @@ use super::summary::Row;
 use crate::checks::Check;
 use crate::registry::Origin;
 
-/// Polygon operation or line clipping.
+/// What a case clips: polygons, lines, curves or text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
     /// A polygon boolean operation.
@@ -16,6 +16,8 @@ pub enum Kind {
     Line,
     /// Circles, ellipses and arcs clipped against a window.
     Curve,
+    /// Text clipping (clip-text's strategies).
+    Text,
 }
 
 impl Kind {
@@ -25,6 +27,7 @@ impl Kind {
             Kind::Polygon => "polygon",
             Kind::Line => "line",
             Kind::Curve => "curve",
+            Kind::Text => "text",
         }
     }
 }

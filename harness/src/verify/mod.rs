@@ -11,13 +11,15 @@ pub mod record;
 pub mod replay;
 pub mod replay_case;
 mod summary;
+mod text_runs;
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clip_core::{BoolOp, FillRule};
-use clip_testkit::workload::{CURVE_WORKLOADS, LINE_WORKLOADS, POLYGON_WORKLOADS};
+use clip_testkit::workload::{CURVE_WORKLOADS, LINE_WORKLOADS, POLYGON_WORKLOADS, TEXT_WORKLOADS};
+use clip_text::{DEJAVU_SANS, OutlineFont};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde_json::json;
@@ -27,6 +29,7 @@ use self::finding::{CaseOutcome, Finding};
 use self::line_runs::LinePlan;
 use self::polygon_runs::PolygonPlan;
 use self::summary::{Row, Summary, table};
+use self::text_runs::{TEXT_STRATEGIES, TextPlan};
 use crate::cli_error::CliError;
 use crate::console;
 use crate::measure::out_dir::ready_out_dir;
@@ -38,7 +41,8 @@ use crate::write::write_file;
 /// Arguments of `clipbench verify`.
 #[derive(Debug, clap::Args)]
 pub struct VerifyArgs {
-    /// Clipper to verify (repeat for several; default: every registered clipper).
+    /// Clipper to verify (repeat for several; default: every registered clipper). The text
+    /// workload's rows are named text-string, text-char, text-outline and text-bitmap.
     #[arg(long = "clipper", value_name = "NAME")]
     pub clippers: Vec<String>,
     /// Workload to run (repeat for several; default: every workload). Polygon workloads run
@@ -105,8 +109,20 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         }
         (None, None) => PathBuf::from("verify-failures"),
     };
-    let registry = registry.select(&args.clippers)?;
+    // Text strategies are named beside the registry's clippers; naming only them selects no clipper.
+    let (text_names, clipper_names): (Vec<String>, Vec<String>) =
+        args.clippers.iter().cloned().partition(|n| TEXT_STRATEGIES.contains(&n.as_str()));
+    let registry = if !text_names.is_empty() && clipper_names.is_empty() {
+        Registry::default()
+    } else {
+        registry.select(&clipper_names)?
+    };
     let workloads = select_workloads(&args.workloads)?;
+    let text_names: Vec<&'static str> =
+        TEXT_STRATEGIES.into_iter().filter(|n| args.clippers.is_empty() || text_names.iter().any(|t| t == n)).collect();
+    let wants_text = !text_names.is_empty() && workloads.iter().any(|w| TEXT_WORKLOADS.contains(w));
+    let text =
+        TextPlan { font: if wants_text { Some(load_dejavu()?) } else { None }, names: text_names, seed: args.seed };
     let polygon = PolygonPlan {
         entries: registry.polygon.iter().collect(),
         ops: if args.ops.is_empty() { BoolOp::ALL.to_vec() } else { args.ops.clone() },
@@ -123,6 +139,8 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
                 !polygon.entries.is_empty()
             } else if CURVE_WORKLOADS.contains(w) {
                 !curve.entries.is_empty()
+            } else if TEXT_WORKLOADS.contains(w) {
+                !text.names.is_empty()
             } else {
                 !line.entries.is_empty()
             }
@@ -145,6 +163,8 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
                     polygon.run(w, i)
                 } else if CURVE_WORKLOADS.contains(&w) {
                     curve.run(w, i)
+                } else if TEXT_WORKLOADS.contains(&w) {
+                    text.run(w, i)
                 } else {
                     line.run(w, i)
                 };
@@ -177,13 +197,15 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         .map(|e| e.clipper.name())
         .chain(registry.line.iter().filter(|e| e.origin.fails_run()).map(|e| e.clipper.name()))
         .chain(registry.curve.iter().filter(|e| e.origin.fails_run()).map(|e| e.clipper.name()))
+        .chain(text.names.iter().copied())
         .collect();
     let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures > 0);
 
     // Shrink and write the first failures of each clipper and workload.
     let (chosen, skipped) = choose(&findings, args.max_records);
-    let records: Vec<Result<record::Record, String>> = pool
-        .install(|| chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &out)).collect());
+    let records: Vec<Result<record::Record, String>> = pool.install(|| {
+        chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &out, &text)).collect()
+    });
     let mut written = Vec::new();
     let mut cases = Vec::new();
     for r in records {
@@ -256,10 +278,17 @@ fn case_entry(r: &record::Record) -> CaseEntry {
     }
 }
 
+/// DejaVu Sans, which the text workload's outline rows draw with.
+fn load_dejavu() -> Result<OutlineFont, CliError> {
+    OutlineFont::from_file(std::path::Path::new(DEJAVU_SANS)).map_err(|e| {
+        CliError::failed(format!("the text workload needs DejaVu Sans (Debian package fonts-dejavu-core): {e}"))
+    })
+}
+
 /// The workloads named (all when none), or a usage error listing the valid names.
 fn select_workloads(names: &[String]) -> Result<Vec<&'static str>, CliError> {
     let all: Vec<&'static str> =
-        POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).chain(CURVE_WORKLOADS).copied().collect();
+        POLYGON_WORKLOADS.iter().chain(LINE_WORKLOADS).chain(CURVE_WORKLOADS).chain(TEXT_WORKLOADS).copied().collect();
     if names.is_empty() {
         return Ok(all);
     }

@@ -1,8 +1,8 @@
 //! Runs every selected polygon clipper on one generated case: each window kind a clipper needs,
 //! each operation and fill rule it supports; checks each result and compares the clippers.
 
-use clip_core::{BoolOp, FillRule, Polygons, WindowKind};
-use clip_oracle::polygon::{bridge_count_within, operand_areas, snap_distance};
+use clip_core::{BoolOp, FillRule, OutputForm, Polygons, WindowKind};
+use clip_oracle::polygon::{bridge_count_along, operand_areas, snap_distance};
 use clip_testkit::workload::polygon_case;
 
 use super::finding::{CaseOutcome, Finding, Kind};
@@ -88,10 +88,10 @@ impl PolygonPlan<'_> {
                         if counted(i) {
                             let row = &mut outcome.rows[i];
                             row.runs += 1;
-                            if let (Ok(out), true) = (&result, e.clipper.capabilities().bridges) {
+                            if let (Ok(out), true) = (&result, counts_bridges(e)) {
                                 // Bridge ends on slanted sides are rounded separately: snap as the oracle does.
                                 let snap = snap_distance(&subject.bounds().union(clip.bounds()), e.tolerance);
-                                row.bridges = Some(row.bridges.unwrap_or(0) + bridge_count_within(out, snap));
+                                row.bridges = Some(row.bridges.unwrap_or(0) + bridge_count_along(out, clip, snap));
                             }
                             if let Err(message) = &verdict {
                                 row.oracle_failures += 1;
@@ -178,6 +178,13 @@ impl PolygonPlan<'_> {
             }
         }
     }
+}
+
+/// True when verify counts the bridges in a clipper's output: it may keep them, or its output is
+/// not always conventional (`sutherland-hodgman-split`, which must show none).
+fn counts_bridges(entry: &PolygonEntry) -> bool {
+    let caps = entry.clipper.capabilities();
+    caps.bridges || caps.output != OutputForm::Conventional
 }
 
 /// The slot of `op` in [`BoolOp::ALL`].

@@ -13,7 +13,8 @@ use super::curve_runs::{case_objects, curve_failure, run_objects};
 use super::finding::{Finding, Kind, window_name};
 use super::polygon_runs::takes;
 use super::recheck::{Target, line_failure, polygon_failure};
-use crate::checks::{Check, run_line, run_polygon};
+use super::text_runs::TextPlan;
+use crate::checks::{Check, output_rules, run_line, run_polygon};
 use crate::cli_error::CliError;
 use crate::curve_input::curves_to_text;
 use crate::registry::Registry;
@@ -89,6 +90,7 @@ pub fn record(
     segments: usize,
     finding: &Finding,
     out: &Path,
+    text: &TextPlan,
 ) -> Result<Record, String> {
     let folder = finding.folder_name();
     let case_path = out.join(&folder).join("case.json");
@@ -120,10 +122,26 @@ pub fn record(
         Kind::Polygon => polygon_files(registry, seed, finding, target, &mut case)?,
         Kind::Line => line_files(registry, (seed, segments), finding, target, &mut case)?,
         Kind::Curve => curve_files(registry, seed, finding, &mut case)?,
+        Kind::Text => text_files(seed, finding, text, &mut case),
     };
     files.push(("case.json".into(), serde_json::to_string_pretty(&case).map_err(|e| e.to_string())? + "\n"));
     files.push(("replay.txt".into(), case.replay.clone() + "\n"));
     Ok(Record { folder, files, case })
+}
+
+/// A text failure is not shrunk: the case (string, size, origin) is in the message, the window
+/// is saved, and `--replay` regenerates the case from its seed and index.
+fn text_files(seed: u64, finding: &Finding, text: &TextPlan, case: &mut CaseFile) -> Vec<(String, String)> {
+    let generated = clip_testkit::workload::text_case(seed, finding.index);
+    let still = text.failures(finding.clipper, finding.index).into_iter().flatten().next();
+    case.shrunk = still.unwrap_or_else(|| "passes when rerun".into());
+    case.generated_vertices = [generated.window.vertex_count(), generated.string.chars().count()];
+    case.shrunk_vertices = case.generated_vertices;
+    case.inputs = ["window.wkt".into(), "string.txt".into()];
+    vec![
+        ("window.wkt".into(), polygons_to_wkt(&generated.window, false) + "\n"),
+        ("string.txt".into(), generated.string + "\n"),
+    ]
 }
 
 fn polygon_files(
@@ -149,7 +167,8 @@ fn polygon_files(
         ("clip.wkt".to_owned(), polygons_to_wkt(&clip, false) + "\n"),
     ];
     for e in registry.polygon.iter().filter(|e| takes(e.clipper.capabilities().window, finding.window)) {
-        let bridged = e.clipper.capabilities().bridges;
+        // Outputs read under the input's rule keep their orientation in the WKT.
+        let bridged = !output_rules(e, &subject, fill).conventional;
         for &op in ops.iter().filter(|&&op| e.clipper.capabilities().supports(op, fill)) {
             let label = if ops.len() == 1 { e.clipper.name().to_owned() } else { format!("{}-{op}", e.clipper.name()) };
             let text = match run_polygon(e, &subject, &clip, op, fill) {

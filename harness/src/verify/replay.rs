@@ -10,6 +10,7 @@ use super::finding::Kind;
 use super::recheck::{line_failure, polygon_failure};
 use super::record::CaseFile;
 use super::replay_case::{self, Replay};
+use super::text_runs::TextPlan;
 use crate::cli_error::{CliError, InputError};
 use crate::console;
 use crate::curve_input::read_curves;
@@ -23,6 +24,8 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
     let dir = path.parent().unwrap_or(Path::new("."));
     let (first, second) = (dir.join(&case.inputs[0]), dir.join(&case.inputs[1]));
     let failure = match replay.kind {
+        // Regenerated from its seed and index rather than read from files.
+        Kind::Text => return replay_text(&case, replay.target.clipper),
         Kind::Curve => {
             let window = read_polygons(&first, Operand::Window)?;
             validate_window(&window).map_err(|e| InputError::new(&first, e.to_string()))?;
@@ -75,4 +78,22 @@ pub fn read_case(text: &str, path: &Path, registry: &Registry) -> Result<(CaseFi
         serde_json::from_str(text).map_err(|e| InputError::new(path, format!("not a verify case file: {e}")))?;
     let replay = replay_case::checked(&case, registry, path)?;
     Ok((case, replay))
+}
+
+/// Replays a text failure: the case regenerated from its seed and index, the strategy rerun.
+fn replay_text(case: &CaseFile, name: &'static str) -> Result<ExitCode, CliError> {
+    let font = clip_text::OutlineFont::from_file(Path::new(clip_text::DEJAVU_SANS))
+        .map_err(|e| CliError::failed(e.to_string()))?;
+    let plan = TextPlan { font: Some(font), names: vec![name], seed: case.seed };
+    let what = format!("text {} ({} case {} of seed {})", case.clipper, case.workload, case.index, case.seed);
+    match plan.failures(name, case.index).into_iter().flatten().next() {
+        Some(message) => {
+            console::print_line(format_args!("still fails: {what}: {message}"))?;
+            Ok(ExitCode::FAILURE)
+        }
+        None => {
+            console::print_line(format_args!("passes now: {what}"))?;
+            Ok(ExitCode::SUCCESS)
+        }
+    }
 }

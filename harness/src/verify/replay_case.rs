@@ -11,13 +11,14 @@ use super::finding::{Kind, window_name};
 use super::polygon_runs::takes;
 use super::recheck::Target;
 use super::record::CaseFile;
+use super::text_runs::TEXT_STRATEGIES;
 use crate::checks::Check;
 use crate::cli_error::{CliError, InputError};
 use crate::registry::{Registry, unknown_clipper};
 
 /// What a case file asks to re-run, checked.
 pub struct Replay {
-    /// Polygon, line or curve case.
+    /// Polygon, line, curve or text case.
     pub kind: Kind,
     /// The clipper, check, operation and fill rule.
     pub target: Target<'static>,
@@ -49,7 +50,8 @@ pub fn checked(case: &CaseFile, registry: &Registry, path: &Path) -> Result<Repl
         "polygon" => Kind::Polygon,
         "line" => Kind::Line,
         "curve" => Kind::Curve,
-        other => return Err(bad(format!("unknown kind '{other}' (a case is a polygon, line or curve case)"))),
+        "text" => return text_replay(case, path),
+        other => return Err(bad(format!("unknown kind '{other}' (a case is a polygon, line, curve or text case)"))),
     };
     let clipper = clipper_of(kind, &case.clipper, registry, path)?;
     let mut clippers = vec![clipper];
@@ -80,7 +82,7 @@ pub fn checked(case: &CaseFile, registry: &Registry, path: &Path) -> Result<Repl
     let op = case.op.as_deref().map(|s| s.parse::<BoolOp>().map_err(|e| bad(e.to_string()))).transpose()?;
     let fill = case.fill.as_deref().map(|s| s.parse::<FillRule>().map_err(|e| bad(e.to_string()))).transpose()?;
     match kind {
-        Kind::Line | Kind::Curve => {
+        Kind::Line | Kind::Curve | Kind::Text => {
             if let Some(op) = op {
                 return Err(bad(format!("a {} case has no 'op', and this one says {op}", kind.name())));
             }
@@ -126,6 +128,20 @@ pub fn checked(case: &CaseFile, registry: &Registry, path: &Path) -> Result<Repl
     Ok(Replay { kind, target: Target { clipper: clipper.0, check, op, fill }, clippers })
 }
 
+/// A text case: one of the text rows, checked by the raster oracle, regenerated from its seed and
+/// index (no operation, fill rule or other clipper).
+fn text_replay(case: &CaseFile, path: &Path) -> Result<Replay, CliError> {
+    let bad = |problem: String| CliError::from(InputError::new(path, problem));
+    let Some(&row) = TEXT_STRATEGIES.iter().find(|&&n| n == case.clipper) else {
+        return Err(bad(format!("unknown text row '{}' ({})", case.clipper, TEXT_STRATEGIES.join(", "))));
+    };
+    if case.check != "oracle" || case.other.is_some() || case.op.is_some() || case.fill.is_some() {
+        return Err(bad("a text case is an oracle check with no 'other', 'op' or 'fill'".into()));
+    }
+    let target = Target { clipper: row, check: Check::Oracle, op: None, fill: None };
+    Ok(Replay { kind: Kind::Text, target, clippers: Vec::new() })
+}
+
 /// The registered clipper `name` of `kind` and the windows it takes.
 fn clipper_of(
     kind: Kind,
@@ -142,6 +158,7 @@ fn clipper_of(
         Kind::Polygon => (polygon, kind_of(line, Kind::Line).or(kind_of(curve, Kind::Curve))),
         Kind::Line => (line, kind_of(polygon, Kind::Polygon).or(kind_of(curve, Kind::Curve))),
         Kind::Curve => (curve, kind_of(polygon, Kind::Polygon).or(kind_of(line, Kind::Line))),
+        Kind::Text => (None, None),
     };
     match (wanted, other_kind) {
         (Some(found), _) => Ok(found),

@@ -134,7 +134,8 @@ impl CellIndex {
 /// no two rings (or two passes of one ring) crossing at a shared point; outer rings
 /// counter-clockwise and holes clockwise by nesting depth (the number of rings around them).
 ///
-/// Rings may touch at points without crossing, and different rings may share an edge. Exact:
+/// Rings may touch at points without crossing, and different rings may share an edge, running it
+/// in opposite directions (the same direction would overlap their insides). Exact:
 /// see [`check_valid_output_within`] for output whose vertices were rounded.
 pub fn check_valid_output(output: &Polygons) -> Result<(), PolygonFailure> {
     check_valid_output_within(output, 0.0)
@@ -252,6 +253,17 @@ fn check_pair(output: &Polygons, e: &RingEdge, f: &RingEdge, snap: f64) -> Resul
         SegmentIntersection::Overlap(s) if e.ring == f.ring => invalid(format!(
             "ring {} overlaps itself along {} - {} (edges {} and {})",
             e.ring,
+            at(s.a),
+            at(s.b),
+            e.index,
+            f.index
+        )),
+        // Rings sharing an edge run it both ways; running it the same way puts their insides on
+        // one side (winding 2, or a hole outside its outer).
+        SegmentIntersection::Overlap(s) if !opposite_overlap(e.segment, f.segment) => invalid(format!(
+            "rings {} and {} run the same way along {} - {} (edges {} and {}): their insides overlap",
+            e.ring,
+            f.ring,
             at(s.a),
             at(s.b),
             e.index,
@@ -514,9 +526,13 @@ pub fn bridge_count(output: &Polygons) -> usize {
 /// slanted window side, the two edges of a bridge end at points rounded separately, so they are
 /// collinear only to within rounding. With `snap` 0 the overlap is exact.
 pub fn bridge_count_within(output: &Polygons, snap: f64) -> usize {
-    let edges = ring_edges(output);
+    count_opposite_pairs(&ring_edges(output), snap)
+}
+
+/// How many pairs of `edges` overlap running in opposite directions (within `snap` when positive).
+fn count_opposite_pairs(edges: &[RingEdge], snap: f64) -> usize {
     let mut count = 0;
-    let _ = for_each_close_pair(&edges, |e, f| {
+    let _ = for_each_close_pair(edges, |e, f| {
         count += usize::from(if snap > 0.0 {
             opposite_within(e.segment, f.segment, snap)
         } else {
@@ -525,6 +541,16 @@ pub fn bridge_count_within(output: &Polygons, snap: f64) -> usize {
         Ok(())
     });
     count
+}
+
+/// The bridges of docs/DESIGN.md: [`bridge_count_within`] counted only among the output edges
+/// that run along a side of `window` (both ends on it, or within `snap` of it). Zero-width spikes
+/// and edges running both ways that a subject brings inside the window are its own, not the
+/// clipper's, and are not counted.
+pub fn bridge_count_along(output: &Polygons, window: &Polygons, snap: f64) -> usize {
+    let on_a_side = |e: &RingEdge| window.edges().any(|w| within(e.segment.a, w, snap) && within(e.segment.b, w, snap));
+    let edges: Vec<RingEdge> = ring_edges(output).into_iter().filter(on_a_side).collect();
+    count_opposite_pairs(&edges, snap)
 }
 
 /// Exactly collinear, overlapping along a positive length, in opposite directions.
