@@ -486,7 +486,7 @@ fn replay_of_a_case_file_that_does_not_hang_together_exits_2_instead_of_passing(
     let cases: [(serde_json::Value, &str); 12] = [
         (
             serde_json::json!({"kind": "triangle"}),
-            "case.json: unknown kind 'triangle' (a case is a polygon, line or curve case)",
+            "case.json: unknown kind 'triangle' (a case is a polygon, line, curve or text case)",
         ),
         (serde_json::json!({"kind": "line"}), "case.json: clipper2 is a polygon clipper, and this is a line case"),
         (line.clone(), "clip.wkt: the segments must be line strings, but it holds polygons"),
