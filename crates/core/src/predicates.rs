@@ -45,16 +45,16 @@ fn coord(p: Point) -> robust::Coord<f64> {
 const TRUSTED_FRACTION: f64 = 1e-8;
 
 /// Twice the signed area of triangle `abc`, with an exactly right sign and a magnitude accurate to
-/// a few ulps of the triangle's two sides at its widest angle. Positive when `c` lies left of the
-/// directed line `a -> b`.
+/// about an ulp of itself. Positive when `c` lies left of the directed line `a -> b`.
 ///
 /// Callers place crossings by these magnitudes (`t = ga / (ga - gb)`), so the magnitude matters
 /// too. Shewchuk's adaptive `orient2d` stops refining as soon as the sign is certain, with the
-/// magnitude then off by up to its whole size, and its pivot at `c` cancels badly when `a` and `b`
-/// are close together (found by the `window_clippers` fuzz target: a window edge 2.2e-16 long put
-/// a crossing 0.003 off). So where the plain determinant is not clearly above its rounding, the
-/// magnitude is recomputed at the triangle's widest angle (opposite its longest side), with the
-/// sign still from the exact predicate.
+/// magnitude then off by up to its whole size (found by the `window_clippers` fuzz target: a
+/// window edge 2.2e-16 long put a Sutherland-Hodgman crossing 0.003 off, and by the
+/// `line_clippers` one: Cyrus-Beck kept a piece of a segment running 1e-16 off a sliver window).
+/// So where the plain determinant is not clearly above its rounding, the magnitude is summed
+/// from the exact products of the exact coordinate differences, and the sign still comes from the
+/// exact predicate.
 #[inline]
 pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
     let (left, right) = ((a.x - c.x) * (b.y - c.y), (a.y - c.y) * (b.x - c.x));
@@ -63,22 +63,53 @@ pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
         return det;
     }
     let exact = robust::orient2d(coord(a), coord(b), coord(c));
-    let refined = cross_at_widest_angle(a, b, c);
-    if (refined > 0.0 && exact > 0.0) || (refined < 0.0 && exact < 0.0) { refined } else { exact }
+    let accurate = accurate_determinant(a, b, c);
+    if (accurate > 0.0 && exact > 0.0) || (accurate < 0.0 && exact < 0.0) { accurate } else { exact }
 }
 
-/// `orient2d`'s determinant taken at the vertex opposite the longest side, where the two sides
-/// multiplied are the shortest and their rounding the smallest.
-fn cross_at_widest_angle(a: Point, b: Point, c: Point) -> f64 {
-    let squared = |p: Point, q: Point| (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
-    let (ab, bc, ca) = (squared(a, b), squared(b, c), squared(c, a));
-    if ab >= bc && ab >= ca {
-        (a - c).cross(b - c)
-    } else if bc >= ca {
-        (b - a).cross(c - a)
-    } else {
-        (c - b).cross(a - b)
+/// `(a.x - c.x)(b.y - c.y) - (a.y - c.y)(b.x - c.x)` to about an ulp: every difference split
+/// exactly into two doubles, every product of the parts exactly into two (fused multiply-add),
+/// and the sixteen terms summed with compensation. Coordinates within `MIN_COORDINATE` and
+/// `MAX_COORDINATE` keep every term a normal number.
+fn accurate_determinant(a: Point, b: Point, c: Point) -> f64 {
+    let (ax, ay, bx, by) = (two_diff(a.x, c.x), two_diff(a.y, c.y), two_diff(b.x, c.x), two_diff(b.y, c.y));
+    let mut terms = [0.0; 16];
+    let mut k = 0;
+    for (u, v, sign) in [(ax, by, 1.0), (ay, bx, -1.0)] {
+        for x in [u.0, u.1] {
+            for y in [v.0, v.1] {
+                let (p, e) = two_product(x, y);
+                terms[k] = sign * p;
+                terms[k + 1] = sign * e;
+                k += 2;
+            }
+        }
     }
+    // Neumaier's compensated sum: the error is about an ulp of the sum plus 16 ulps squared of
+    // the terms' size, far below the sum wherever the sign is not already plain.
+    let (mut sum, mut compensation) = (0.0_f64, 0.0_f64);
+    for t in terms {
+        let next = sum + t;
+        compensation += if sum.abs() >= t.abs() { (sum - next) + t } else { (t - next) + sum };
+        sum = next;
+    }
+    sum + compensation
+}
+
+/// `a - b` exactly, as a rounded difference and its error.
+#[inline]
+fn two_diff(a: f64, b: f64) -> (f64, f64) {
+    let x = a - b;
+    let bv = a - x;
+    let av = x + bv;
+    (x, (a - av) + (bv - b))
+}
+
+/// `a * b` exactly, as a rounded product and its error.
+#[inline]
+fn two_product(a: f64, b: f64) -> (f64, f64) {
+    let x = a * b;
+    (x, a.mul_add(b, -x))
 }
 
 /// The exact turn of `a -> b -> c`.
