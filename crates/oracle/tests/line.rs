@@ -217,3 +217,39 @@ fn intervals_near_the_tolerance_agree_both_ways() {
     assert!(check_line_batch(&window, &[s], &short, 0.01).is_err());
     assert!(check_line_batch(&window, &[s], &[], 0.06).is_err());
 }
+
+/// Found by the `line_clippers` fuzz target: a sliver window 5e-17 wide that a segment crosses
+/// lengthwise between t = 1/6 and t = 1/2. A rounded point inside that run falls outside the
+/// sliver, so runs are now classified by the parity of the edges the line crosses beyond them.
+#[test]
+fn a_segment_inside_a_sliver_thinner_than_an_ulp_is_visible() {
+    let window = Polygons::from(Ring::new(vec![
+        Point::new(0.975, 1.575),
+        Point::new(1.8500000000000005, 2.4499999999999997),
+        Point::new(1.85, 2.45),
+    ]));
+    let s = Segment::new(Point::new(2.06875, 2.66875), Point::new(0.75625, 1.35625));
+    let got = visible_intervals(&window, s);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert!((got[0].0 - 1.0 / 6.0).abs() < 1e-9 && (got[0].1 - 0.5).abs() < 1e-9, "{got:?}");
+    // Reversed, the same run from the other end.
+    let back = visible_intervals(&window, s.reversed());
+    assert!((back[0].0 - 0.5).abs() < 1e-9 && (back[0].1 - 5.0 / 6.0).abs() < 1e-9, "{back:?}");
+}
+
+/// Found by the `line_clippers` fuzz target: a segment ending on a window vertex and running
+/// 1e-17 inside the window's edge is visible whole (its ends on the boundary left only a rounded
+/// midpoint to decide, and it fell outside); moved an ulp across the edge, it is not.
+#[test]
+fn a_segment_an_ulp_inside_an_edge_is_visible() {
+    let window = Polygons::from(Ring::new(vec![
+        Point::new(1.85, 2.45),
+        Point::new(5.35, 5.2),
+        Point::new(6.225, 4.575),
+        Point::new(-0.024999999999999994, 0.575),
+    ]));
+    let inside = Segment::new(Point::new(0.44375, 1.04375), Point::new(-0.024999999999999994, 0.575));
+    assert_eq!(visible_intervals(&window, inside), vec![(0.0, 1.0)]);
+    let outside = Segment::new(Point::new(0.44375, 1.04375_f64.next_up().next_up()), inside.b);
+    assert_eq!(visible_intervals(&window, outside), vec![]);
+}
