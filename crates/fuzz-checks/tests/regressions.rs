@@ -152,3 +152,37 @@ fn vatti_inverted_ring_near_parallel_edges_at_1e140() {
 fn vatti_input_vertex_taken_for_rounded_at_1e15() {
     regression("vatti", "input-vertex-taken-for-rounded-at-1e15");
 }
+
+/// A segment crossing a sliver window 5e-17 wide lengthwise: Cyrus-Beck's piece was right, and
+/// the line oracle wrong twice: it classified the run by a rounded midpoint (outside the sliver)
+/// and computed crossing parameters from cross products that cancel for near-parallel lines. Runs
+/// are now classified by the parity of the edges crossed beyond them, and parameters come from
+/// `orient2d`'s accurate magnitudes.
+#[test]
+fn line_clippers_sliver_window_crossed_lengthwise() {
+    regression("line_clippers", "sliver-window-crossed-lengthwise");
+}
+
+/// A segment along a sliver window whose crossings with its nearly parallel edges the oracle
+/// placed by cancelling cross products: [0, 0.22] expected against Cyrus-Beck's [0.087, 0.111]
+/// before either was accurate.
+#[test]
+fn line_clippers_segment_nearly_parallel_to_sliver_edges() {
+    regression("line_clippers", "segment-nearly-parallel-to-sliver-edges");
+}
+
+/// A segment ending on a window vertex and running 1e-17 inside the window's edge: visible whole
+/// (Cyrus-Beck, by exact signs); with both ends on the boundary the oracle had only a rounded
+/// midpoint to decide by, and called it outside.
+#[test]
+fn line_clippers_segment_an_ulp_inside_an_edge() {
+    regression("line_clippers", "segment-an-ulp-inside-an-edge");
+}
+
+/// Near 4e6 (a point's rounding spans 3e-11 of the segment, above `PARAMETER_SNAP`) Liu returned
+/// two pieces meeting at one rounded point where spikes of the window cross the segment. Gaps whose
+/// ends round to one point are now merged in `clip_core::LineCrossings`.
+#[test]
+fn line_clippers_pieces_meet_at_a_rounded_point() {
+    regression("line_clippers", "pieces-meet-at-a-rounded-point");
+}
