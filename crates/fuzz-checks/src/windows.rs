@@ -83,7 +83,7 @@ pub fn clippers() -> [(&'static str, Box<dyn PolygonClipper>); 3] {
     [
         ("sutherland-hodgman", Box::new(SutherlandHodgman::new(Form::List))),
         ("sutherland-hodgman pipeline", Box::new(SutherlandHodgman::new(Form::Pipeline))),
-        ("four-state", Box::new(FourState)),
+        ("rect-four-state", Box::new(FourState)),
     ]
 }
 
