@@ -42,19 +42,20 @@ fn coord(p: Point) -> robust::Coord<f64> {
 }
 
 /// Below this fraction of its terms' size, the plain determinant's magnitude is not trusted.
-const TRUSTED_FRACTION: f64 = 1e-8;
+const TRUSTED_FRACTION: f64 = 1e-4;
 
 /// Twice the signed area of triangle `abc`, with an exactly right sign and a magnitude accurate to
-/// about an ulp of itself. Positive when `c` lies left of the directed line `a -> b`.
+/// a few parts in 10^12 (the plain determinant, where it is above 1e-4 of its terms) or to about
+/// an ulp (otherwise). Positive when `c` lies left of the directed line `a -> b`.
 ///
 /// Callers place crossings by these magnitudes (`t = ga / (ga - gb)`), so the magnitude matters
 /// too. Shewchuk's adaptive `orient2d` stops refining as soon as the sign is certain, with the
 /// magnitude then off by up to its whole size (found by the `window_clippers` fuzz target: a
 /// window edge 2.2e-16 long put a Sutherland-Hodgman crossing 0.003 off, and by the
-/// `line_clippers` one: Cyrus-Beck kept a piece of a segment running 1e-16 off a sliver window).
-/// So where the plain determinant is not clearly above its rounding, the magnitude is summed
-/// from the exact products of the exact coordinate differences, and the sign still comes from the
-/// exact predicate.
+/// `line_clippers` one: the line oracle misplaced crossings with sliver windows and far segment
+/// ends). So where the plain determinant is not clearly above its rounding, the magnitude is summed
+/// exactly from the exact products of the exact coordinate differences, and the sign still comes
+/// from the exact predicate.
 #[inline]
 pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
     let (left, right) = ((a.x - c.x) * (b.y - c.y), (a.y - c.y) * (b.x - c.x));
@@ -68,32 +69,55 @@ pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
 }
 
 /// `(a.x - c.x)(b.y - c.y) - (a.y - c.y)(b.x - c.x)` to about an ulp: every difference split
-/// exactly into two doubles, every product of the parts exactly into two (fused multiply-add),
-/// and the sixteen terms summed with compensation. Coordinates within `MIN_COORDINATE` and
-/// `MAX_COORDINATE` keep every term a normal number.
+/// exactly into two doubles, every product of the parts exactly into two (fused multiply-add), and
+/// the sixteen terms summed exactly into an expansion (Shewchuk's grow-expansion), whose
+/// components are then added smallest first. A compensated sum is not enough: terms of 1e51 that
+/// cancel to 1e25 (a window edge near the origin, a segment end at 6e25) leave it 1e-4 off. The
+/// coordinate range (`MIN_COORDINATE` to `MAX_COORDINATE`) keeps every term a normal number.
 fn accurate_determinant(a: Point, b: Point, c: Point) -> f64 {
     let (ax, ay, bx, by) = (two_diff(a.x, c.x), two_diff(a.y, c.y), two_diff(b.x, c.x), two_diff(b.y, c.y));
-    let mut terms = [0.0; 16];
-    let mut k = 0;
+    let mut expansion = [0.0; 32];
+    let mut len = 0;
     for (u, v, sign) in [(ax, by, 1.0), (ay, bx, -1.0)] {
         for x in [u.0, u.1] {
             for y in [v.0, v.1] {
                 let (p, e) = two_product(x, y);
-                terms[k] = sign * p;
-                terms[k + 1] = sign * e;
-                k += 2;
+                for term in [sign * e, sign * p] {
+                    len = grow_expansion(&mut expansion, len, term);
+                }
             }
         }
     }
-    // Neumaier's compensated sum: the error is about an ulp of the sum plus 16 ulps squared of
-    // the terms' size, far below the sum wherever the sign is not already plain.
-    let (mut sum, mut compensation) = (0.0_f64, 0.0_f64);
-    for t in terms {
-        let next = sum + t;
-        compensation += if sum.abs() >= t.abs() { (sum - next) + t } else { (t - next) + sum };
-        sum = next;
+    expansion[..len].iter().sum()
+}
+
+/// Adds `b` exactly to the expansion `e[..len]` (non-overlapping components, smallest first) and
+/// returns its new length, dropping zero components.
+fn grow_expansion(e: &mut [f64; 32], len: usize, b: f64) -> usize {
+    let mut q = b;
+    let mut out = 0;
+    for i in 0..len {
+        let (sum, err) = two_sum(q, e[i]);
+        if err != 0.0 {
+            e[out] = err;
+            out += 1;
+        }
+        q = sum;
     }
-    sum + compensation
+    if q != 0.0 {
+        e[out] = q;
+        out += 1;
+    }
+    out
+}
+
+/// `a + b` exactly, as a rounded sum and its error.
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let x = a + b;
+    let bv = x - a;
+    let av = x - bv;
+    (x, (a - av) + (b - bv))
 }
 
 /// `a - b` exactly, as a rounded difference and its error.
