@@ -9,7 +9,7 @@ use clip_core::predicates::{Orientation, orient, orient2d};
 use clip_core::{Point, Polygons, Rect, Segment, SegmentIntersection, VisiblePiece, segment_intersection};
 use core::fmt;
 
-use crate::polygon::rounding_distance;
+use crate::polygon::{SNAP_ROUNDINGS, rounding_distance};
 
 /// The parameter tolerance `verify` compares line clippers' pieces with.
 pub const LINE_T_TOLERANCE: f64 = 1e-9;
@@ -265,8 +265,9 @@ pub fn check_line_batch(
 }
 
 /// The tolerance on `t` for segment `s`: `t_tolerance`, or, where it is larger, what rounding a
-/// point to f64 moves along the segment at the magnitude of the case's coordinates
-/// (`rounding_distance` of the window's and the segment's bounds, over the segment's length). Far
+/// computed crossing moves along the segment at the magnitude of the case's coordinates
+/// ([`SNAP_ROUNDINGS`] times the `rounding_distance` of the window's and the segment's bounds,
+/// over the segment's length: a crossing is a few ulps off, as in the polygon oracle's snap). Far
 /// from the origin a short segment's pieces cannot end closer to the exact crossings than that
 /// (found by the `line_clippers` fuzz target: segments 1e-6 long at 1e9, where an ulp is 1.2e-7).
 pub fn parameter_tolerance(window_bounds: &Rect, s: Segment, t_tolerance: f64) -> f64 {
@@ -274,7 +275,7 @@ pub fn parameter_tolerance(window_bounds: &Rect, s: Segment, t_tolerance: f64) -
     if len == 0.0 {
         return t_tolerance;
     }
-    t_tolerance.max(rounding_distance(&window_bounds.union(s.bounds())) / len)
+    t_tolerance.max(SNAP_ROUNDINGS * rounding_distance(&window_bounds.union(s.bounds())) / len)
 }
 
 /// Equal within `tol`: each side, shrunk by `tol / 2` at every end, lies inside the other grown

@@ -186,10 +186,10 @@ proptest! {
 }
 
 /// Found by the `line_clippers` fuzz target: at 1e9 an ulp is 1.2e-7, so a piece of a segment
-/// 2.3e-6 long ends up to 5% of it off the exact crossing, whatever the clipper does.
+/// 2e-5 long ends up to a few percent of it off the exact crossing, whatever the clipper does.
 #[test]
 fn short_segments_far_from_the_origin_are_judged_at_their_rounding() {
-    let (o, d) = (1e9, 1e-6);
+    let (o, d) = (1e9, 1e-5);
     let window = Polygons::from(Rect::new(o, o, o + 2.0 * d, o + 2.0 * d));
     let s = Segment::new(Point::new(o - d, o + d), Point::new(o + d, o + d));
     let rounded = |x: f64| Point::new(x, o + d);
@@ -198,7 +198,7 @@ fn short_segments_far_from_the_origin_are_judged_at_their_rounding() {
     assert_eq!(check_line_batch(&window, &[s], &near, LINE_T_TOLERANCE), Ok(()));
     let far = [VisiblePiece { segment: 0, piece: Segment::new(rounded(o + 0.4 * d), s.b) }];
     assert!(check_line_batch(&window, &[s], &far, LINE_T_TOLERANCE).is_err());
-    assert!(parameter_tolerance(&window.bounds(), s, LINE_T_TOLERANCE) > 0.05);
+    assert!(parameter_tolerance(&window.bounds(), s, LINE_T_TOLERANCE) > 0.01);
     let near_origin = Segment::new(Point::new(0.0, 0.0), Point::new(1.0, 0.0));
     assert_eq!(parameter_tolerance(&Rect::new(0.0, 0.0, 1.0, 1.0), near_origin, LINE_T_TOLERANCE), LINE_T_TOLERANCE);
 }
