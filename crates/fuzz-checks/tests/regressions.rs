@@ -186,3 +186,29 @@ fn line_clippers_segment_an_ulp_inside_an_edge() {
 fn line_clippers_pieces_meet_at_a_rounded_point() {
     regression("line_clippers", "pieces-meet-at-a-rounded-point");
 }
+
+/// A window turning back at (3e140, 3e140) by 1e74 and winding twice: its nearly 180° turn had a
+/// rounded cross product of 0, counted as -π, and `Ring::convex_orientation` called it convex, so
+/// Cyrus-Beck clipped against half-planes that are not the window. Turns are now summed the way the
+/// exact test found them.
+#[test]
+fn line_clippers_window_winding_twice_through_a_hairpin() {
+    regression("line_clippers", "window-winding-twice-through-a-hairpin");
+}
+
+/// A window edge near the origin and a segment end at 6.4e25: the determinant's terms (4e51) cancel
+/// to 2.4e25, and the compensated sum left `orient2d`'s magnitude 1e-4 off, so the oracle and
+/// Cyrus-Beck put the exit 1e-7 of the segment early (exact rationals agree with Liu). The terms
+/// are now summed exactly into an expansion.
+#[test]
+fn line_clippers_edge_near_origin_segment_end_at_6e25() {
+    regression("line_clippers", "edge-near-origin-segment-end-at-6e25");
+}
+
+/// A segment nearly parallel to a window edge 1e149 long: the plain determinant, trusted down to
+/// 1e-8 of its terms, was 2e-8 off in relative terms, and a crossing 1.2e-9 of the segment off.
+/// It is now trusted down to 1e-4 only.
+#[test]
+fn line_clippers_plain_determinant_1e_8_off() {
+    regression("line_clippers", "plain-determinant-1e-8-off");
+}
