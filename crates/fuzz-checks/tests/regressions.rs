@@ -224,3 +224,11 @@ fn line_clippers_edge_near_origin_segment_end_at_6e25() {
 fn line_clippers_plain_determinant_1e_8_off() {
     regression("line_clippers", "plain-determinant-1e-8-off");
 }
+
+/// Points 1e-7 apart on a diagonal that f64 cannot hold exactly: vatti's xor retraced a ring
+/// for one ulp at a rounded crossing, which the oracle called a self-overlap. A same-ring overlap
+/// no longer than the snap distance is now a rounded vertex, as a crossing that close is.
+#[test]
+fn vatti_ulp_long_self_overlap() {
+    regression("vatti", "ulp-long-self-overlap");
+}
