@@ -65,7 +65,8 @@ run() {
 
 report() {
     t="$1"
-    # libFuzzer's fork mode prints "#EXECS: cov: C ft: F corp: N exec/s: E oom/timeout/crash: O/T/C time: S".
+    # libFuzzer's fork mode prints "#EXECS: cov: C ft: F corp: N exec/s: E oom/timeout/crash: O/T/C time: S"
+    # about once a minute.
     last=$(grep -E '^#[0-9]+: cov:' "$logs/$t.log" | tail -n 1)
     if [ -z "$last" ]; then
         echo "$t: no statistics (see $logs/$t.log)"
@@ -75,13 +76,16 @@ report() {
     cov=$(echo "$last" | sed -E 's/.* cov: ([0-9]+).*/\1/')
     faults=$(echo "$last" | sed -E 's/.*oom\/timeout\/crash: ([0-9\/]+).*/\1/')
     secs=$(echo "$last" | sed -E 's/.* time: ([0-9]+)s.*/\1/')
-    echo "$t: $execs executions in ${secs}s, coverage $cov, oom/timeout/crash $faults"
-    if [ -d "artifacts/$t" ] && [ -n "$(ls "artifacts/$t" 2>/dev/null)" ]; then
-        echo "  crashing inputs: $(ls "artifacts/$t" | wc -l) in fuzz/artifacts/$t/"
+    # The statistics line can predate the last crash: count the crashing inputs written instead.
+    crashes=$(find "artifacts/$t" -type f -newer "$logs/start" 2>/dev/null | wc -l)
+    echo "$t: $execs executions in ${secs}s, coverage $cov, oom/timeout $(echo "$faults" | cut -d/ -f1-2), crashes $crashes"
+    if [ "$crashes" -gt 0 ]; then
+        echo "  new crashing inputs in fuzz/artifacts/$t/"
     fi
 }
 
 echo "fuzz.sh: $minutes minute(s) per target, two at a time; logs in $logs"
+touch "$logs/start"
 set -- $targets
 while [ $# -gt 0 ]; do
     first="$1"; shift
