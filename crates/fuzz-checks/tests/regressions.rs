@@ -134,8 +134,8 @@ fn vatti_shallow_crossing_at_1e15() {
 /// a ring overlapping itself, two rings crossing at a shared point) where features are a few ulps
 /// wide far from the origin (1e9, 1e15, 1e140) or where edges run to points 1e50 and more times
 /// farther than their other ends, so that they are nearly parallel. Every input in
-/// `fuzz/known-issues/vatti/` is one (the check stops at the form; their regions are not
-/// established either way). Crossings there are rounded onto the ulp grid or placed far along
+/// `fuzz/known-issues/vatti/` is one; their regions are right (the next test). Crossings there
+/// are rounded onto the ulp grid or placed far along
 /// nearly parallel edges, and the sweep's order of the active edges is no longer the exact one;
 /// fixing it needs exact or snap-rounded crossings in vatti (issue 15).
 #[test]
@@ -231,4 +231,27 @@ fn line_clippers_plain_determinant_1e_8_off() {
 #[test]
 fn vatti_ulp_long_self_overlap() {
     regression("vatti", "ulp-long-self-overlap");
+}
+
+/// The known issues above break the output's form only: every operation's result on each of them
+/// covers the exact region within the oracle's tolerance.
+#[test]
+fn vatti_known_issues_keep_their_regions() {
+    use clip_core::{BoolOp, FillRule, PolygonClipper};
+    use clip_oracle::polygon::{REGION_TOLERANCE, region_area, tolerance};
+    let dir = fuzz_dir().join("known-issues").join("vatti");
+    let mut count = 0;
+    for entry in fs::read_dir(&dir).expect("the known issues' folder") {
+        let path = entry.expect("readable folder").path();
+        let case = clip_fuzz_checks::vatti::decode(&fs::read(&path).expect("readable input")).expect("a case");
+        let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
+        for op in BoolOp::ALL {
+            let out = clip_vatti::Vatti.clip(&case.subject, &case.clip, op, case.fill).expect("valid input");
+            let layers = [(&case.subject, case.fill), (&case.clip, case.fill), (&out, FillRule::NonZero)];
+            let xor = region_area(&layers, |inside| op.apply(inside[0], inside[1]) != inside[2]);
+            assert!(xor <= tol, "{} {op}: region off by {xor:e} (tolerance {tol:e})", path.display());
+        }
+        count += 1;
+    }
+    assert!(count > 0, "no known issue found under {}", dir.display());
 }
