@@ -34,8 +34,9 @@ if [ "${1:-}" = "--merge" ]; then
     for t in ${*:-$all_targets}; do
         mkdir -p "corpus/$t" "corpus-raw/$t"
         cp -n corpus-raw/"$t"/* "corpus/$t/" 2>/dev/null || true
-        $fuzz cmin $sanitizer "$t" "corpus/$t" -- -max_len=4096 -timeout=10 >"/tmp/fuzz-cmin-$t.log" 2>&1 \
-            || { echo "fuzz.sh: cmin of $t failed, see /tmp/fuzz-cmin-$t.log" >&2; exit 1; }
+        # Set-cover merge: the smallest set of inputs that keeps every feature (smaller than -merge=1).
+        $fuzz cmin $sanitizer "$t" "corpus/$t" -- -max_len=4096 -timeout=10 -set_cover_merge=1 >"${TMPDIR:-/tmp}/fuzz-cmin-$t.log" 2>&1 \
+            || { echo "fuzz.sh: cmin of $t failed, see ${TMPDIR:-/tmp}/fuzz-cmin-$t.log" >&2; exit 1; }
         echo "$t: $(ls "corpus/$t" | wc -l) corpus files, $(du -sb "corpus/$t" | cut -f1) bytes"
     done
     exit 0
