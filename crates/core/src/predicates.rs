@@ -42,19 +42,20 @@ fn coord(p: Point) -> robust::Coord<f64> {
 }
 
 /// Below this fraction of its terms' size, the plain determinant's magnitude is not trusted.
-const TRUSTED_FRACTION: f64 = 1e-8;
+const TRUSTED_FRACTION: f64 = 1e-4;
 
 /// Twice the signed area of triangle `abc`, with an exactly right sign and a magnitude accurate to
-/// a few ulps of the triangle's two sides at its widest angle. Positive when `c` lies left of the
-/// directed line `a -> b`.
+/// a few parts in 10^12 (the plain determinant, where it is above 1e-4 of its terms) or to about
+/// an ulp (otherwise). Positive when `c` lies left of the directed line `a -> b`.
 ///
 /// Callers place crossings by these magnitudes (`t = ga / (ga - gb)`), so the magnitude matters
 /// too. Shewchuk's adaptive `orient2d` stops refining as soon as the sign is certain, with the
-/// magnitude then off by up to its whole size, and its pivot at `c` cancels badly when `a` and `b`
-/// are close together (found by the `window_clippers` fuzz target: a window edge 2.2e-16 long put
-/// a crossing 0.003 off). So where the plain determinant is not clearly above its rounding, the
-/// magnitude is recomputed at the triangle's widest angle (opposite its longest side), with the
-/// sign still from the exact predicate.
+/// magnitude then off by up to its whole size (found by the `window_clippers` fuzz target: a
+/// window edge 2.2e-16 long put a Sutherland-Hodgman crossing 0.003 off, and by the
+/// `line_clippers` one: the line oracle misplaced crossings with sliver windows and far segment
+/// ends). So where the plain determinant is not clearly above its rounding, the magnitude is summed
+/// exactly from the exact products of the exact coordinate differences, and the sign still comes
+/// from the exact predicate.
 #[inline]
 pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
     let (left, right) = ((a.x - c.x) * (b.y - c.y), (a.y - c.y) * (b.x - c.x));
@@ -63,22 +64,76 @@ pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
         return det;
     }
     let exact = robust::orient2d(coord(a), coord(b), coord(c));
-    let refined = cross_at_widest_angle(a, b, c);
-    if (refined > 0.0 && exact > 0.0) || (refined < 0.0 && exact < 0.0) { refined } else { exact }
+    let accurate = accurate_determinant(a, b, c);
+    if (accurate > 0.0 && exact > 0.0) || (accurate < 0.0 && exact < 0.0) { accurate } else { exact }
 }
 
-/// `orient2d`'s determinant taken at the vertex opposite the longest side, where the two sides
-/// multiplied are the shortest and their rounding the smallest.
-fn cross_at_widest_angle(a: Point, b: Point, c: Point) -> f64 {
-    let squared = |p: Point, q: Point| (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y);
-    let (ab, bc, ca) = (squared(a, b), squared(b, c), squared(c, a));
-    if ab >= bc && ab >= ca {
-        (a - c).cross(b - c)
-    } else if bc >= ca {
-        (b - a).cross(c - a)
-    } else {
-        (c - b).cross(a - b)
+/// `(a.x - c.x)(b.y - c.y) - (a.y - c.y)(b.x - c.x)` to about an ulp: every difference split
+/// exactly into two doubles, every product of the parts exactly into two (fused multiply-add), and
+/// the sixteen terms summed exactly into an expansion (Shewchuk's grow-expansion), whose
+/// components are then added smallest first. A compensated sum is not enough: terms of 1e51 that
+/// cancel to 1e25 (a window edge near the origin, a segment end at 6e25) leave it 1e-4 off. The
+/// coordinate range (`MIN_COORDINATE` to `MAX_COORDINATE`) keeps every term a normal number.
+fn accurate_determinant(a: Point, b: Point, c: Point) -> f64 {
+    let (ax, ay, bx, by) = (two_diff(a.x, c.x), two_diff(a.y, c.y), two_diff(b.x, c.x), two_diff(b.y, c.y));
+    let mut expansion = [0.0; 32];
+    let mut len = 0;
+    for (u, v, sign) in [(ax, by, 1.0), (ay, bx, -1.0)] {
+        for x in [u.0, u.1] {
+            for y in [v.0, v.1] {
+                let (p, e) = two_product(x, y);
+                for term in [sign * e, sign * p] {
+                    len = grow_expansion(&mut expansion, len, term);
+                }
+            }
+        }
     }
+    expansion[..len].iter().sum()
+}
+
+/// Adds `b` exactly to the expansion `e[..len]` (non-overlapping components, smallest first) and
+/// returns its new length, dropping zero components.
+fn grow_expansion(e: &mut [f64; 32], len: usize, b: f64) -> usize {
+    let mut q = b;
+    let mut out = 0;
+    for i in 0..len {
+        let (sum, err) = two_sum(q, e[i]);
+        if err != 0.0 {
+            e[out] = err;
+            out += 1;
+        }
+        q = sum;
+    }
+    if q != 0.0 {
+        e[out] = q;
+        out += 1;
+    }
+    out
+}
+
+/// `a + b` exactly, as a rounded sum and its error.
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let x = a + b;
+    let bv = x - a;
+    let av = x - bv;
+    (x, (a - av) + (b - bv))
+}
+
+/// `a - b` exactly, as a rounded difference and its error.
+#[inline]
+fn two_diff(a: f64, b: f64) -> (f64, f64) {
+    let x = a - b;
+    let bv = a - x;
+    let av = x + bv;
+    (x, (a - av) + (bv - b))
+}
+
+/// `a * b` exactly, as a rounded product and its error.
+#[inline]
+fn two_product(a: f64, b: f64) -> (f64, f64) {
+    let x = a * b;
+    (x, a.mul_add(b, -x))
 }
 
 /// Shewchuk's first error bound of `orient2d` (`ccwerrboundA = (3 + 16ε)ε`, ε = 2^-53): a

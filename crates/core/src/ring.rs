@@ -122,12 +122,16 @@ impl Ring {
             return None;
         }
         // Same turn everywhere but winding twice around (a pentagram) is not convex:
-        // the edge directions must sweep 2π exactly once.
+        // the edge directions must sweep 2π exactly once. Each turn is taken the way the exact
+        // test above found: a turn of nearly 180° has a rounded cross product of 0 or the wrong
+        // sign, which counted it as -π and let a ring winding twice pass (found by the
+        // `line_clippers` fuzz target: a window turning back at 3e140 by 1e74).
+        let sign = if turn == Orientation::CounterClockwise { 1.0 } else { -1.0 };
         let mut angle = 0.0f64;
         for i in 0..n {
             let d0 = pts[(i + 1) % n] - pts[i];
             let d1 = pts[(i + 2) % n] - pts[(i + 1) % n];
-            angle += d0.cross(d1).atan2(d0.dot(d1));
+            angle += sign * d0.cross(d1).abs().atan2(d0.dot(d1));
         }
         if angle.abs() > 3.0 * std::f64::consts::PI {
             return None;

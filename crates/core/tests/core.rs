@@ -430,3 +430,32 @@ fn orient2d_magnitude_is_accurate_on_a_short_edge() {
     // Far from degenerate, the plain determinant, with its exact sign.
     assert_eq!(clip_core::predicates::orient2d(Point::new(0.0, 0.0), Point::new(2.0, 0.0), Point::new(0.0, 3.0)), 6.0);
 }
+
+/// Found by the `line_clippers` fuzz target: a window edge near the origin and a segment end at
+/// 6.4e25. The determinant's terms (4e51) cancel to 2.4e25; a compensated sum left it 1e-4 off,
+/// which moved the line oracle's crossing by 1e-7 of the segment. Exactly: 0.875 x 6.4e25 - ...
+#[test]
+fn orient2d_magnitude_survives_heavy_cancellation() {
+    let (p, q) = (Point::new(0.1, 0.7), Point::new(0.6, 1.575));
+    let far = Point::new(6.428640832156875e25, 6.428640829009557e25);
+    // cross(q - p, far - p), with q - p = (0.5, 0.875) to within an ulp of 0.6 and 1.575.
+    let (dx, dy) = (q.x - p.x, q.y - p.y);
+    let expected = dx * (far.y - p.y) - dy * (far.x - p.x);
+    let got = clip_core::predicates::orient2d(p, q, far);
+    assert!((got - expected).abs() <= 1e-12 * expected.abs(), "{got:e} vs {expected:e}");
+}
+
+/// Found by the `line_clippers` fuzz target: a ring that turns back at (3e140, 3e140) by 1e74 and
+/// winds twice passed as convex, because the rounded cross product of that nearly 180° turn was 0
+/// and counted as -π. Cyrus-Beck then clipped against half-planes that are not the window.
+#[test]
+fn a_ring_winding_twice_through_a_hairpin_is_not_convex() {
+    let ring = Ring::new(vec![
+        p(1e149, -1e149),
+        p(2.9230032746618055e48, 1.1063927031522055e74),
+        p(3.0000000000000004e140, 3.0000000000000004e140),
+        p(5.0074178554068125e-33, 4.8458379975725604e-33),
+        p(3.0000000000000004e140, 5e140),
+    ]);
+    assert_eq!(ring.convex_orientation(), None);
+}

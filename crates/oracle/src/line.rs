@@ -5,12 +5,11 @@
 //! (interior under even-odd, or boundary). Adjacent intervals are merged and isolated touch
 //! points dropped.
 
-use clip_core::{
-    FillRule, Location, Point, Polygons, Rect, Segment, SegmentIntersection, VisiblePiece, locate, segment_intersection,
-};
+use clip_core::predicates::{Orientation, orient, orient2d};
+use clip_core::{Point, Polygons, Rect, Segment, SegmentIntersection, VisiblePiece, segment_intersection};
 use core::fmt;
 
-use crate::polygon::rounding_distance;
+use crate::polygon::{SNAP_ROUNDINGS, rounding_distance};
 
 /// The parameter tolerance `verify` compares line clippers' pieces with.
 pub const LINE_T_TOLERANCE: f64 = 1e-9;
@@ -116,9 +115,58 @@ fn t_of(s: Segment, p: Point) -> f64 {
 
 /// `t` on `s` where the interiors of `s` and `e` cross (known to cross).
 fn crossing_t(s: Segment, e: Segment) -> f64 {
-    let (ds, de) = (s.b - s.a, e.b - e.a);
-    let t = (e.a - s.a).cross(de) / ds.cross(de);
+    // From the edge's line function at the ends, each accurate to about an ulp of itself: the
+    // plain cross products cancel for a segment nearly parallel to the edge (found by the
+    // `line_clippers` fuzz target: segments along sliver windows 1e-16 wide).
+    let (ga, gb) = (orient2d(e.a, e.b, s.a), orient2d(e.a, e.b, s.b));
+    let t = ga / (ga - gb);
     if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.5 }
+}
+
+/// Whether the run of `s` ending at event `tb` (it meets no edge inside) is inside the window,
+/// exactly: the parity of the window edges that the segment's line crosses beyond the run, on the
+/// ray from the run through `s.b` (the half-open rule: an edge counts when its ends are on
+/// opposite sides of the line, a point on the line taken as below it). Where an edge crosses the
+/// line comes from exact predicates, or from the same parameters the events were made of. A point
+/// placed inside the run and rounded cannot decide this where the window is thinner than an ulp
+/// (found by the `line_clippers` fuzz target: a segment running 1e-16 inside a sliver window,
+/// whose rounded midpoint fell outside).
+fn run_parity(window: &Polygons, s: Segment, tb: f64) -> bool {
+    let above = |p: Point| orient(s.a, s.b, p) == Orientation::CounterClockwise;
+    let mut inside = false;
+    for e in window.edges() {
+        if above(e.a) != above(e.b) && crosses_beyond(s, e, tb) {
+            inside = !inside;
+        }
+    }
+    inside
+}
+
+/// For an edge `e` whose ends are on opposite sides of the line of `s` (a point on it counting as
+/// below): whether it meets that line at or beyond parameter `tb`.
+fn crosses_beyond(s: Segment, e: Segment, tb: f64) -> bool {
+    let on_line = [e.a, e.b].into_iter().find(|&p| orient(s.a, s.b, p) == Orientation::Collinear);
+    if let Some(v) = on_line {
+        return if on_segment(s, v) { t_of(s, v) >= tb } else { beyond_b(s, v) };
+    }
+    match segment_intersection(s, e) {
+        SegmentIntersection::Crossing(_) => crossing_t(s, e) >= tb,
+        SegmentIntersection::Touching(p) => t_of(s, p) >= tb,
+        // Off the segment: `a` and `b` are on one side of the edge's line, and the crossing is
+        // beyond `b` when `b` is the nearer (accurate magnitudes; equal ones would be parallel).
+        _ => orient2d(e.a, e.b, s.b).abs() < orient2d(e.a, e.b, s.a).abs(),
+    }
+}
+
+/// For `v` on the line of `s` but off the segment: whether it lies beyond `b` (exact comparisons
+/// of coordinates along the line).
+fn beyond_b(s: Segment, v: Point) -> bool {
+    if s.a.x != s.b.x { (v.x > s.b.x) == (s.b.x > s.a.x) } else { (v.y > s.b.y) == (s.b.y > s.a.y) }
+}
+
+/// Whether `p`, on the line of `s`, lies on the segment (ends included).
+fn on_segment(s: Segment, p: Point) -> bool {
+    s.bounds().contains(p)
 }
 
 /// Whether the run `(ta, tb)` of `s`, which meets no edge inside, is in the closed window.
@@ -126,15 +174,7 @@ fn run_is_visible(window: &Polygons, s: Segment, ta: f64, tb: f64, overlaps: &[(
     if overlaps.iter().any(|&(oa, ob)| oa <= ta && tb <= ob) {
         return true; // along an edge: boundary
     }
-    // The midpoint, or if rounding lands it on an edge, other interior points of the run.
-    for f in [0.5, 0.25, 0.75, 0.125, 0.875] {
-        match locate(s.at(ta + (tb - ta) * f), window, FillRule::EvenOdd) {
-            Location::Inside => return true,
-            Location::Outside => return false,
-            Location::Boundary => {}
-        }
-    }
-    true
+    run_parity(window, s, tb)
 }
 
 /// Each segment's pieces as parameter intervals `(t(piece.a), t(piece.b))` on that segment, in
@@ -225,8 +265,9 @@ pub fn check_line_batch(
 }
 
 /// The tolerance on `t` for segment `s`: `t_tolerance`, or, where it is larger, what rounding a
-/// point to f64 moves along the segment at the magnitude of the case's coordinates
-/// (`rounding_distance` of the window's and the segment's bounds, over the segment's length). Far
+/// computed crossing moves along the segment at the magnitude of the case's coordinates
+/// ([`SNAP_ROUNDINGS`] times the `rounding_distance` of the window's and the segment's bounds,
+/// over the segment's length: a crossing is a few ulps off, as in the polygon oracle's snap). Far
 /// from the origin a short segment's pieces cannot end closer to the exact crossings than that
 /// (found by the `line_clippers` fuzz target: segments 1e-6 long at 1e9, where an ulp is 1.2e-7).
 pub fn parameter_tolerance(window_bounds: &Rect, s: Segment, t_tolerance: f64) -> f64 {
@@ -234,7 +275,7 @@ pub fn parameter_tolerance(window_bounds: &Rect, s: Segment, t_tolerance: f64) -
     if len == 0.0 {
         return t_tolerance;
     }
-    t_tolerance.max(rounding_distance(&window_bounds.union(s.bounds())) / len)
+    t_tolerance.max(SNAP_ROUNDINGS * rounding_distance(&window_bounds.union(s.bounds())) / len)
 }
 
 /// Equal within `tol`: each side, shrunk by `tol / 2` at every end, lies inside the other grown

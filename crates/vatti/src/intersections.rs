@@ -37,7 +37,9 @@ impl Sweep<'_> {
                 y_prev = node.pt.y;
             }
             let pos = self.ael.pos(node.left);
+            self.rounded_crossing = true;
             self.cross(pos, node.pt);
+            self.rounded_crossing = false;
         }
         if self.traps.is_some() && yt > y_prev {
             self.emit_slab(y_prev, yt);

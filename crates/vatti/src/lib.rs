@@ -51,8 +51,14 @@
 //!   rounding to its integer grid, drops them: ring counts differ from Clipper2's on many of its
 //!   `Polygons.txt` cases (the cross-library test in `clip-peers` runs Clipper2 on each,
 //!   normalises its output to these conventions and checks the counts agree).
-//! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE`, rings with
-//!   fewer than three distinct points) gives a [`ClipError`]; nothing panics or loops.
+//!   Known limit (found by fuzzing, not fixed): with features a few ulps wide far from the
+//!   origin, or nearly parallel edges running to points 1e50 and more times farther away,
+//!   rounded crossings can break these conventions (a ring the wrong way round, a ring
+//!   overlapping itself), while the region stays within the oracle's tolerance; the repository
+//!   keeps such inputs in `fuzz/known-issues/vatti/`.
+//! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
+//!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
+//!   [`ClipError`]; nothing panics or loops.
 //!
 //! # Example
 //!

@@ -42,6 +42,10 @@ pub(crate) struct Sweep<'a> {
     pub(crate) sorted: Vec<u32>,
     /// The intersection table's buffer, reused between scanbeams.
     pub(crate) table: Vec<Intersection>,
+    /// True while a crossing at a computed (rounded) point is processed: only such a point may
+    /// join the chain of an edge it lies within rounding of; any other point is an exact input
+    /// vertex.
+    pub(crate) rounded_crossing: bool,
 }
 
 impl<'a> Sweep<'a> {
@@ -61,6 +65,7 @@ impl<'a> Sweep<'a> {
             xtop: Vec::new(),
             sorted: Vec::new(),
             table: Vec::new(),
+            rounded_crossing: false,
         }
     }
 
@@ -271,6 +276,8 @@ impl<'a> Sweep<'a> {
             if pos + 1 == ppos || ppos + 1 == pos {
                 break;
             }
+            // The crossings are at the other edges' rounded x on this scanline.
+            self.rounded_crossing = true;
             if ppos > pos {
                 let k = self.ael.at(pos + 1);
                 let x = self.ael.get(k).curr_x.clamp(lo, hi);
@@ -280,6 +287,7 @@ impl<'a> Sweep<'a> {
                 let x = self.ael.get(k).curr_x.clamp(lo, hi);
                 self.cross(pos - 1, Point::new(x, y));
             }
+            self.rounded_crossing = false;
         }
         let (pos, ppos) = (self.ael.pos(id), self.ael.pos(partner));
         if pos + 1 == ppos || ppos + 1 == pos {
@@ -387,9 +395,7 @@ impl<'a> Sweep<'a> {
         let rec = self.out.add_local_min(left, right, p);
         self.ael.get_mut(left).outrec = rec;
         self.ael.get_mut(right).outrec = rec;
-        // At a local minimum p is an input vertex (of one bound at least, with a horizontal
-        // bottom); elsewhere here a rounded crossing.
-        let rounded = !self.is_vertex_of(left, p) && !self.is_vertex_of(right, p);
+        let rounded = self.rounded_crossing && !self.is_vertex_of(left, p) && !self.is_vertex_of(right, p);
         self.node_neighbours(left, p, rounded);
         self.node_neighbours(right, p, rounded);
     }
@@ -410,7 +416,7 @@ impl<'a> Sweep<'a> {
     /// through it (coincident edges lie next to `id`), so overlapping output edges share their
     /// end points and cancel in the clean-up. Only a `rounded` point (a computed crossing) may be
     /// within rounding of an edge instead of on it: an input vertex is exact, and far from the
-    /// origin the rounding allowance (dozens of ulps of the magnitude) spans whole input edges.
+    /// origin the rounding allowance (ulps of the magnitude) spans whole input edges.
     fn node_neighbours(&mut self, id: u32, p: Point, rounded: bool) {
         for rightwards in [false, true] {
             let mut pos = self.ael.pos(id);
@@ -459,7 +465,7 @@ impl<'a> Sweep<'a> {
         if rec != NONE {
             let left = self.is_left(id);
             self.out.add(rec, left, p);
-            let rounded = !self.is_vertex_of(id, p);
+            let rounded = self.rounded_crossing && !self.is_vertex_of(id, p);
             self.node_neighbours(id, p, rounded);
         }
     }

@@ -52,3 +52,22 @@ fn self_crossing_quad_far_from_the_origin_survives() {
     ]);
     assert_every_op_passes(&quad);
 }
+
+/// At 1e15 every vertex here is a multiple of an ulp (0.125) and nothing crosses; the same rings
+/// at the origin were always right. Input vertices were taken for rounded crossings and joined
+/// the chains of edges within 4 ulps, and the xor lost its outer ring.
+#[test]
+fn input_vertices_far_from_the_origin_are_exact() {
+    let (ox, oy, u) = (-1e15, 1e15, 0.125);
+    let at = |pts: &[(f64, f64)]| {
+        Polygons::from(Ring::new(pts.iter().map(|&(x, y)| Point::new(ox + x * u, oy + y * u)).collect()))
+    };
+    let subject = at(&[(0.0, 0.0), (1.0, -3.0), (2.0, 0.0)]);
+    let clip = at(&[(1.0, -1.0), (1.0, -3.0), (6.0, 2.0), (9.0, 6.0), (-2.0, 0.0), (1.0, -3.0)]);
+    for op in BoolOp::ALL {
+        let out = Vatti.clip(&subject, &clip, op, FillRule::EvenOdd).expect("valid input");
+        let rules = OutputRules::conventional(REGION_TOLERANCE);
+        let verdict = check_polygon_result(&subject, &clip, op, FillRule::EvenOdd, &out, &rules);
+        assert!(verdict.is_ok(), "{op}: {}\noutput: {:?}", verdict.unwrap_err(), out.rings);
+    }
+}
