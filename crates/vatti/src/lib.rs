@@ -86,6 +86,7 @@ mod intersections;
 mod output;
 mod raw_rings;
 mod scanbeam;
+mod scratch;
 mod simplify;
 mod sweep;
 mod touches;
@@ -95,9 +96,9 @@ use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, validate_polygons,
 };
 
-use crate::bounds::Bounds;
 use crate::contribution::Rules;
 use crate::raw_rings::RawRings;
+use crate::scratch::Scratch;
 use crate::sweep::Sweep;
 
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
@@ -106,19 +107,29 @@ use crate::sweep::Sweep;
 pub struct Vatti;
 
 impl Vatti {
-    fn sweep(
+    /// Runs the sweep in this thread's reused buffers and hands its raw rings and trapezoids
+    /// to `finish`.
+    fn sweep<T>(
         subject: &Polygons,
         clip: &Polygons,
         op: BoolOp,
         fill: FillRule,
         trapezoids: bool,
-    ) -> Result<(RawRings, Vec<Trapezoid>), ClipError> {
+        finish: impl FnOnce(&RawRings, Vec<Trapezoid>) -> T,
+    ) -> Result<T, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        let bounds = Bounds::build(subject, clip);
-        let mut sweep = Sweep::new(&bounds, Rules { op, fill }, trapezoids);
+        let mut scratch = Scratch::take();
+        scratch.bounds.rebuild(subject, clip);
+        let buffers = std::mem::take(&mut scratch.sweep);
+        let mut sweep = Sweep::new(&scratch.bounds, Rules { op, fill }, trapezoids, buffers);
         sweep.run();
-        Ok((sweep.out.rings(), sweep.traps.take().unwrap_or_default()))
+        sweep.out.rings_into(&mut scratch.raw);
+        let traps = sweep.traps.take().unwrap_or_default();
+        scratch.sweep = sweep.into_buffers();
+        let result = finish(&scratch.raw, traps);
+        scratch.give_back();
+        Ok(result)
     }
 }
 
@@ -132,8 +143,7 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        let (rings, _) = Vatti::sweep(subject, clip, op, fill, false)?;
-        Ok(Polygons::new(cleanup::conventional_rings(&rings)))
+        Vatti::sweep(subject, clip, op, fill, false, |rings, _| Polygons::new(cleanup::conventional_rings(rings)))
     }
 
     fn clip_trapezoids(
@@ -143,7 +153,6 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        let (_, traps) = Vatti::sweep(subject, clip, op, fill, true)?;
-        Ok(traps)
+        Vatti::sweep(subject, clip, op, fill, true, |_, traps| traps)
     }
 }
