@@ -100,6 +100,7 @@ use crate::contribution::Rules;
 use crate::raw_rings::RawRings;
 use crate::scratch::Scratch;
 use crate::sweep::Sweep;
+use crate::touches::Touches;
 
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
 /// operands, polygon or trapezoid output.
@@ -115,7 +116,7 @@ impl Vatti {
         op: BoolOp,
         fill: FillRule,
         trapezoids: bool,
-        finish: impl FnOnce(&RawRings, Vec<Trapezoid>) -> T,
+        finish: impl FnOnce(&RawRings, &mut Touches, Vec<Trapezoid>) -> T,
     ) -> Result<T, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
@@ -127,7 +128,7 @@ impl Vatti {
         sweep.out.rings_into(&mut scratch.raw);
         let traps = sweep.traps.take().unwrap_or_default();
         scratch.sweep = sweep.into_buffers();
-        let result = finish(&scratch.raw, traps);
+        let result = finish(&scratch.raw, &mut scratch.touches, traps);
         scratch.give_back();
         Ok(result)
     }
@@ -143,7 +144,9 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        Vatti::sweep(subject, clip, op, fill, false, |rings, _| Polygons::new(cleanup::conventional_rings(rings)))
+        Vatti::sweep(subject, clip, op, fill, false, |rings, touches, _| {
+            Polygons::new(cleanup::conventional_rings(rings, touches))
+        })
     }
 
     fn clip_trapezoids(
@@ -153,6 +156,6 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        Vatti::sweep(subject, clip, op, fill, true, |_, traps| traps)
+        Vatti::sweep(subject, clip, op, fill, true, |_, _, traps| traps)
     }
 }

@@ -8,6 +8,7 @@ use clip_core::Point;
 use crate::bounds::{Bounds, LocalMinimum, Vertex};
 use crate::raw_rings::RawRings;
 use crate::sweep::SweepBuffers;
+use crate::touches::Touches;
 
 /// Buffers larger than this (bytes of capacity) are freed after the call rather than kept: a
 /// large clip's allocations cost little next to its sweep, and a thread should not hold them.
@@ -17,12 +18,14 @@ thread_local! {
     static SCRATCH: Cell<Option<Scratch>> = const { Cell::new(None) };
 }
 
-/// The input bounds, the sweep's tables and the raw output rings of one clip.
+/// The input bounds, the sweep's tables, the raw output rings and the clean-up's touch search
+/// of one clip.
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
     pub bounds: Bounds,
     pub sweep: SweepBuffers,
     pub raw: RawRings,
+    pub touches: Touches,
 }
 
 impl Scratch {
@@ -48,5 +51,6 @@ impl Scratch {
             + self.raw.points.capacity() * size_of::<Point>()
             + self.raw.ends.capacity() * size_of::<usize>()
             + self.raw.emitted.capacity() * size_of::<u32>()
+            + self.touches.held_bytes()
     }
 }
