@@ -115,9 +115,11 @@ pub(crate) struct ActiveEdges {
 }
 
 impl ActiveEdges {
-    /// Room for `bounds` bounds.
-    pub(crate) fn with_capacity(bounds: usize) -> ActiveEdges {
-        ActiveEdges { edges: Vec::with_capacity(bounds), order: Vec::new() }
+    /// Empties the table, keeping its buffers, with room for `bounds` bounds.
+    pub(crate) fn reset(&mut self, bounds: usize) {
+        self.edges.clear();
+        self.order.clear();
+        self.edges.reserve(bounds);
     }
 
     /// A new edge in the arena (not yet in the order).

@@ -36,27 +36,37 @@ pub(crate) struct LocalMinimum {
 pub(crate) struct Bounds {
     pub vertices: Vec<Vertex>,
     pub minima: Vec<LocalMinimum>,
+    /// The ring being simplified (a reused buffer).
+    ring: Vec<Point>,
 }
 
 impl Bounds {
     /// Links every ring of both operands (repeated and collinear vertices removed, which leaves
-    /// the region unchanged) and lists their local minima by increasing y.
-    pub(crate) fn build(subject: &Polygons, clip: &Polygons) -> Bounds {
+    /// the region unchanged) and lists their local minima by increasing y, in this value's
+    /// buffers (whatever they held before is dropped).
+    pub(crate) fn rebuild(&mut self, subject: &Polygons, clip: &Polygons) {
         let total: usize = [subject, clip].iter().flat_map(|p| &p.rings).map(|r| r.points.len()).sum();
-        let mut b = Bounds { vertices: Vec::with_capacity(total), minima: Vec::new() };
-        let mut simple = Vec::new();
+        self.vertices.clear();
+        self.minima.clear();
+        self.vertices.reserve(total);
+        let mut simple = std::mem::take(&mut self.ring);
         for (kind, polygons) in [(SUBJECT, subject), (CLIP, clip)] {
             for ring in &polygons.rings {
                 simplify_ring_into(&ring.points, &mut simple);
-                b.add_ring(&simple, kind);
+                self.add_ring(&simple, kind);
             }
         }
-        let vertices = &b.vertices;
+        self.ring = simple;
+        let vertices = &self.vertices;
         // Ties in vertex order, as a stable sort would leave them.
-        b.minima.sort_unstable_by(|p, q| {
+        self.minima.sort_unstable_by(|p, q| {
             vertices[p.vertex as usize].pt.y.total_cmp(&vertices[q.vertex as usize].pt.y).then(p.vertex.cmp(&q.vertex))
         });
-        b
+    }
+
+    /// Points the simplification buffer has room for.
+    pub(crate) fn ring_capacity(&self) -> usize {
+        self.ring.capacity()
     }
 
     fn add_ring(&mut self, points: &[Point], kind: u8) {

@@ -19,9 +19,10 @@ use crate::touches::Touches;
 
 /// The sweep's rings as conventional output rings. Only rings that share a point with another
 /// ring (or with themselves) or have a vertex inside a horizontal edge are rebuilt; the others
-/// are already simple and lose only collinear vertices.
-pub(crate) fn conventional_rings(raw: &RawRings) -> Vec<Ring> {
-    let touches = Touches::find(raw);
+/// are already simple and lose only collinear vertices. `touches` is a reused work buffer.
+pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> Vec<Ring> {
+    touches.find(raw);
+    let touches = &*touches;
     let mut out = Vec::with_capacity(raw.len());
     for (i, &t) in touches.touched.iter().enumerate() {
         if !t {
@@ -32,7 +33,7 @@ pub(crate) fn conventional_rings(raw: &RawRings) -> Vec<Ring> {
         }
     }
     if touches.touched.contains(&true) {
-        rebuild(raw, &touches, &mut out);
+        rebuild(raw, touches, &mut out);
     }
     out
 }
@@ -40,7 +41,7 @@ pub(crate) fn conventional_rings(raw: &RawRings) -> Vec<Ring> {
 /// Rebuilds the touched rings (horizontal edges split at the vertices inside them) into simple
 /// rings, pushed onto `out`.
 fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
-    let Touches { touched, splits, ids, distinct: pts } = touches;
+    let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let mut visits: Vec<u32> = Vec::new();
     let mut ring_ends: Vec<usize> = Vec::new();
@@ -205,7 +206,7 @@ mod tests {
     use super::*;
 
     fn conventional_rings(rings: Vec<Vec<Point>>) -> Vec<Ring> {
-        super::conventional_rings(&RawRings::from_rings(rings))
+        super::conventional_rings(&RawRings::from_rings(rings), &mut Touches::default())
     }
 
     fn ring(points: &[(f64, f64)]) -> Vec<Point> {

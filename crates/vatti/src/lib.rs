@@ -92,6 +92,7 @@ mod intersections;
 mod output;
 mod raw_rings;
 mod scanbeam;
+mod scratch;
 mod simplify;
 mod sweep;
 mod touches;
@@ -101,10 +102,11 @@ use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, validate_polygons,
 };
 
-use crate::bounds::Bounds;
 use crate::contribution::Rules;
 use crate::raw_rings::RawRings;
+use crate::scratch::Scratch;
 use crate::sweep::Sweep;
+use crate::touches::Touches;
 
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
 /// operands, polygon or trapezoid output.
@@ -112,19 +114,29 @@ use crate::sweep::Sweep;
 pub struct Vatti;
 
 impl Vatti {
-    fn sweep(
+    /// Runs the sweep in this thread's reused buffers and hands its raw rings and trapezoids
+    /// to `finish`.
+    fn sweep<T>(
         subject: &Polygons,
         clip: &Polygons,
         op: BoolOp,
         fill: FillRule,
         trapezoids: bool,
-    ) -> Result<(RawRings, Vec<Trapezoid>), ClipError> {
+        finish: impl FnOnce(&RawRings, &mut Touches, Vec<Trapezoid>) -> T,
+    ) -> Result<T, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        let bounds = Bounds::build(subject, clip);
-        let mut sweep = Sweep::new(&bounds, Rules { op, fill }, trapezoids);
+        let mut scratch = Scratch::take();
+        scratch.bounds.rebuild(subject, clip);
+        let buffers = std::mem::take(&mut scratch.sweep);
+        let mut sweep = Sweep::new(&scratch.bounds, Rules { op, fill }, trapezoids, buffers);
         sweep.run();
-        Ok((sweep.out.rings(), sweep.traps.take().unwrap_or_default()))
+        sweep.out.rings_into(&mut scratch.raw);
+        let traps = sweep.traps.take().unwrap_or_default();
+        scratch.sweep = sweep.into_buffers();
+        let result = finish(&scratch.raw, &mut scratch.touches, traps);
+        scratch.give_back();
+        Ok(result)
     }
 }
 
@@ -138,8 +150,9 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        let (rings, _) = Vatti::sweep(subject, clip, op, fill, false)?;
-        Ok(Polygons::new(cleanup::conventional_rings(&rings)))
+        Vatti::sweep(subject, clip, op, fill, false, |rings, touches, _| {
+            Polygons::new(cleanup::conventional_rings(rings, touches))
+        })
     }
 
     fn clip_trapezoids(
@@ -149,7 +162,6 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        let (_, traps) = Vatti::sweep(subject, clip, op, fill, true)?;
-        Ok(traps)
+        Vatti::sweep(subject, clip, op, fill, true, |_, _, traps| traps)
     }
 }

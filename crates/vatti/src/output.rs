@@ -41,9 +41,16 @@ pub(crate) struct OutputBuilder {
 }
 
 impl OutputBuilder {
-    /// An empty builder with room for `n` points.
-    pub(crate) fn with_capacity(n: usize) -> OutputBuilder {
-        OutputBuilder { pts: Vec::with_capacity(n), recs: Vec::new() }
+    /// Empties the builder, keeping its buffers, with room for `n` points.
+    pub(crate) fn reset(&mut self, n: usize) {
+        self.pts.clear();
+        self.recs.clear();
+        self.pts.reserve(n);
+    }
+
+    /// Bytes the buffers hold (their capacity).
+    pub(crate) fn held_bytes(&self) -> usize {
+        self.pts.capacity() * size_of::<OutPt>() + self.recs.capacity() * size_of::<OutRec>()
     }
 
     /// AddLocalMin: a new polygon holding `p`, fed by `left_edge` and `right_edge`.
@@ -112,13 +119,11 @@ impl OutputBuilder {
     }
 
     /// Every closed ring, each in `next` order (the result on its left), stamped with the
-    /// points' emission order.
-    pub(crate) fn rings(&self) -> RawRings {
-        let mut raw = RawRings {
-            points: Vec::with_capacity(self.pts.len()),
-            ends: Vec::new(),
-            emitted: Vec::with_capacity(self.pts.len()),
-        };
+    /// points' emission order, into `raw` (emptied first, its buffers kept).
+    pub(crate) fn rings_into(&self, raw: &mut RawRings) {
+        raw.clear();
+        raw.points.reserve(self.pts.len());
+        raw.emitted.reserve(self.pts.len());
         for r in &self.recs {
             if !r.closed || r.left == NONE {
                 continue;
@@ -138,6 +143,5 @@ impl OutputBuilder {
             .take(self.pts.len());
             raw.push_ring(walk);
         }
-        raw
     }
 }

@@ -16,6 +16,13 @@ pub(crate) struct RawRings {
 }
 
 impl RawRings {
+    /// Drops every ring, keeping the buffers.
+    pub(crate) fn clear(&mut self) {
+        self.points.clear();
+        self.ends.clear();
+        self.emitted.clear();
+    }
+
     /// Number of rings.
     #[inline]
     pub(crate) fn len(&self) -> usize {

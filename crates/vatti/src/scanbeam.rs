@@ -27,6 +27,16 @@ pub(crate) struct Scanbeams {
 }
 
 impl Scanbeams {
+    /// Forgets every mark, keeping the buffer.
+    pub(crate) fn clear(&mut self) {
+        self.heap.clear();
+    }
+
+    /// Marks the buffer has room for.
+    pub(crate) fn capacity(&self) -> usize {
+        self.heap.capacity()
+    }
+
     /// MarkSBT(y): remember a scanline (duplicates are dropped when popped).
     #[inline]
     pub(crate) fn mark(&mut self, y: f64) {

@@ -23,6 +23,39 @@ pub(crate) struct Slide {
     pub max_vertex: u32,
 }
 
+/// The sweep's buffers between runs, so a thread's next clip can reuse them.
+#[derive(Debug, Default)]
+pub(crate) struct SweepBuffers {
+    ael: ActiveEdges,
+    beams: Scanbeams,
+    out: OutputBuilder,
+    traps: Vec<Trapezoid>,
+    maxima: Vec<u32>,
+    settle: Vec<u32>,
+    slides: Vec<Slide>,
+    xtop: Vec<f64>,
+    sorted: Vec<u32>,
+    table: Vec<Intersection>,
+}
+
+impl SweepBuffers {
+    /// Bytes the buffers hold (their capacity), to decide whether keeping them is worth it.
+    pub(crate) fn held_bytes(&self) -> usize {
+        use std::mem::size_of;
+        self.ael.edges.capacity() * size_of::<crate::active::Edge>()
+            + self.out.held_bytes()
+            + self.traps.capacity() * size_of::<Trapezoid>()
+            + self.table.capacity() * size_of::<Intersection>()
+            + self.slides.capacity() * size_of::<Slide>()
+            + 8 * (self.ael.order.capacity()
+                + self.beams.capacity()
+                + self.maxima.capacity()
+                + self.settle.capacity()
+                + self.xtop.capacity()
+                + self.sorted.capacity())
+    }
+}
+
 /// One run of the clipper over two operands.
 pub(crate) struct Sweep<'a> {
     pub rules: Rules,
@@ -49,24 +82,52 @@ pub(crate) struct Sweep<'a> {
 }
 
 impl<'a> Sweep<'a> {
-    pub(crate) fn new(bounds: &'a Bounds, rules: Rules, trapezoids: bool) -> Sweep<'a> {
-        let n = bounds.vertices.len();
+    /// A sweep over `bounds` in the given (emptied) buffers.
+    pub(crate) fn new(bounds: &'a Bounds, rules: Rules, trapezoids: bool, buffers: SweepBuffers) -> Sweep<'a> {
+        let SweepBuffers {
+            mut ael,
+            mut beams,
+            mut out,
+            mut traps,
+            mut maxima,
+            mut settle,
+            mut slides,
+            mut xtop,
+            mut sorted,
+            mut table,
+        } = buffers;
+        ael.reset(2 * bounds.minima.len());
+        beams.clear();
+        out.reset(if trapezoids { 0 } else { bounds.vertices.len() });
+        traps.clear();
+        maxima.clear();
+        settle.clear();
+        slides.clear();
+        xtop.clear();
+        sorted.clear();
+        table.clear();
         Sweep {
             rules,
             bounds,
-            ael: ActiveEdges::with_capacity(2 * bounds.minima.len()),
-            beams: Scanbeams::default(),
-            out: OutputBuilder::with_capacity(if trapezoids { 0 } else { n }),
-            traps: trapezoids.then(Vec::new),
+            ael,
+            beams,
+            out,
+            traps: trapezoids.then_some(traps),
             next_minimum: 0,
-            maxima: Vec::new(),
-            settle: Vec::new(),
-            slides: Vec::new(),
-            xtop: Vec::new(),
-            sorted: Vec::new(),
-            table: Vec::new(),
+            maxima,
+            settle,
+            slides,
+            xtop,
+            sorted,
+            table,
             rounded_crossing: false,
         }
+    }
+
+    /// The buffers back, for the next sweep (trapezoids, if any, moved out first).
+    pub(crate) fn into_buffers(self) -> SweepBuffers {
+        let Sweep { ael, beams, out, traps, maxima, settle, slides, xtop, sorted, table, .. } = self;
+        SweepBuffers { ael, beams, out, traps: traps.unwrap_or_default(), maxima, settle, slides, xtop, sorted, table }
     }
 
     /// Runs the whole sweep. Every scanline is a distinct y above the previous one, taken from

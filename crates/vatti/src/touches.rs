@@ -22,20 +22,50 @@ pub(crate) struct SplitEdge {
 }
 
 /// The rings to rebuild, the horizontal edges to split (in ring and edge order), and the
-/// distinct points: `ids[k]` is point `k`'s index in `distinct`.
-#[derive(Debug, PartialEq)]
+/// distinct points: `ids[k]` is point `k`'s index in `distinct`. The value is reused between
+/// clips (its buffers kept).
+#[derive(Debug, Default)]
 pub(crate) struct Touches {
     pub touched: Vec<bool>,
     pub splits: Vec<SplitEdge>,
     pub ids: Vec<u32>,
     pub distinct: Vec<Point>,
+    /// Work buffers: point index by emission stamp, points in emission order, ring of every
+    /// point, and one run of equal y by x.
+    slot: Vec<u32>,
+    order: Vec<u32>,
+    ring: Vec<u32>,
+    run: Vec<(f64, u32)>,
 }
 
 impl Touches {
     /// Finds them from the emission order, or by sorting every point when that order is not
-    /// monotone in y.
-    pub(crate) fn find(raw: &RawRings) -> Touches {
-        by_emission_order(raw).unwrap_or_else(|| by_sorting(raw))
+    /// monotone in y; whatever this value held before is replaced.
+    pub(crate) fn find(&mut self, raw: &RawRings) {
+        if !self.by_emission_order(raw) {
+            self.by_sorting(raw);
+        }
+    }
+
+    /// Empties the results for `raw`: nothing touched, no splits, ids to be filled.
+    fn reset(&mut self, raw: &RawRings) {
+        self.touched.clear();
+        self.touched.resize(raw.len(), false);
+        self.splits.clear();
+        self.ids.clear();
+        self.ids.resize(raw.points.len(), 0);
+        self.distinct.clear();
+        ring_of(raw, &mut self.ring);
+    }
+
+    /// Bytes the buffers hold (their capacity; split lists not counted).
+    pub(crate) fn held_bytes(&self) -> usize {
+        use std::mem::size_of;
+        self.touched.capacity()
+            + self.splits.capacity() * size_of::<SplitEdge>()
+            + 4 * (self.ids.capacity() + self.slot.capacity() + self.order.capacity() + self.ring.capacity())
+            + self.distinct.capacity() * size_of::<Point>()
+            + self.run.capacity() * size_of::<(f64, u32)>()
     }
 }
 
@@ -45,101 +75,110 @@ fn key(p: Point) -> (u64, u64) {
     ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
 }
 
-/// Ring index of every point.
-fn ring_of(raw: &RawRings) -> Vec<u32> {
-    let mut ring = Vec::with_capacity(raw.points.len());
+/// Ring index of every point, into `ring`.
+fn ring_of(raw: &RawRings, ring: &mut Vec<u32>) {
+    ring.clear();
+    ring.reserve(raw.points.len());
     for i in 0..raw.len() {
         ring.resize(raw.ends[i], i as u32);
     }
-    ring
 }
 
-/// The touches from runs of equal y in emission order; `None` when that order goes down in y.
-fn by_emission_order(raw: &RawRings) -> Option<Touches> {
-    let n = raw.points.len();
-    let stamps = raw.emitted.iter().map(|&s| s as usize + 1).max().unwrap_or(0);
-    let mut slot = vec![NONE; stamps];
-    for (k, &s) in raw.emitted.iter().enumerate() {
-        slot[s as usize] = k as u32;
-    }
-    let order: Vec<u32> = slot.into_iter().filter(|&k| k != NONE).collect();
-    if order.len() != n || order.windows(2).any(|w| raw.points[w[1] as usize].y < raw.points[w[0] as usize].y) {
-        return None;
-    }
-    let ring = ring_of(raw);
-    let next = |k: usize| {
-        let r = ring[k] as usize;
-        if k + 1 == raw.ends[r] { raw.start(r) } else { k + 1 }
-    };
-    let mut t = Touches { touched: vec![false; raw.len()], splits: Vec::new(), ids: vec![0; n], distinct: Vec::new() };
-    let mut run: Vec<(f64, u32)> = Vec::new();
-    for same_y in order.chunk_by(|&a, &b| raw.points[a as usize].y == raw.points[b as usize].y) {
-        if let [k] = *same_y {
-            t.ids[k as usize] = t.distinct.len() as u32;
-            t.distinct.push(raw.points[k as usize]);
-            continue;
+impl Touches {
+    /// The touches from runs of equal y in emission order; false (and nothing found) when that
+    /// order goes down in y.
+    fn by_emission_order(&mut self, raw: &RawRings) -> bool {
+        let n = raw.points.len();
+        let stamps = raw.emitted.iter().map(|&s| s as usize + 1).max().unwrap_or(0);
+        let (mut slot, mut order) = (std::mem::take(&mut self.slot), std::mem::take(&mut self.order));
+        slot.clear();
+        slot.resize(stamps, NONE);
+        for (k, &s) in raw.emitted.iter().enumerate() {
+            slot[s as usize] = k as u32;
         }
-        run.clear();
-        run.extend(same_y.iter().map(|&k| (raw.points[k as usize].x, k)));
-        run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-        for equal in run.chunk_by(|a, b| a.0 == b.0) {
+        order.clear();
+        order.extend(slot.iter().copied().filter(|&k| k != NONE));
+        self.slot = slot;
+        if order.len() != n || order.windows(2).any(|w| raw.points[w[1] as usize].y < raw.points[w[0] as usize].y) {
+            self.order = order;
+            return false;
+        }
+        self.reset(raw);
+        let (ring, mut run) = (std::mem::take(&mut self.ring), std::mem::take(&mut self.run));
+        let t = self;
+        let next = |k: usize| {
+            let r = ring[k] as usize;
+            if k + 1 == raw.ends[r] { raw.start(r) } else { k + 1 }
+        };
+        for same_y in order.chunk_by(|&a, &b| raw.points[a as usize].y == raw.points[b as usize].y) {
+            if let [k] = *same_y {
+                t.ids[k as usize] = t.distinct.len() as u32;
+                t.distinct.push(raw.points[k as usize]);
+                continue;
+            }
+            run.clear();
+            run.extend(same_y.iter().map(|&k| (raw.points[k as usize].x, k)));
+            run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+            for equal in run.chunk_by(|a, b| a.0 == b.0) {
+                let id = t.distinct.len() as u32;
+                t.distinct.push(raw.points[equal[0].1 as usize]);
+                for &(_, k) in equal {
+                    t.ids[k as usize] = id;
+                    if equal.len() > 1 {
+                        t.touched[ring[k as usize] as usize] = true;
+                    }
+                }
+            }
+            for &k in same_y {
+                let (a, b) = (raw.points[k as usize], raw.points[next(k as usize)]);
+                if a.y != b.y {
+                    continue;
+                }
+                let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+                let from = run.partition_point(|&(x, _)| x <= lo);
+                let mut inside = Vec::new();
+                for &(_, j) in run[from..].iter().take_while(|&&(x, _)| x < hi) {
+                    t.touched[ring[j as usize] as usize] = true;
+                    inside.push(t.ids[j as usize]);
+                }
+                if inside.is_empty() {
+                    continue;
+                }
+                let r = ring[k as usize] as usize;
+                t.touched[r] = true;
+                inside.dedup();
+                if a.x > b.x {
+                    inside.reverse();
+                }
+                t.splits.push(SplitEdge { ring: r, edge: k as usize - raw.start(r), inside });
+            }
+        }
+        t.splits.sort_unstable_by_key(|s| (s.ring, s.edge));
+        (t.order, t.ring, t.run) = (order, ring, run);
+        true
+    }
+
+    /// The touches by sorting every point's exact key, and every vertex by y then x.
+    fn by_sorting(&mut self, raw: &RawRings) {
+        self.reset(raw);
+        let t = self;
+        let ring = &t.ring;
+        let mut keyed: Vec<((u64, u64), u32)> =
+            raw.points.iter().enumerate().map(|(k, &p)| (key(p), k as u32)).collect();
+        keyed.sort_unstable();
+        for same in keyed.chunk_by(|a, b| a.0 == b.0) {
             let id = t.distinct.len() as u32;
-            t.distinct.push(raw.points[equal[0].1 as usize]);
-            for &(_, k) in equal {
+            t.distinct.push(raw.points[same[0].1 as usize]);
+            for &(_, k) in same {
                 t.ids[k as usize] = id;
-                if equal.len() > 1 {
+                if same.len() > 1 {
                     t.touched[ring[k as usize] as usize] = true;
                 }
             }
         }
-        for &k in same_y {
-            let (a, b) = (raw.points[k as usize], raw.points[next(k as usize)]);
-            if a.y != b.y {
-                continue;
-            }
-            let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
-            let from = run.partition_point(|&(x, _)| x <= lo);
-            let mut inside = Vec::new();
-            for &(_, j) in run[from..].iter().take_while(|&&(x, _)| x < hi) {
-                t.touched[ring[j as usize] as usize] = true;
-                inside.push(t.ids[j as usize]);
-            }
-            if inside.is_empty() {
-                continue;
-            }
-            let r = ring[k as usize] as usize;
-            t.touched[r] = true;
-            inside.dedup();
-            if a.x > b.x {
-                inside.reverse();
-            }
-            t.splits.push(SplitEdge { ring: r, edge: k as usize - raw.start(r), inside });
-        }
+        drop(keyed);
+        t.splits = split_horizontals(raw, ring, &mut t.touched, &t.ids);
     }
-    t.splits.sort_unstable_by_key(|s| (s.ring, s.edge));
-    Some(t)
-}
-
-/// The touches by sorting every point's exact key, and every vertex by y then x.
-fn by_sorting(raw: &RawRings) -> Touches {
-    let n = raw.points.len();
-    let ring = ring_of(raw);
-    let mut t = Touches { touched: vec![false; raw.len()], splits: Vec::new(), ids: vec![0; n], distinct: Vec::new() };
-    let mut keyed: Vec<((u64, u64), u32)> = raw.points.iter().enumerate().map(|(k, &p)| (key(p), k as u32)).collect();
-    keyed.sort_unstable();
-    for same in keyed.chunk_by(|a, b| a.0 == b.0) {
-        let id = t.distinct.len() as u32;
-        t.distinct.push(raw.points[same[0].1 as usize]);
-        for &(_, k) in same {
-            t.ids[k as usize] = id;
-            if same.len() > 1 {
-                t.touched[ring[k as usize] as usize] = true;
-            }
-        }
-    }
-    drop(keyed);
-    t.splits = split_horizontals(raw, &ring, &mut t.touched, &t.ids);
-    t
 }
 
 /// Every horizontal edge with vertices strictly inside it, in ring and edge order; its ring and
@@ -195,8 +234,10 @@ mod tests {
     /// Both ways agree, on rings stamped in y order (ids may differ, but not which are equal).
     fn both(rings: Vec<Vec<Point>>) -> Touches {
         let raw = RawRings::from_rings(rings);
-        let fast = by_emission_order(&raw).expect("stamped in y order");
-        let sorted = by_sorting(&raw);
+        let mut fast = Touches::default();
+        assert!(fast.by_emission_order(&raw), "stamped in y order");
+        let mut sorted = Touches::default();
+        sorted.by_sorting(&raw);
         assert_eq!((&fast.touched, fast.distinct.len()), (&sorted.touched, sorted.distinct.len()));
         for k in 0..raw.points.len() {
             assert_eq!(fast.distinct[fast.ids[k] as usize], raw.points[k]);
@@ -231,7 +272,9 @@ mod tests {
     fn emission_out_of_y_order_falls_back_to_sorting() {
         let mut raw = RawRings::from_rings(vec![ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)])]);
         raw.emitted.reverse();
-        assert!(by_emission_order(&raw).is_none());
-        assert_eq!(Touches::find(&raw).touched, vec![false]);
+        assert!(!Touches::default().by_emission_order(&raw));
+        let mut t = Touches::default();
+        t.find(&raw);
+        assert_eq!(t.touched, vec![false]);
     }
 }
