@@ -147,8 +147,8 @@ pub const ORIENT_ERROR_BOUND: f64 = (3.0 + 16.0 * (f64::EPSILON / 2.0)) * (f64::
 ///
 /// [`LineSide::side`] has [`orient2d`]'s exact sign and accurate magnitude: the rounded determinant
 /// (`orient2d(b, v, a)` in Shewchuk's operand order) where its magnitude is trusted, `orient2d`
-/// otherwise; [`LineSide::estimate`] gives the rounded value with Shewchuk's error bound for
-/// sign-only filters. Inlined into the caller's loop, the filter costs a few flops and vectorises.
+/// otherwise; [`LineSide::estimate`] gives the rounded value with the bound above which it is
+/// trusted, for loops that filter first and call the predicate for the few left. Inlined into the caller's loop, the filter costs a few flops and vectorises.
 #[derive(Clone, Copy, Debug)]
 pub struct LineSide {
     a: Point,
@@ -163,12 +163,14 @@ impl LineSide {
         LineSide { a, b, d: Point::new(b.x - a.x, b.y - a.y) }
     }
 
-    /// The rounded `f(v)` and its error bound: when `|f| > bound`, the sign of `f` is exact.
+    /// The rounded `f(v)` and the bound above which it is trusted: when `|f| > bound`, the sign
+    /// of `f` is exact and its magnitude as accurate as [`orient2d`]'s (the clippers place
+    /// crossings by it), so a caller can take it as it is; otherwise it calls [`LineSide::side`].
     #[inline(always)]
     pub fn estimate(&self, vx: f64, vy: f64) -> (f64, f64) {
         let l = self.d.x * (vy - self.a.y);
         let r = self.d.y * (vx - self.a.x);
-        (l - r, ORIENT_ERROR_BOUND * (l.abs() + r.abs()))
+        (l - r, TRUSTED_FRACTION * (l.abs() + r.abs()))
     }
 
     /// `f(v)` with an exact sign and a magnitude as accurate as [`orient2d`]'s (crossings are
