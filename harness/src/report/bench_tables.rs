@@ -12,7 +12,6 @@ use crate::measure::timing::{geometric_mean, mean, median};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
 use crate::results_files::bench::{BASELINE, CSV, META, MemoryRecord, read_memory};
-use crate::write::write_file;
 
 /// The markdown file.
 pub const MD: &str = "bench.md";
@@ -228,10 +227,7 @@ fn memory_table(records: &[MemoryRecord], group: &str, clippers: &[String]) -> O
 
 /// Recomputes the bench tables and plots from `out`'s CSVs.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    match section(out)? {
-        Some(section) => write_file(&out.join(MD), &section),
-        None => Ok(()),
-    }
+    super::write_markdown(out, MD, section(out)?)
 }
 
 /// The bench's markdown section after writing its plots; `None` when `out` holds no bench results.

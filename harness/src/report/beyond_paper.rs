@@ -13,7 +13,6 @@ use crate::measure::timing::median;
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
 use crate::results_files::beyond_paper::{CSV, LARGE_CSV, LargeRecord, META, PREPARE_CSV, PrepareRecord};
-use crate::write::write_file;
 
 /// The markdown file.
 pub const MD: &str = "beyond-paper.md";
@@ -273,10 +272,7 @@ pub fn reading(rows: &[Row], large: Option<(f64, f64)>) -> String {
 
 /// Recomputes the section from `out`'s CSVs and writes its markdown and plots.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    match section(out)? {
-        Some(section) => write_file(&out.join(MD), &section),
-        None => Ok(()),
-    }
+    super::write_markdown(out, MD, section(out)?)
 }
 
 /// The section's markdown after writing its plots; `None` when `out` holds no such results.

@@ -16,7 +16,6 @@ use crate::results_files::lecture_curves::{
     CSV, CurveStageRecord, CurveTiming, FIGURE_6_27, FLATTEN_GEO, FLATTEN_VATTI, META, STAGES_CSV, WITH_TESTS,
     WITHOUT_TESTS,
 };
-use crate::write::write_file;
 
 /// The markdown section file.
 pub const MD: &str = "lecture-curves.md";
@@ -267,10 +266,7 @@ pub fn reading(rows: &[Row]) -> String {
 
 /// Recomputes the section from `out`'s CSVs and writes its markdown and plot.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    match section(out)? {
-        Some(section) => write_file(&out.join(MD), &section),
-        None => Ok(()),
-    }
+    super::write_markdown(out, MD, section(out)?)
 }
 
 /// The section's markdown after writing its plot; `None` when `out` holds no curve results.

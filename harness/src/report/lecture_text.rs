@@ -9,17 +9,13 @@ use crate::plot::palette::clipper_colour;
 use crate::report::markdown::{num, table};
 use crate::report::provenance_line::provenance_line;
 use crate::results_files::lecture_text::{CSV, FIGURES, MD, META, PLOT, TextTiming};
-use crate::write::write_file;
 
 /// The rows in the order the notes give the strategies.
 const ORDER: [&str; 5] = ["string", "char", "outline-vatti", "outline-sh-split", "bitmap"];
 
 /// Recomputes the section from `out`'s CSV and writes its markdown and plot.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    match section(out)? {
-        Some(section) => write_file(&out.join(MD), &section),
-        None => Ok(()),
-    }
+    super::write_markdown(out, MD, section(out)?)
 }
 
 /// ns per character against window side, one line per strategy.

@@ -52,3 +52,11 @@ pub fn write_report(out: &Path) -> Result<(), CliError> {
     eprintln!("clipbench: wrote {}", out.join(document::REPORT_FILE).display());
     Ok(())
 }
+
+/// Writes a section's own markdown file (`file` in `out`) when `out` holds its results.
+fn write_markdown(out: &Path, file: &str, section: Option<String>) -> Result<(), CliError> {
+    match section {
+        Some(section) => crate::write::write_file(&out.join(file), &section),
+        None => Ok(()),
+    }
+}

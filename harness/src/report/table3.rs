@@ -13,7 +13,6 @@ use crate::papers::{VATTI_TABLE3, vatti_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::FACTORS;
 use crate::results_files::vatti_table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV};
-use crate::write::write_file;
 
 /// The markdown table file.
 pub const MD: &str = "vatti-table3.md";
@@ -223,10 +222,7 @@ pub fn reading(rows: &[Row]) -> String {
 /// Recomputes the table from `out`'s CSV and writes its markdown and plot; `None` when the CSV
 /// is not there.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    match section(out)? {
-        Some(section) => write_file(&out.join(MD), &section),
-        None => Ok(()),
-    }
+    super::write_markdown(out, MD, section(out)?)
 }
 
 /// The table's markdown section (table, plot link, reading, provenance), after writing its plot;

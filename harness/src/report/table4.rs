@@ -15,7 +15,6 @@ use crate::plot::palette::SIZE_ROWS;
 use crate::results_files::wang_table4::{
     CSV, META, STAGE_TIMES_CSV, STAGES_CSV, StageRecord, StageTimeRecord, WINDOWS_CSV, WindowRecord,
 };
-use crate::write::write_file;
 
 /// The markdown table file.
 pub const MD: &str = "wang-table4.md";
@@ -432,10 +431,7 @@ pub fn reading(rows: &[Row]) -> String {
 
 /// Recomputes the table from `out`'s CSVs and writes its markdown and plot.
 pub fn write(out: &Path) -> Result<(), CliError> {
-    match section(out)? {
-        Some(section) => write_file(&out.join(MD), &section),
-        None => Ok(()),
-    }
+    super::write_markdown(out, MD, section(out)?)
 }
 
 /// The table's markdown section after writing its plot; `None` when `out` holds no Table 4 results.
