@@ -9,7 +9,7 @@ mod text;
 mod wang;
 mod windows;
 
-pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case};
+pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case, filled_object};
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
 pub use large_lines::{
     BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,
