@@ -7,7 +7,7 @@ use clip_core::{
     ArcFill, BoolOp, ClipError, Ellipse, EllipseArc, FillRule, FilledArc, Point, PolygonClipper, Polygons, Rect, Ring,
     WindowKind,
 };
-use clip_curve::{CurveClipper, Stage, flatten_ellipse, flatten_filled_arc, flatten_region, flattening_area_bound};
+use clip_curve::{CurveClipper, Stage, flatten_filled_arc, flatten_region, flattening_area_bound};
 use clip_oracle::curve::{
     TANGENT_T_TOLERANCE, check_filled_region, check_identities, check_region, check_visible, complement_window,
 };
