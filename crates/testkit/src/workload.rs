@@ -6,6 +6,7 @@ mod hard_cases;
 mod large_lines;
 mod shapes;
 mod text;
+mod text_paragraph;
 mod wang;
 mod windows;
 
@@ -16,6 +17,10 @@ pub use large_lines::{
 };
 pub use shapes::convex_hull;
 pub use text::{TEXT_CHARSET, TextCase, text_case};
+pub use text_paragraph::{
+    PARAGRAPH_LEADING, PARAGRAPH_LINES, PARAGRAPH_SIZE, PARAGRAPH_WINDOW_SIDES, paragraph_chars, paragraph_origin,
+    paragraph_window,
+};
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};
