@@ -2,7 +2,7 @@
 //! parts of its closing sides inside the window, and the window's edges inside it, linked into
 //! boundary loops.
 
-use clip_core::predicates::on_segment;
+use clip_core::predicates::{Orientation, on_segment, orient};
 use clip_core::{
     BoundaryPiece, CurveRegion, FilledArc, Location, Point, Rect, Segment, SegmentIntersection, segment_intersection,
 };
@@ -77,22 +77,18 @@ fn side_inside(window: &CurveWindow, boundary: &[Segment], side: Segment, tests:
         CurveWindow::Polygon(w) => w.edges.clone(),
     };
     let edges: Vec<Segment> = edges.into_iter().filter(|e| !tests || e.bounds().intersects(&side.bounds())).collect();
+    let along = |b: &Segment| {
+        orient(side.a, side.b, b.a) == Orientation::Collinear && orient(side.a, side.b, b.b) == Orientation::Collinear
+    };
     cut_by(side, &edges, |m| match window.locate(m) {
         Location::Inside => true,
         Location::Outside => false,
+        // On the boundary: kept where a boundary piece through it runs the same way (the window
+        // on the side's left too).
         Location::Boundary => {
-            let d = side.b - side.a;
-            boundary.iter().any(|b| {
-                on_segment(m, *b) && on_segment(b.a.lerp(b.b, 0.5), extended(side)) && (b.b - b.a).dot(d) > 0.0
-            })
+            boundary.iter().any(|b| on_segment(m, *b) && along(b) && (b.b - b.a).dot(side.b - side.a) > 0.0)
         }
     })
-}
-
-/// `s` stretched far beyond its ends, for the collinearity test of a boundary piece against it.
-fn extended(s: Segment) -> Segment {
-    let d = s.b - s.a;
-    Segment::new(s.a - d * 1e6, s.b + d * 1e6)
 }
 
 /// The four edges of a rectangle, counter-clockwise.
