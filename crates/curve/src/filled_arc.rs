@@ -43,7 +43,8 @@ pub fn clip_filled_arc(window: &CurveWindow, f: &FilledArc, tests: bool) -> Clip
         seen.intervals.iter().map(|&(from, to)| BoundaryPiece::Arc { from, to }).collect();
     let boundary = window.oriented_boundary();
     let near = f.bounds();
-    for side in f.closing_segments() {
+    let closing = f.closing_segments();
+    for &side in &closing {
         pieces.extend(side_inside(window, &boundary, side, tests).into_iter().map(BoundaryPiece::Segment));
     }
     let around = reach(e);
@@ -58,7 +59,7 @@ pub fn clip_filled_arc(window: &CurveWindow, f: &FilledArc, tests: bool) -> Clip
         }
         let inside_ellipse = s.piece(a, b);
         pieces.extend(
-            cut_by(inside_ellipse, &f.closing_segments(), |p| f.locate_closing(p) == Location::Inside)
+            cut_by(inside_ellipse, &closing, |p| f.locate_closing(p) == Location::Inside)
                 .into_iter()
                 .map(BoundaryPiece::Segment),
         );
@@ -72,11 +73,15 @@ pub fn clip_filled_arc(window: &CurveWindow, f: &FilledArc, tests: bool) -> Clip
 /// kept only where the window lies on its left too (the region's side), so a side shared with a
 /// window edge appears once, and not at all where the window lies beyond it.
 fn side_inside(window: &CurveWindow, boundary: &[Segment], side: Segment, tests: bool) -> Vec<Segment> {
-    let edges: Vec<Segment> = match window {
-        CurveWindow::Rectangle(r) => rect_edges(r).to_vec(),
-        CurveWindow::Polygon(w) => w.edges.clone(),
+    let rectangle: [Segment; 4];
+    let all: &[Segment] = match window {
+        CurveWindow::Rectangle(r) => {
+            rectangle = rect_edges(r);
+            &rectangle
+        }
+        CurveWindow::Polygon(w) => &w.edges,
     };
-    let edges: Vec<Segment> = edges.into_iter().filter(|e| !tests || e.bounds().intersects(&side.bounds())).collect();
+    let edges: Vec<Segment> = all.iter().copied().filter(|e| !tests || e.bounds().intersects(&side.bounds())).collect();
     let along = |b: &Segment| {
         orient(side.a, side.b, b.a) == Orientation::Collinear && orient(side.a, side.b, b.b) == Orientation::Collinear
     };
