@@ -40,7 +40,7 @@ pub fn clip_curves(
     clip_curve::check_tolerance(tolerance).map_err(|e| CliError::usage(format!("--tolerance: {e}")))?;
     let visible: Vec<Vec<(f64, f64)>> = objects.iter().map(|o| prepared.visible(&o.arc).intervals).collect();
     let regions: Vec<Option<CurveRegion>> =
-        objects.iter().map(|o| o.filled.then(|| prepared.clip_filled(o.arc.ellipse()).region)).collect();
+        objects.iter().map(|o| o.filled_arc().map(|f| prepared.clip_filled_arc(&f).region)).collect();
     if format == OutputFormat::Svg {
         let pictures: Vec<CurvePicture<'_>> = objects
             .iter()

@@ -1,21 +1,46 @@
-//! Circles, ellipses and arcs read from a small text format or from GeoJSON features with a
-//! `circle` or `ellipse` property, and written back as text (README: "Curves").
+//! Circles, ellipses, arcs and filled arcs (sectors, chord regions) read from a small text format
+//! or from GeoJSON features with a `circle` or `ellipse` property, and written back as text
+//! (README: "Curves").
 
 use std::path::Path;
 
-use clip_core::{Ellipse, EllipseArc, Point};
+use clip_core::{ArcFill, Ellipse, EllipseArc, FilledArc, Point};
 use serde_json::Value;
 
 use crate::cli_error::InputError;
 
-/// One object to clip: an arc or a whole ellipse, and whether to clip it filled (whole ellipses
-/// only) or as an outline.
+/// One object to clip: an arc or a whole ellipse, and whether to clip it filled or as an outline.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CurveObject {
     /// The arc (sweep 2π for a whole ellipse).
     pub arc: EllipseArc,
-    /// Clip the filled ellipse rather than its outline.
+    /// Clip the filled shape rather than the outline.
     pub filled: bool,
+    /// How a filled arc is closed (two radii or its chord); a whole ellipse ignores it.
+    pub fill: ArcFill,
+}
+
+impl CurveObject {
+    /// An outline.
+    pub fn outline(arc: EllipseArc) -> CurveObject {
+        CurveObject { arc, filled: false, fill: ArcFill::Sector }
+    }
+
+    /// A filled shape: the filled ellipse for a whole one, else the arc closed by `fill`.
+    pub fn from_filled(filled: FilledArc) -> CurveObject {
+        CurveObject { arc: *filled.arc(), filled: true, fill: filled.fill() }
+    }
+
+    /// The filled shape, when the object is clipped filled.
+    pub fn filled_arc(&self) -> Option<FilledArc> {
+        self.filled.then(|| FilledArc::new(self.arc, self.fill))
+    }
+
+    /// The bounding box of what is clipped: the filled shape's (a sector's centre included) or
+    /// the outline's.
+    pub fn bounds(&self) -> clip_core::Rect {
+        self.filled_arc().map_or_else(|| self.arc.bounds(), |f| f.bounds())
+    }
 }
 
 /// The curves in a file, or `None` when the file holds no curve (then it is read as polygons or
@@ -52,6 +77,8 @@ fn number(word: &str) -> Result<f64, String> {
 /// circle  CX CY R                     [filled|outline]   (default filled)
 /// ellipse CX CY RX RY [ROTATION]      [filled|outline]   (default filled)
 /// arc     CX CY RX RY ROTATION START SWEEP               (an outline)
+/// sector  CX CY RX RY ROTATION START SWEEP               (filled: the arc and two radii)
+/// chord   CX CY RX RY ROTATION START SWEEP               (filled: the arc and its chord)
 /// ```
 pub fn parse_curve_text(text: &str) -> Result<Option<Vec<CurveObject>>, String> {
     let mut objects = Vec::new();
@@ -62,11 +89,11 @@ pub fn parse_curve_text(text: &str) -> Result<Option<Vec<CurveObject>>, String> 
         }
         let mut words: Vec<&str> = line.split_whitespace().collect();
         let keyword = words.remove(0).to_ascii_lowercase();
-        if !matches!(keyword.as_str(), "circle" | "ellipse" | "arc") {
+        if !matches!(keyword.as_str(), "circle" | "ellipse" | "arc" | "sector" | "chord") {
             if objects.is_empty() {
                 return Ok(None);
             }
-            return Err(format!("line {}: unknown keyword '{keyword}' (circle, ellipse or arc)", n + 1));
+            return Err(format!("line {}: unknown keyword '{keyword}' (circle, ellipse, arc, sector or chord)", n + 1));
         }
         let at = |why: String| format!("line {}: {why}", n + 1);
         let mode = match words.last().map(|w| w.to_ascii_lowercase()) {
@@ -80,26 +107,32 @@ pub fn parse_curve_text(text: &str) -> Result<Option<Vec<CurveObject>>, String> 
             ("circle", [cx, cy, r]) => {
                 let e =
                     Ellipse::circle(Point::new(number(cx)?, number(cy)?), number(r)?).map_err(|e| at(e.to_string()))?;
-                CurveObject { arc: EllipseArc::full(e), filled: mode.unwrap_or(true) }
+                whole(e, mode.unwrap_or(true))
             }
             ("ellipse", [cx, cy, rx, ry, rest @ ..]) if rest.len() <= 1 => {
                 let rotation = rest.first().map_or(Ok(0.0), |w| angle(w)).map_err(at)?;
                 let e = Ellipse::new(Point::new(number(cx)?, number(cy)?), number(rx)?, number(ry)?, rotation)
                     .map_err(|e| at(e.to_string()))?;
-                CurveObject { arc: EllipseArc::full(e), filled: mode.unwrap_or(true) }
+                whole(e, mode.unwrap_or(true))
             }
-            ("arc", [cx, cy, rx, ry, rotation, start, sweep]) => {
-                if mode == Some(true) {
-                    return Err(at("arcs are clipped as outlines; 'filled' applies to circles and ellipses".into()));
+            (kind @ ("arc" | "sector" | "chord"), [cx, cy, rx, ry, rotation, start, sweep]) => {
+                if mode.is_some() {
+                    return Err(at(
+                        "'filled'/'outline' apply to circles and ellipses; an arc is an outline, a sector or chord filled"
+                            .into(),
+                    ));
                 }
                 let e = Ellipse::new(Point::new(number(cx)?, number(cy)?), number(rx)?, number(ry)?, angle(rotation)?)
                     .map_err(|e| at(e.to_string()))?;
                 let arc = EllipseArc::new(e, angle(start)?, angle(sweep)?).map_err(|e| at(e.to_string()))?;
-                CurveObject { arc, filled: false }
+                match kind.parse::<ArcFill>() {
+                    Ok(fill) => CurveObject::from_filled(FilledArc::new(arc, fill)),
+                    Err(_) => CurveObject::outline(arc),
+                }
             }
             (k, w) => {
                 return Err(at(format!(
-                    "'{k}' with {} value(s): expected circle CX CY R | ellipse CX CY RX RY [ROT] | arc CX CY RX RY ROT START SWEEP",
+                    "'{k}' with {} value(s): expected circle CX CY R | ellipse CX CY RX RY [ROT] | arc|sector|chord CX CY RX RY ROT START SWEEP",
                     w.len()
                 )));
             }
@@ -111,8 +144,8 @@ pub fn parse_curve_text(text: &str) -> Result<Option<Vec<CurveObject>>, String> 
 
 /// Parses GeoJSON: a Feature or FeatureCollection whose features have a Point geometry (the
 /// centre) and a `circle: {radius}` or `ellipse: {rx, ry, rotation}` property, optionally
-/// `arc: {start, sweep}` (degrees) and `filled` (default true for whole curves). `None` when no
-/// feature has a curve property.
+/// `arc: {start, sweep}` (degrees) with `fill: "sector" | "chord"` to fill it, and `filled`
+/// (default true for whole curves). `None` when no feature has a curve property.
 pub fn parse_curve_geojson(text: &str) -> Result<Option<Vec<CurveObject>>, String> {
     let json: Value = serde_json::from_str(text).map_err(crate::read::not_valid_geojson)?;
     let features: Vec<&Value> = match json.get("type").and_then(Value::as_str) {
@@ -157,23 +190,41 @@ fn feature(f: &Value) -> Result<CurveObject, String> {
     }
     .map_err(|e| e.to_string())?;
     let filled = props.get("filled").and_then(Value::as_bool);
+    let fill = match props.get("fill") {
+        None => None,
+        Some(v) => Some(
+            v.as_str()
+                .ok_or("'fill' must be \"sector\" or \"chord\"")?
+                .parse::<ArcFill>()
+                .map_err(|e| e.to_string())?,
+        ),
+    };
     match props.get("arc") {
         Some(a) => {
-            if filled == Some(true) {
-                return Err("arcs are clipped as outlines; 'filled' applies to circles and ellipses".into());
-            }
             let arc = EllipseArc::new(e, field(a, "start")?.to_radians(), field(a, "sweep")?.to_radians())
                 .map_err(|e| e.to_string())?;
-            Ok(CurveObject { arc, filled: false })
+            match (fill, filled) {
+                (Some(fill), Some(true) | None) => Ok(CurveObject::from_filled(FilledArc::new(arc, fill))),
+                (None, Some(false) | None) => Ok(CurveObject::outline(arc)),
+                (Some(_), Some(false)) => Err("'fill' closes a filled arc, but 'filled' is false".into()),
+                (None, Some(true)) => Err("a filled arc needs 'fill': \"sector\" or \"chord\"".into()),
+            }
         }
-        None => Ok(CurveObject { arc: EllipseArc::full(e), filled: filled.unwrap_or(true) }),
+        None if fill.is_some() => Err("'fill' applies to arcs; give an 'arc' or drop it".into()),
+        None => Ok(whole(e, filled.unwrap_or(true))),
     }
+}
+
+/// A whole ellipse, filled or as an outline.
+fn whole(e: Ellipse, filled: bool) -> CurveObject {
+    let arc = EllipseArc::full(e);
+    if filled { CurveObject::from_filled(FilledArc::whole(e)) } else { CurveObject::outline(arc) }
 }
 
 /// The objects in the text format, exactly (radians written with `rad`, shortest round-trip
 /// decimals), so a saved case reads back bit for bit.
 pub fn curves_to_text(objects: &[CurveObject]) -> String {
-    let mut text = String::from("# clipbench curves: circle/ellipse/arc, angles in radians ('rad')\n");
+    let mut text = String::from("# clipbench curves: ellipse/arc/sector/chord, angles in radians ('rad')\n");
     for o in objects {
         let e = o.arc.ellipse();
         let (c, (rx, ry)) = (e.center(), e.radii());
@@ -181,8 +232,9 @@ pub fn curves_to_text(objects: &[CurveObject]) -> String {
             let mode = if o.filled { "filled" } else { "outline" };
             format!("ellipse {:?} {:?} {rx:?} {ry:?} {:?}rad {mode}", c.x, c.y, e.rotation())
         } else {
+            let keyword = if o.filled { o.fill.name() } else { "arc" };
             format!(
-                "arc {:?} {:?} {rx:?} {ry:?} {:?}rad {:?}rad {:?}rad",
+                "{keyword} {:?} {:?} {rx:?} {ry:?} {:?}rad {:?}rad {:?}rad",
                 c.x,
                 c.y,
                 e.rotation(),
@@ -210,6 +262,13 @@ mod tests {
         assert!((objects[2].arc.start() - 315f64.to_radians()).abs() < 1e-12);
         let back = parse_curve_text(&curves_to_text(&objects)).unwrap().unwrap();
         assert_eq!(back, objects);
+        let filled = parse_curve_text("sector 0 0 2 1 10 30 120\nchord 1 1 3 3 0 -90 270\n").unwrap().unwrap();
+        assert_eq!(
+            filled.iter().map(|o| o.filled_arc().map(|f| f.fill())).collect::<Vec<_>>(),
+            vec![Some(ArcFill::Sector), Some(ArcFill::Chord)]
+        );
+        assert!((filled[1].arc.sweep() - 1.5 * std::f64::consts::PI).abs() < 1e-12);
+        assert_eq!(parse_curve_text(&curves_to_text(&filled)).unwrap().unwrap(), filled);
     }
 
     #[test]
@@ -221,6 +280,20 @@ mod tests {
         assert!(parse_curve_text("circle 0 x 1\n").is_err());
         assert!(parse_curve_text("arc 0 0 1 1 0 0 400\n").is_err());
         assert!(parse_curve_text("arc 0 0 1 1 0 0 90 filled\n").is_err());
+        // Filled arcs: empty, negative or over-full sweeps, non-finite angles, bad radii.
+        for bad in [
+            "sector 0 0 1 1 0 0 0",
+            "chord 0 0 1 1 0 0 -10",
+            "sector 0 0 1 1 0 0 361",
+            "chord 0 0 1 1 0 nan 90",
+            "sector 0 0 0 1 0 0 90",
+            "chord 0 0 -1 -1 0 0 90",
+            "sector 0 0 1 1 0 0 90 filled",
+            "chord 0 0 1 1 0 0",
+        ] {
+            let e = parse_curve_text(bad).unwrap_err();
+            assert!(e.contains("line 1"), "{bad}: {e}");
+        }
         assert!(parse_curve_text("ellipse 0 0 1 1 nan\n").is_err());
     }
 
@@ -238,5 +311,22 @@ mod tests {
         assert_eq!(parse_curve_geojson(polygon).unwrap(), None);
         let bad = r#"{"type":"Feature","geometry":{"type":"Point","coordinates":[0,0]},"properties":{"circle":{"radius":0}}}"#;
         assert!(parse_curve_geojson(bad).unwrap_err().contains("positive"));
+        let feature = |props: &str| {
+            format!(r#"{{"type":"Feature","geometry":{{"type":"Point","coordinates":[0,0]}},"properties":{props}}}"#)
+        };
+        let chord =
+            parse_curve_geojson(&feature(r#"{"circle":{"radius":2},"arc":{"start":0,"sweep":90},"fill":"chord"}"#))
+                .unwrap()
+                .unwrap();
+        assert_eq!(chord[0].filled_arc().map(|f| f.fill()), Some(ArcFill::Chord));
+        for bad in [
+            r#"{"circle":{"radius":2},"arc":{"start":0,"sweep":90},"fill":"pie"}"#,
+            r#"{"circle":{"radius":2},"arc":{"start":0,"sweep":0},"fill":"sector"}"#,
+            r#"{"circle":{"radius":2},"arc":{"start":0,"sweep":90},"filled":true}"#,
+            r#"{"circle":{"radius":2},"arc":{"start":0,"sweep":90},"fill":"sector","filled":false}"#,
+            r#"{"circle":{"radius":2},"fill":"sector"}"#,
+        ] {
+            assert!(parse_curve_geojson(&feature(bad)).is_err(), "{bad}");
+        }
     }
 }

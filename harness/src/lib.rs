@@ -29,6 +29,7 @@ pub mod report;
 pub mod reproduce;
 pub mod results_files;
 pub mod text_cmd;
+pub mod text_paragraph;
 pub mod text_svg;
 pub mod verify;
 pub mod write;

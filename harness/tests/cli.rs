@@ -449,6 +449,33 @@ fn clip_takes_circles_ellipses_and_arcs_as_text_and_geojson() {
 }
 
 #[test]
+fn clip_takes_sectors_and_chord_regions() {
+    let dir = scratch("clip-filled-arcs");
+    let window = write(&dir, "window.wkt", "POLYGON((0 0,10 0,10 10,0 10,0 0))");
+    // Centred on the corner (0, 0), radius 4: the sector over 0°..180° keeps its quarter in the
+    // window (4π); the chord region over 0°..90° is all inside (4π - 8).
+    let text = write(&dir, "arcs.curve", "sector 0 0 4 4 0 0 180\nchord 0 0 4 4 0 0 90\n");
+    let o = clipbench(&["clip", "--clipper", "curve", &text, &window, "--tolerance", "1e-7"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let area = wkt_area(&stdout(&o));
+    let exact = 4.0 * std::f64::consts::PI + (4.0 * std::f64::consts::PI - 8.0);
+    assert!((area - exact).abs() < 1e-4, "{area} vs {exact}");
+    let geojson = write(
+        &dir,
+        "arcs.geojson",
+        r#"{"type":"Feature","geometry":{"type":"Point","coordinates":[0,0]},"properties":{"circle":{"radius":4},"arc":{"start":0,"sweep":90},"fill":"chord"}}"#,
+    );
+    let o = clipbench(&["clip", "--clipper", "curve-no-tests", &geojson, &window, "--tolerance", "1e-7"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!((wkt_area(&stdout(&o)) - (4.0 * std::f64::consts::PI - 8.0)).abs() < 1e-4);
+    // An empty sweep is an error naming the line.
+    let bad = write(&dir, "bad.curve", "sector 0 0 4 4 0 30 0\n");
+    let o = clipbench(&["clip", "--clipper", "curve", &bad, &window]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("bad.curve") && stderr(&o).contains("line 1"), "{}", stderr(&o));
+}
+
+#[test]
 fn replay_reruns_a_saved_case() {
     let dir = scratch("replay");
     write(&dir, "subject.wkt", "MULTIPOLYGON(((0 0,2 0,2 2,0 2,0 0)))");

@@ -1,7 +1,8 @@
 //! clip-core: the shared vocabulary of clipbench.
 //!
 //! Points, segments, rings and polygon sets; circles, ellipses and their arcs ([`Ellipse`],
-//! [`EllipseArc`]) and the regions a clipped filled ellipse leaves ([`CurveRegion`]); the boolean
+//! [`EllipseArc`]), filled arcs closed as sectors or chords ([`FilledArc`]) and the regions a
+//! clipped filled ellipse or arc leaves ([`CurveRegion`]); the boolean
 //! operations and fill rules; one module of exact predicates (Shewchuk's adaptive arithmetic
 //! through the `robust` crate) through which every orientation and in/out decision goes; typed
 //! errors for bad input; and the
@@ -43,6 +44,7 @@ mod clipper;
 mod curve_region;
 mod ellipse;
 mod error;
+mod filled_arc;
 #[cfg(feature = "geo")]
 mod geo;
 mod line_crossings;
@@ -70,6 +72,7 @@ pub use error::{
     ClipError, MAX_COORDINATE, MIN_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
     validate_segments, validate_window, window_covers,
 };
+pub use filled_arc::{ArcFill, FilledArc};
 pub use line_crossings::{LineCrossings, PARAMETER_SNAP};
 pub use line_frame::{Along, LineFrame};
 pub use nesting::{NestedPolygon, nest};

@@ -103,9 +103,9 @@ impl fmt::Display for FillRule {
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("unknown {what} '{given}' (expected one of: {valid})")]
 pub struct UnknownName {
-    what: &'static str,
-    given: String,
-    valid: &'static str,
+    pub(crate) what: &'static str,
+    pub(crate) given: String,
+    pub(crate) valid: &'static str,
 }
 
 impl FromStr for BoolOp {

@@ -1,7 +1,9 @@
 //! The clipper: a window prepared once, then curves clipped one by one, with the lecture's
 //! preliminary tests on or off.
 
-use clip_core::{ClipError, Ellipse, EllipseArc, Polygons};
+use clip_core::{ClipError, Ellipse, EllipseArc, FilledArc, Polygons};
+
+use crate::filled_arc::clip_filled_arc;
 
 use crate::outline::{Visible, visible};
 use crate::region::{Clipped, clip_filled};
@@ -61,5 +63,11 @@ impl PreparedCurveWindow {
     /// The part of the filled ellipse inside the window, and the stage that settled it.
     pub fn clip_filled(&self, ellipse: &Ellipse) -> Clipped {
         clip_filled(&self.window, ellipse, self.tests)
+    }
+
+    /// The part of the filled arc (sector or chord region; a whole ellipse when its sweep is 2π)
+    /// inside the window, and the stage that settled it (its own box, then its arc's tests).
+    pub fn clip_filled_arc(&self, filled: &FilledArc) -> Clipped {
+        clip_filled_arc(&self.window, filled, self.tests)
     }
 }

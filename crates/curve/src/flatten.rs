@@ -1,6 +1,6 @@
 //! Arcs and clipped regions turned into polylines and rings within a requested tolerance.
 
-use clip_core::{BoundaryPiece, ClipError, CurveRegion, Ellipse, Point, Polygons, Ring};
+use clip_core::{BoundaryPiece, ClipError, CurveRegion, Ellipse, FilledArc, Point, Polygons, Ring};
 
 /// Most vertices a flattening may make before the tolerance is refused as too fine.
 pub const MAX_FLATTEN_VERTICES: usize = 10_000_000;
@@ -107,6 +107,12 @@ pub fn flatten_region(region: &CurveRegion, tolerance: f64) -> Result<Polygons, 
 /// polygon route's input.
 pub fn flatten_ellipse(e: &Ellipse, tolerance: f64) -> Result<Polygons, ClipError> {
     flatten_region(&CurveRegion::whole(*e), tolerance)
+}
+
+/// The whole filled arc (sector or chord region) as one counter-clockwise ring within
+/// `tolerance`: the polygon route's input for filled arcs.
+pub fn flatten_filled_arc(filled: &FilledArc, tolerance: f64) -> Result<Polygons, ClipError> {
+    flatten_region(&filled.region(), tolerance)
 }
 
 /// The bound on `|flattened area - exact area|`: `tolerance` times the arcs' length, the arc

@@ -19,6 +19,7 @@
 //! | ... then octants (circles) | [`Stage::Octants`]: quadrants halved at multiples of π/4 |
 //! | curve-line equations | `crossings`: one `acos` per rectangle side, a stable quadratic in the ellipse's unit frame per polygon edge |
 //! | clipped filled circle (Fig. 6-27) | [`PreparedCurveWindow::clip_filled`], a `clip_core::CurveRegion` |
+//! | filled arcs (sectors, segments) | [`PreparedCurveWindow::clip_filled_arc`] on a `clip_core::FilledArc` |
 //!
 //! # Conventions and limits
 //!
@@ -32,11 +33,20 @@
 //! - Filled regions are bounded by the visible arcs and the window's even-odd boundary pieces
 //!   inside the ellipse (`oriented_boundary` splits crossing rings and cancels doubled edges, so
 //!   any window works), linked into loops; the area is Green's theorem over the loops: sectors
-//!   plus triangles about the centre, exact to rounding. Filled arcs (sectors) are not offered.
+//!   plus triangles about the centre, exact to rounding.
+//! - Filled arcs (`clip_core::FilledArc`: the arc closed by two radii, a sector, or by its chord,
+//!   a segment) add their closing sides, clipped to the window as segments, and keep only the
+//!   window pieces inside the closing half-plane or wedge; their exact unclipped area is the
+//!   sector formula `rx ry sweep / 2` or the segment formula `rx ry (sweep - sin sweep) / 2`. The
+//!   box test uses the filled arc's own box (the centre included for a sector); the quadrant and
+//!   octant tests apply to its arc. A closing side lying along a window edge is kept once when
+//!   the window is on the region's side and dropped when it is beyond (exact tests on the
+//!   rounded midpoint).
 //! - [`flatten_region`] gives `Polygons` within a tolerance (inscribed chords); its area is
 //!   within [`flattening_area_bound`] of the exact one.
 //! - Bad input is a `clip_core::ClipError`: radii not positive, non-finite parameters, sweeps
-//!   outside (0, 2π] (all refused when the `Ellipse` / `EllipseArc` is built), degenerate
+//!   outside (0, 2π], empty sweeps of filled arcs (all refused when the `Ellipse` / `EllipseArc`
+//!   is built, so every `FilledArc` is valid), degenerate
 //!   windows, tolerances not positive or too fine. Nothing panics.
 //!
 //! # Example
@@ -61,6 +71,7 @@ pub struct ReadmeDoctests;
 mod boundary_edges;
 mod clipper;
 mod crossings;
+mod filled_arc;
 mod flatten;
 mod outline;
 mod preliminary;
@@ -70,8 +81,8 @@ mod window;
 pub use boundary_edges::oriented_boundary;
 pub use clipper::{CurveClipper, PreparedCurveWindow};
 pub use flatten::{
-    MAX_FLATTEN_VERTICES, check_tolerance, flatten_arc, flatten_ellipse, flatten_intervals, flatten_region,
-    flattening_area_bound,
+    MAX_FLATTEN_VERTICES, check_tolerance, flatten_arc, flatten_ellipse, flatten_filled_arc, flatten_intervals,
+    flatten_region, flattening_area_bound,
 };
 pub use outline::{ANGLE_SNAP, Visible};
 pub use preliminary::Stage;

@@ -88,7 +88,7 @@ fn edges_inside(window: &CurveWindow, e: &Ellipse, tests: bool) -> Vec<BoundaryP
 /// to its end, and a loop closes when its own start is at least as near. Exact ends are not
 /// needed: the ends of an arc and of the window piece it meets are the same crossing computed
 /// two ways, equal to rounding.
-fn link(mut pieces: Vec<BoundaryPiece>, e: &Ellipse) -> Vec<Vec<BoundaryPiece>> {
+pub(crate) fn link(mut pieces: Vec<BoundaryPiece>, e: &Ellipse) -> Vec<Vec<BoundaryPiece>> {
     let mut loops = Vec::new();
     while let Some(first) = pieces.pop() {
         let start = first.start(e);

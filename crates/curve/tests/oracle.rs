@@ -4,11 +4,14 @@
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use clip_core::{
-    BoolOp, ClipError, Ellipse, EllipseArc, FillRule, Point, PolygonClipper, Polygons, Rect, Ring, WindowKind,
+    ArcFill, BoolOp, ClipError, Ellipse, EllipseArc, FillRule, FilledArc, Point, PolygonClipper, Polygons, Rect, Ring,
+    WindowKind,
 };
-use clip_curve::{CurveClipper, Stage, flatten_ellipse, flatten_region, flattening_area_bound};
-use clip_oracle::curve::{TANGENT_T_TOLERANCE, check_identities, check_region, check_visible, complement_window};
-use clip_testkit::workload::{CURVE_WORKLOADS, curve_case};
+use clip_curve::{CurveClipper, Stage, flatten_filled_arc, flatten_region, flattening_area_bound};
+use clip_oracle::curve::{
+    TANGENT_T_TOLERANCE, check_filled_region, check_identities, check_region, check_visible, complement_window,
+};
+use clip_testkit::workload::{CURVE_WORKLOADS, curve_case, filled_object};
 use clip_vatti::Vatti;
 
 fn close(a: f64, b: f64, tol: f64) -> bool {
@@ -34,21 +37,29 @@ fn workloads_pass_the_oracle_with_and_without_tests_and_agree() {
                         let t = TANGENT_T_TOLERANCE;
                         assert!(close(x.0, y.0, t) && close(x.1, y.1, t), "{what}: {a:?} vs {b:?}");
                     }
-                    let rest_window = complement_window(&case.window, &arc.bounds());
+                    // Around the filled arc too (a sector's centre may lie beyond its arc's box).
+                    let rest_window = complement_window(&case.window, &filled_object(*arc, k).bounds());
                     let c = CurveClipper::WITH_TESTS.prepare(&rest_window).unwrap().visible(arc);
+                    // Every object filled too: whole ellipses, sectors and chord regions.
+                    let filled = filled_object(*arc, k);
+                    let e = arc.ellipse();
+                    let fa = on.clip_filled_arc(&filled);
+                    let fb = off.clip_filled_arc(&filled);
+                    check_filled_region(&case.window, &filled, &fa.region)
+                        .unwrap_or_else(|err| panic!("{what}: {err}"));
+                    check_filled_region(&case.window, &filled, &fb.region)
+                        .unwrap_or_else(|err| panic!("{what} (no tests): {err}"));
+                    assert!(close(fa.region.area(), fb.region.area(), 1e-9 * e.bounds().area()), "{what}");
+                    let out = CurveClipper::WITH_TESTS.prepare(&rest_window).unwrap().clip_filled_arc(&filled);
+                    check_identities(
+                        arc,
+                        &a.intervals,
+                        &c.intervals,
+                        Some((&filled, fa.region.area(), out.region.area())),
+                    )
+                    .unwrap_or_else(|err| panic!("{what}: {err}"));
                     if arc.is_closed() {
-                        let e = arc.ellipse();
-                        let fa = on.clip_filled(e);
-                        let fb = off.clip_filled(e);
-                        check_region(&case.window, &fa.region).unwrap_or_else(|err| panic!("{what}: {err}"));
-                        check_region(&case.window, &fb.region).unwrap_or_else(|err| panic!("{what} (no tests): {err}"));
-                        assert!(close(fa.region.area(), fb.region.area(), 1e-9 * e.bounds().area()), "{what}");
-                        let out = CurveClipper::WITH_TESTS.prepare(&rest_window).unwrap().clip_filled(e);
-                        check_identities(arc, &a.intervals, &c.intervals, Some((fa.region.area(), out.region.area())))
-                            .unwrap_or_else(|err| panic!("{what}: {err}"));
-                    } else {
-                        check_identities(arc, &a.intervals, &c.intervals, None)
-                            .unwrap_or_else(|err| panic!("{what}: {err}"));
+                        assert_eq!(on.clip_filled(e), fa, "{what}: a whole ellipse is the filled ellipse");
                     }
                 }
             }
@@ -62,21 +73,22 @@ fn the_polygon_route_converges_to_the_exact_area() {
         for kind in [WindowKind::Rectangle, WindowKind::Any] {
             let case = curve_case(workload, 3, 1, kind, 12).unwrap();
             let prepared = CurveClipper::WITH_TESTS.prepare(&case.window).unwrap();
-            for arc in case.objects.iter().filter(|a| a.is_closed()) {
+            for (k, arc) in case.objects.iter().enumerate() {
+                let filled = filled_object(*arc, k);
                 let e = arc.ellipse();
-                let exact = prepared.clip_filled(e).region.area();
+                let exact = prepared.clip_filled_arc(&filled).region.area();
                 let tolerance = 1e-4 * e.max_radius();
-                let ring = flatten_ellipse(e, tolerance).unwrap();
+                let ring = flatten_filled_arc(&filled, tolerance).unwrap();
                 let clipped = Vatti.clip(&ring, &case.window, BoolOp::Intersection, FillRule::EvenOdd).unwrap();
-                let bound =
-                    flattening_area_bound(&clip_core::CurveRegion::whole(*e), tolerance) + 1e-9 * e.bounds().area();
+                let bound = flattening_area_bound(&filled.region(), tolerance) + 1e-9 * e.bounds().area();
                 assert!(
                     close(clipped.signed_area(), exact, bound),
-                    "{workload} {kind:?}: {} vs {exact}",
+                    "{workload} {kind:?} object {k} ({:?}): {} vs {exact}",
+                    filled.fill(),
                     clipped.signed_area()
                 );
                 // The region's own flattening lands within its bound too.
-                let region = prepared.clip_filled(e).region;
+                let region = prepared.clip_filled_arc(&filled).region;
                 let flat = flatten_region(&region, tolerance).unwrap();
                 assert!(close(
                     flat.signed_area(),
@@ -191,4 +203,51 @@ fn bad_input_is_a_typed_error() {
     let c = Ellipse::circle(Point::ZERO, 1.0).unwrap();
     let region = CurveClipper::WITH_TESTS.prepare(&square()).unwrap().clip_filled(&c).region;
     assert!(matches!(flatten_region(&region, 0.0), Err(ClipError::InvalidCurve { .. })));
+    // Filled arcs: empty, negative, over-full and non-finite sweeps or starts are refused when the
+    // arc is built, so no FilledArc can hold them.
+    for (start, sweep) in [(0.0, 0.0), (0.0, -0.5), (0.0, 7.0), (0.0, f64::NAN), (f64::NAN, 1.0), (f64::INFINITY, 1.0)]
+    {
+        assert!(matches!(EllipseArc::new(c, start, sweep), Err(ClipError::InvalidCurve { .. })), "{start} {sweep}");
+    }
+    let sector = FilledArc::new(EllipseArc::new(c, 0.0, 1.0).unwrap(), ArcFill::Sector);
+    for tol in [0.0, -1.0, f64::NAN, 1e-300] {
+        assert!(matches!(flatten_filled_arc(&sector, tol), Err(ClipError::InvalidCurve { .. })), "{tol}");
+    }
+}
+
+#[test]
+fn hand_cases_filled_arcs() {
+    let w = square();
+    let poly = CurveClipper::WITH_TESTS.prepare_polygon(&w).unwrap();
+    for clipper in [CurveClipper::WITH_TESTS, CurveClipper::WITHOUT_TESTS] {
+        let p = clipper.prepare(&w).unwrap();
+        // A half disc centred on the bottom edge, upward: the sector and the chord region are the
+        // same half disc, wholly in the window.
+        let c = Ellipse::circle(Point::new(5.0, 0.0), 2.0).unwrap();
+        let up = EllipseArc::new(c, 0.0, PI).unwrap();
+        for fill in ArcFill::ALL {
+            let got = p.clip_filled_arc(&FilledArc::new(up, fill));
+            assert!(close(got.region.area(), 2.0 * PI, 1e-12), "{fill}: {}", got.region.area());
+        }
+        // The lower half: outside, nothing.
+        let down = FilledArc::new(EllipseArc::new(c, PI, PI).unwrap(), ArcFill::Chord);
+        assert!(p.clip_filled_arc(&down).region.area().abs() < 1e-12);
+        // Three quarters of a disc centred on the corner (0, 0), missing the quarter x, y < 0 ...
+        // of which only the quarter x, y > 0 is in the window.
+        let corner = Ellipse::circle(Point::ZERO, 3.0).unwrap();
+        let three = FilledArc::new(EllipseArc::new(corner, 0.0, 1.5 * PI).unwrap(), ArcFill::Sector);
+        assert!(close(p.clip_filled_arc(&three).region.area(), 2.25 * PI, 1e-12));
+        // ... and its chord region (the arc with the chord from (0, -3) to (3, 0)): the window
+        // keeps the same quarter disc.
+        let three_chord = FilledArc::new(*three.arc(), ArcFill::Chord);
+        assert!(close(p.clip_filled_arc(&three_chord).region.area(), 2.25 * PI, 1e-12));
+        // A rotated elliptic segment across the top edge agrees with the polygon clipper's answer.
+        let e = Ellipse::new(Point::new(4.0, 9.0), 5.0, 2.0, 0.5).unwrap();
+        for fill in ArcFill::ALL {
+            let f = FilledArc::new(EllipseArc::new(e, 2.5, 3.5).unwrap(), fill);
+            let (r, q) = (p.clip_filled_arc(&f).region, poly.clip_filled_arc(&f).region);
+            assert!(close(r.area(), q.area(), 1e-10), "{fill}: {} vs {}", r.area(), q.area());
+            check_filled_region(&w, &f, &r).unwrap();
+        }
+    }
 }

@@ -5,7 +5,8 @@ use core::f64::consts::TAU;
 use core::fmt;
 
 use clip_core::{
-    BoundaryPiece, CurveRegion, Ellipse, EllipseArc, FillRule, Location, Point, Polygons, Rect, Segment, locate,
+    ArcFill, BoundaryPiece, CurveRegion, Ellipse, EllipseArc, FillRule, FilledArc, Location, Point, Polygons, Rect,
+    Segment, locate,
 };
 
 use crate::polygon::rounding_distance;
@@ -117,6 +118,31 @@ pub fn ellipse_side(e: &Ellipse, p: Point, margin: f64) -> Option<bool> {
     } else {
         None
     }
+}
+
+/// Whether `p` is in the closed filled arc (ellipse and closing half-plane or wedge), judged only
+/// when that is certain: `None` when `p` may lie within `margin` of the curve or of the line of a
+/// closing side (the whole line, so some certain points are skipped too).
+pub fn filled_arc_side(f: &FilledArc, p: Point, margin: f64) -> Option<bool> {
+    let in_ellipse = ellipse_side(f.ellipse(), p, margin)?;
+    if f.is_whole() {
+        return Some(in_ellipse);
+    }
+    let e = f.ellipse();
+    let (s, t, c) = (e.point_at(f.arc().start()), e.point_at(f.arc().end()), e.center());
+    // Signed distance of p from the line through a and b, positive on its left.
+    let left_of = |a: Point, b: Point| {
+        let d = (b - a).cross(p - a) / a.distance(b);
+        (d.abs() > margin).then_some(d > 0.0)
+    };
+    let in_closing = match f.fill() {
+        ArcFill::Chord => left_of(t, s)?,
+        ArcFill::Sector => {
+            let (a, b) = (left_of(c, s)?, left_of(t, c)?);
+            if f.arc().sweep() <= core::f64::consts::PI { a && b } else { a || b }
+        }
+    };
+    Some(in_ellipse && in_closing)
 }
 
 fn distance_to_segment(p: Point, s: Segment) -> f64 {
@@ -256,7 +282,16 @@ pub fn region_winding(region: &CurveRegion, p: Point) -> Option<i32> {
 /// surroundings away from every boundary the result winds once around points in both the
 /// ellipse ([`ellipse_side`]) and the window (exact even-odd location) and zero times elsewhere.
 pub fn check_region(window: &Polygons, region: &CurveRegion) -> Result<(), CurveFailure> {
+    check_filled_region(window, &FilledArc::whole(region.ellipse), region)
+}
+
+/// [`check_region`] for a clipped filled arc (sector or chord region; a whole ellipse too):
+/// sample points are judged by [`filled_arc_side`].
+pub fn check_filled_region(window: &Polygons, filled: &FilledArc, region: &CurveRegion) -> Result<(), CurveFailure> {
     let e = &region.ellipse;
+    if e != filled.ellipse() {
+        return Err(CurveFailure::BadLoop("the region is of another ellipse than the filled arc's".into()));
+    }
     let margin = curve_margin(e, window);
     for (i, lp) in region.loops.iter().enumerate() {
         for (j, piece) in lp.iter().enumerate() {
@@ -275,16 +310,16 @@ pub fn check_region(window: &Polygons, region: &CurveRegion) -> Result<(), Curve
         }
     }
     let around = e.bounds().union(window.bounds());
-    let b = e.bounds();
+    let b = filled.bounds();
     let w = window.bounds();
     let overlap = Rect::new(b.min.x.max(w.min.x), b.min.y.max(w.min.y), b.max.x.min(w.max.x), b.max.y.min(w.max.y));
     let look = if overlap.is_empty() { around } else { overlap.inflate(0.05 * overlap.extent()) };
     for p in sample_points(&look) {
-        let Some(in_ellipse) = ellipse_side(e, p, margin) else { continue };
+        let Some(in_shape) = filled_arc_side(filled, p, margin) else { continue };
         if distance_to_boundary(p, window) <= margin {
             continue;
         }
-        let expected = in_ellipse && locate(p, window, FillRule::EvenOdd) == Location::Inside;
+        let expected = in_shape && locate(p, window, FillRule::EvenOdd) == Location::Inside;
         let Some(winding) = region_winding(region, p) else { continue };
         if winding != i32::from(expected) {
             return Err(CurveFailure::WrongPoint { point: p, expected, winding });
@@ -310,13 +345,14 @@ pub fn span(intervals: &[(f64, f64)]) -> f64 {
 }
 
 /// Checks the split identities: spans in the window and in its complement add up to the arc's
-/// sweep (within [`TANGENT_T_TOLERANCE`] per interval end), and, when given, areas to the
-/// ellipse's area (within [`CURVE_AREA_TOLERANCE`] of its bounding box's area).
+/// sweep (within [`TANGENT_T_TOLERANCE`] per interval end), and, when given, the clipped areas of
+/// a filled arc (or whole ellipse) in both to its exact area, [`FilledArc::area`] (within
+/// [`CURVE_AREA_TOLERANCE`] of the ellipse's bounding box's area).
 pub fn check_identities(
     arc: &EllipseArc,
     inside: &[(f64, f64)],
     outside: &[(f64, f64)],
-    areas: Option<(f64, f64)>,
+    areas: Option<(&FilledArc, f64, f64)>,
 ) -> Result<(), CurveFailure> {
     let sum = span(inside) + span(outside);
     let ends = 2 * (inside.len() + outside.len()) + 2;
@@ -326,14 +362,14 @@ pub fn check_identities(
             arc.sweep()
         )));
     }
-    if let Some((a, b)) = areas {
-        let e = arc.ellipse();
-        let tolerance = CURVE_AREA_TOLERANCE * e.bounds().area();
-        if (a + b - e.area()).abs() > tolerance {
+    if let Some((filled, a, b)) = areas {
+        let tolerance = CURVE_AREA_TOLERANCE * filled.ellipse().bounds().area();
+        if (a + b - filled.area()).abs() > tolerance {
             return Err(CurveFailure::Identity(format!(
-                "clipped areas in the window ({a}) and its complement ({b}) add to {}, not the ellipse's {}",
+                "clipped areas in the window ({a}) and its complement ({b}) add to {}, not the {} area {}",
                 a + b,
-                e.area()
+                if filled.is_whole() { "ellipse's" } else { filled.fill().name() },
+                filled.area()
             )));
         }
     }

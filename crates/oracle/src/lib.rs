@@ -17,7 +17,8 @@
 //!   or arc (samples of the curve against exact even-odd point location, interval ends on the
 //!   window's boundary), [`curve::check_region`] for a clipped filled ellipse (samples of the plane
 //!   against a careful point-in-ellipse test and exact location in the window, winding number of
-//!   the region's arcs and segments), and [`curve::check_identities`] (spans and areas in a window
+//!   the region's arcs and segments), [`curve::check_filled_region`] the same for a clipped sector or
+//!   chord region (`clip_core::FilledArc`), and [`curve::check_identities`] (spans and areas in a window
 //!   and in its complement add up to the whole).
 //!
 //! The conventions it checks (output form, the closed-set rule, tolerances) are set out in the

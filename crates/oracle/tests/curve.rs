@@ -2,8 +2,10 @@
 
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
-use clip_core::{BoundaryPiece, CurveRegion, Ellipse, EllipseArc, Point, Polygons, Rect, Segment};
-use clip_oracle::curve::{CurveFailure, check_identities, check_region, check_visible, ellipse_side};
+use clip_core::{ArcFill, BoundaryPiece, CurveRegion, Ellipse, EllipseArc, FilledArc, Point, Polygons, Rect, Segment};
+use clip_oracle::curve::{
+    CurveFailure, check_filled_region, check_identities, check_region, check_visible, ellipse_side, filled_arc_side,
+};
 
 fn square() -> Polygons {
     Polygons::from(Rect::new(0.0, 0.0, 10.0, 10.0))
@@ -45,8 +47,24 @@ fn regions_right_and_wrong() {
     let open = CurveRegion { ellipse: e, loops: vec![vec![BoundaryPiece::Arc { from: FRAC_PI_2, to: 1.5 * PI }]] };
     assert!(matches!(check_region(&square(), &open), Err(CurveFailure::BadLoop(_))));
     // Areas and spans: the half disc and the other half add up; a wrong area does not.
-    assert_eq!(check_identities(&EllipseArc::full(e), &[(0.0, PI)], &[(PI, TAU)], Some((2.0 * PI, 2.0 * PI))), Ok(()));
-    assert!(check_identities(&EllipseArc::full(e), &[(0.0, PI)], &[(PI, TAU)], Some((2.0 * PI, 2.1 * PI))).is_err());
+    assert_eq!(
+        check_identities(
+            &EllipseArc::full(e),
+            &[(0.0, PI)],
+            &[(PI, TAU)],
+            Some((&FilledArc::whole(e), 2.0 * PI, 2.0 * PI))
+        ),
+        Ok(())
+    );
+    assert!(
+        check_identities(
+            &EllipseArc::full(e),
+            &[(0.0, PI)],
+            &[(PI, TAU)],
+            Some((&FilledArc::whole(e), 2.0 * PI, 2.1 * PI))
+        )
+        .is_err()
+    );
     assert!(check_identities(&EllipseArc::full(e), &[(0.0, PI)], &[(PI + 1e-4, TAU)], None).is_err());
 }
 
@@ -62,4 +80,32 @@ fn point_in_ellipse_abstains_near_the_curve() {
     let out = Point::new(1.0 + 4.001 * c, 1.0 + 4.001 * s);
     assert_eq!(ellipse_side(&e, out, 1e-6), Some(false));
     assert_eq!(ellipse_side(&e, out, 1e-2), None);
+}
+
+#[test]
+fn filled_arcs_are_judged_by_their_closing_sides() {
+    // The quarter disc x, y >= 0 of radius 4 about (5, 5), wholly inside the square.
+    let e = Ellipse::circle(Point::new(5.0, 5.0), 4.0).unwrap();
+    let quarter = EllipseArc::new(e, 0.0, FRAC_PI_2).unwrap();
+    let sector = FilledArc::new(quarter, ArcFill::Sector);
+    let chord = FilledArc::new(quarter, ArcFill::Chord);
+    assert_eq!(filled_arc_side(&sector, Point::new(6.0, 6.0), 1e-9), Some(true));
+    assert_eq!(filled_arc_side(&chord, Point::new(6.0, 6.0), 1e-9), Some(false));
+    assert_eq!(filled_arc_side(&sector, Point::new(4.0, 6.0), 1e-9), Some(false));
+    assert_eq!(filled_arc_side(&sector, Point::new(5.0, 6.0), 1e-9), None);
+    assert_eq!(check_filled_region(&square(), &sector, &sector.region()), Ok(()));
+    assert_eq!(check_filled_region(&square(), &chord, &chord.region()), Ok(()));
+    // The sector's loop given as the chord's answer, and the whole disc as the sector's: wrong.
+    assert!(matches!(
+        check_filled_region(&square(), &chord, &sector.region()),
+        Err(CurveFailure::WrongPoint { expected: false, .. })
+    ));
+    assert!(matches!(
+        check_filled_region(&square(), &sector, &CurveRegion::whole(e)),
+        Err(CurveFailure::WrongPoint { expected: false, .. })
+    ));
+    // Areas split between a window and its complement add up to the sector's, not the disc's.
+    let a = 4.0 * PI;
+    assert_eq!(check_identities(&quarter, &[(0.0, FRAC_PI_2)], &[], Some((&sector, a, 0.0))), Ok(()));
+    assert!(check_identities(&quarter, &[(0.0, FRAC_PI_2)], &[], Some((&chord, a, 0.0))).is_err());
 }

@@ -6,16 +6,21 @@ mod hard_cases;
 mod large_lines;
 mod shapes;
 mod text;
+mod text_paragraph;
 mod wang;
 mod windows;
 
-pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case};
+pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case, filled_object};
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
 pub use large_lines::{
     BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,
 };
 pub use shapes::convex_hull;
 pub use text::{TEXT_CHARSET, TextCase, text_case};
+pub use text_paragraph::{
+    PARAGRAPH_LEADING, PARAGRAPH_LINES, PARAGRAPH_SIZE, PARAGRAPH_WINDOW_SIDES, paragraph_chars, paragraph_origin,
+    paragraph_window,
+};
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};

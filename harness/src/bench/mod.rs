@@ -1,11 +1,13 @@
 //! `clipbench bench`: every registered polygon clipper against geo and Clipper2 on the seeded
 //! workloads, all four operations, timed in interleaved rounds; ratios to Clipper2 come from the
 //! same run. Rectangle windows add the rectangle-only clippers; large cases also get peak memory.
+//! The `text` group times clip-text's strategies on a paragraph as the window shrinks.
 //! Writes the raw files only; `report` turns them into tables and plots.
 
 mod memory_probe;
 mod plan;
 mod rounds;
+mod text_rounds;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -18,7 +20,7 @@ use crate::measure::out_dir::ready_out_dir;
 use crate::measure::provenance::Provenance;
 use crate::measure::raw::write_csv;
 use crate::registry::Registry;
-use crate::results_files::bench::{BASELINE, CSV, META, write_memory};
+use crate::results_files::bench::{BASELINE, CSV, META, TEXT_GROUP, write_memory};
 
 /// Arguments of `clipbench bench`.
 #[derive(Debug, clap::Args)]
@@ -40,11 +42,14 @@ pub struct BenchArgs {
     #[arg(long, value_name = "N")]
     pub rounds: Option<usize>,
     /// Clipper to time (repeat for several; default: every registered polygon clipper). The
-    /// baseline (Clipper2) is always timed too, so every point keeps its ratio.
+    /// baseline (Clipper2) is always timed too, so every point keeps its ratio. The text group's
+    /// rows are `text-string`, `text-char`, `text-outline` (Vatti), `text-outline-sh-split` and
+    /// `text-bitmap`.
     #[arg(long = "clipper", value_name = "NAME")]
     pub clippers: Vec<String>,
     /// Bench group to run, by its name in bench.csv (`star`, `scribble`, `grid`, `holes`,
-    /// `large-smooth`, `large-checkerboard`, `star-rect`, `large-rect`; repeat; default: all).
+    /// `large-smooth`, `large-checkerboard`, `star-rect`, `large-rect`, and `text`: the text
+    /// strategies on a paragraph as the window shrinks; repeat; default: all).
     #[arg(long = "workload", value_name = "NAME")]
     pub workloads: Vec<String>,
     /// Operation to time (repeat; default: all four).
@@ -75,14 +80,31 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
     if rounds == 0 {
         return Err(CliError::usage("--rounds must be at least 1"));
     }
-    if registry.find_polygon(BASELINE).is_none() {
-        return Err(CliError::failed(format!("the baseline clipper '{BASELINE}' is not registered")));
-    }
-    let registry = &select_clippers(registry, &args.clippers)?;
-    let groups = plan::select(plan::groups(args.quick), &args.workloads, &args.ops)?;
-    let out = ready_out_dir(&args.out)?;
+    let plan = Plan::new(args)?;
     let settings = rounds::Settings { seed: args.seed, rounds, cap_seconds: cap, quick: args.quick };
-    let measured = rounds::run(&groups, registry, &settings)?;
+    let (registry, groups) = if plan.polygon {
+        if registry.find_polygon(BASELINE).is_none() {
+            return Err(CliError::failed(format!("the baseline clipper '{BASELINE}' is not registered")));
+        }
+        let registry = select_clippers(registry, &plan.polygon_clippers)?;
+        let groups = plan::select(plan::groups(args.quick), &plan.polygon_groups, &args.ops)?;
+        (registry, groups)
+    } else {
+        // Text only: no polygon clipper is timed.
+        let mut registry = registry;
+        registry.polygon.clear();
+        (registry, Vec::new())
+    };
+    let out = ready_out_dir(&args.out)?;
+    let mut measured = if groups.is_empty() {
+        rounds::Measured { rows: Vec::new(), memory: Vec::new(), notes: Vec::new() }
+    } else {
+        rounds::run(&groups, &registry, &settings)?
+    };
+    let text = if plan.text_rows.is_empty() { None } else { Some(text_rounds::run(&plan.text_rows, &settings)?) };
+    if let Some(t) = &text {
+        measured.rows.extend(t.rows.iter().cloned());
+    }
 
     write_csv(&out.join(CSV), &measured.rows)?;
     write_memory(&out, &measured.memory)?;
@@ -95,6 +117,7 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
         "groups": groups.iter().map(plan::Group::describe).collect::<Vec<_>>(),
         "clippers": registry.polygon.iter().map(|e| e.clipper.name()).collect::<Vec<_>>(),
         "baseline": BASELINE,
+        TEXT_GROUP: text.as_ref().map(|t| t.parameters.clone()),
     });
     let mut provenance = Provenance::now(if args.quick { "bench --quick" } else { "bench" }, args.seed, parameters);
     if registry.polygon.iter().any(|e| e.own_time.is_some()) {
@@ -105,15 +128,59 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
                 .to_owned(),
         );
     }
-    provenance.notes.push(
-        "The rectangle-window groups also time Clipper2's dedicated rectangle clipper (RectClip64, through its C \
-         API: the clip-clipper2-rect crate) as `clipper2-rect`; ratios in the tables stay against Clipper2's \
-         general intersection, and the rectangle clippers' ratios to clipper2-rect are listed above."
-            .to_owned(),
-    );
+    if groups.iter().any(|g| g.window == clip_core::WindowKind::Rectangle) {
+        provenance.notes.push(
+            "The rectangle-window groups also time Clipper2's dedicated rectangle clipper (RectClip64, through its C \
+             API: the clip-clipper2-rect crate) as `clipper2-rect`; ratios in the tables stay against Clipper2's \
+             general intersection, and the rectangle clippers' ratios to clipper2-rect are listed above."
+                .to_owned(),
+        );
+    }
+    if text.is_some() {
+        provenance.notes.push(
+            "The text group times clip-text's strategies on a fixed paragraph (six 24 px lines of the notes' text) \
+             under centred windows; its rows' time is per paragraph and its size the paragraph's characters, so \
+             ns per character is time / size; each output is checked by clip-text's raster oracle before it is timed."
+                .to_owned(),
+        );
+    }
     provenance.notes.extend(measured.notes);
     provenance.write(&out.join(META))?;
     Ok(out)
+}
+
+/// Which parts of the bench run: the polygon groups with their clippers, and the text rows.
+struct Plan {
+    polygon: bool,
+    polygon_groups: Vec<String>,
+    polygon_clippers: Vec<String>,
+    text_rows: Vec<&'static str>,
+}
+
+impl Plan {
+    /// From the filters: `--workload text` and `text-*` clipper names pick the text group, the
+    /// rest the polygon groups. With no filter both run; a filter naming only one part runs only
+    /// that part. The text group times intersection only, so an `--op` list without it drops it.
+    fn new(args: &BenchArgs) -> Result<Plan, CliError> {
+        let is_text = |n: &String| n.starts_with("text-");
+        let (text_clippers, polygon_clippers): (Vec<String>, Vec<String>) =
+            args.clippers.iter().cloned().partition(is_text);
+        let (text_groups, polygon_groups): (Vec<String>, Vec<String>) =
+            args.workloads.iter().cloned().partition(|w| w == TEXT_GROUP);
+        let text_wanted = (args.workloads.is_empty() || !text_groups.is_empty())
+            && (args.clippers.is_empty() || !text_clippers.is_empty() || !text_groups.is_empty())
+            && (args.ops.is_empty() || args.ops.contains(&BoolOp::Intersection));
+        let text_rows = if text_wanted { text_rounds::select_rows(&text_clippers)? } else { Vec::new() };
+        if !text_clippers.is_empty() && text_rows.is_empty() {
+            return Err(CliError::usage("the text rows time intersection only, but --op leaves it out"));
+        }
+        let polygon = (args.workloads.is_empty() || !polygon_groups.is_empty())
+            && (args.clippers.is_empty() || !polygon_clippers.is_empty());
+        if !polygon && text_rows.is_empty() {
+            return Err(CliError::usage("nothing to bench: the filters select no group"));
+        }
+        Ok(Plan { polygon, polygon_groups, polygon_clippers, text_rows })
+    }
 }
 
 /// The registry cut down to the named polygon clippers plus the baseline (all when none named).
@@ -131,4 +198,40 @@ fn select_clippers(registry: Registry, names: &[String]) -> Result<Registry, Cli
         return Err(CliError::usage(format!("--clipper {line}: bench times polygon clippers only")));
     }
     Ok(selected)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(flatten)]
+        bench: BenchArgs,
+    }
+
+    fn plan(args: &[&str]) -> Result<Plan, CliError> {
+        let cli = Cli::try_parse_from(std::iter::once("bench").chain(args.iter().copied())).unwrap();
+        Plan::new(&cli.bench)
+    }
+
+    #[test]
+    fn text_filters_pick_the_text_group_and_its_rows() {
+        let all = plan(&[]).unwrap();
+        assert!(all.polygon && all.text_rows.len() == 5);
+        let text = plan(&["--workload", "text"]).unwrap();
+        assert!(!text.polygon && text.text_rows.len() == 5);
+        let star = plan(&["--workload", "star"]).unwrap();
+        assert!(star.polygon && star.text_rows.is_empty() && star.polygon_groups == ["star"]);
+        let char_row = plan(&["--clipper", "text-char", "--clipper", "text-outline"]).unwrap();
+        assert!(!char_row.polygon && char_row.text_rows == ["char", "outline-vatti"]);
+        let vatti = plan(&["--clipper", "vatti"]).unwrap();
+        assert!(vatti.polygon && vatti.text_rows.is_empty());
+        assert!(plan(&["--clipper", "text-nope"]).is_err());
+        assert!(plan(&["--workload", "text", "--op", "union"]).is_err());
+        assert!(plan(&["--clipper", "text-char", "--op", "union"]).is_err());
+        let both = plan(&["--workload", "text", "--workload", "grid", "--op", "union"]).unwrap();
+        assert!(both.polygon && both.text_rows.is_empty());
+    }
 }

@@ -3,6 +3,7 @@
 use clip_core::{BoolOp, WindowKind};
 
 use crate::cli_error::CliError;
+use crate::results_files::bench::TEXT_GROUP;
 
 /// One group of the benchmark: a plot and a table each.
 #[derive(Clone, Debug)]
@@ -105,7 +106,7 @@ pub fn groups(quick: bool) -> Vec<Group> {
 /// none); groups left without an operation are dropped. Unknown names are usage errors.
 pub fn select(groups: Vec<Group>, labels: &[String], ops: &[BoolOp]) -> Result<Vec<Group>, CliError> {
     if let Some(unknown) = labels.iter().find(|l| !groups.iter().any(|g| g.label == l.as_str())) {
-        let valid: Vec<&str> = groups.iter().map(|g| g.label).collect();
+        let valid: Vec<&str> = groups.iter().map(|g| g.label).chain([TEXT_GROUP]).collect();
         return Err(CliError::usage(format!("unknown bench group '{unknown}' (groups: {})", valid.join(", "))));
     }
     let selected: Vec<Group> = groups

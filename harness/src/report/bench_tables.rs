@@ -11,7 +11,7 @@ use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::{geometric_mean, mean, median};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
-use crate::results_files::bench::{BASELINE, CSV, META, MemoryRecord, read_memory};
+use crate::results_files::bench::{BASELINE, CSV, META, MemoryRecord, TEXT_GROUP, read_memory};
 
 /// The markdown file.
 pub const MD: &str = "bench.md";
@@ -236,7 +236,12 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     if !csv.exists() {
         return Ok(None);
     }
-    let rows: Vec<Measurement> = read_csv(&csv)?;
+    // The text group has its own section (the lecture's text clipping).
+    let rows: Vec<Measurement> =
+        read_csv(&csv)?.into_iter().filter(|r: &Measurement| r.workload != TEXT_GROUP).collect();
+    if rows.is_empty() {
+        return Ok(None);
+    }
     let memory = read_memory(out)?;
     let points = points(&rows);
     let groups = order(&rows, |r| r.workload.as_str());

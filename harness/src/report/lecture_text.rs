@@ -3,12 +3,15 @@
 use std::path::Path;
 
 use crate::cli_error::CliError;
-use crate::measure::raw::read_csv;
+use crate::measure::raw::{Measurement, read_csv};
+use crate::measure::timing::median;
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
 use crate::report::markdown::{num, table};
 use crate::report::provenance_line::provenance_line;
+use crate::results_files::bench;
 use crate::results_files::lecture_text::{CSV, FIGURES, MD, META, PLOT, TextTiming};
+use crate::text_paragraph::row_of_bench_name;
 
 /// The rows in the order the notes give the strategies.
 const ORDER: [&str; 5] = ["string", "char", "outline-vatti", "outline-sh-split", "bitmap"];
@@ -110,15 +113,71 @@ pub fn reading(rows: &[TextTiming]) -> String {
     text
 }
 
-/// The section after writing its plot; `None` when `out` holds no text timings.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
+/// The text timings from the bench's raw results (`bench.csv`'s `text` group): per row and
+/// window side, the median over rounds of the time per paragraph divided by its characters, with
+/// the glyphs cut from the bench's sidecar. `None` when the bench did not time text.
+pub fn from_bench(rows: &[Measurement], parameters: &serde_json::Value) -> Option<Vec<TextTiming>> {
+    let text: Vec<&Measurement> = rows.iter().filter(|r| r.workload == bench::TEXT_GROUP).collect();
+    if text.is_empty() {
+        return None;
+    }
+    let windows = parameters.get(bench::TEXT_GROUP).and_then(|t| t.get("windows")).and_then(|w| w.as_array());
+    let cut = |side: f64, key: &str| {
+        windows
+            .into_iter()
+            .flatten()
+            .find(|w| w.get("window_side").and_then(serde_json::Value::as_f64) == Some(side))
+            .and_then(|w| w.get(key)?.as_u64())
+            .map_or(0, |n| n as usize)
+    };
+    let mut keys: Vec<(&str, &str)> = text.iter().map(|r| (r.clipper.as_str(), r.case.as_str())).collect();
+    keys.sort_unstable();
+    keys.dedup();
+    let timings = keys
+        .into_iter()
+        .filter_map(|(clipper, case)| {
+            let strategy = row_of_bench_name(clipper)?;
+            let window_side: f64 = case.parse().ok()?;
+            let of: Vec<&&Measurement> = text.iter().filter(|r| r.clipper == clipper && r.case == case).collect();
+            let chars = of.first()?.size;
+            let per_char: Vec<f64> = of.iter().map(|r| r.time_ns / chars.max(1) as f64).collect();
+            let key = if strategy == "bitmap" { "bitmap_glyphs_cut" } else { "outline_glyphs_cut" };
+            Some(TextTiming {
+                strategy: strategy.to_owned(),
+                window_side,
+                chars,
+                cut_glyphs: cut(window_side, key),
+                ns_per_char: median(&per_char),
+                rounds: of.len(),
+            })
+        })
+        .collect();
+    Some(timings)
+}
+
+/// The text timings and where they came from: the bench's raw results when it timed text, else
+/// `reproduce lecture`'s; `None` when neither is in `out`.
+fn timings(out: &Path) -> Result<Option<(Vec<TextTiming>, String, String)>, CliError> {
+    let bench_csv = out.join(bench::CSV);
+    if bench_csv.exists() {
+        let rows: Vec<Measurement> = read_csv(&bench_csv)?;
+        let (provenance, line) = provenance_line(&out.join(bench::META))?;
+        if let Some(timings) = from_bench(&rows, &provenance.parameters) {
+            return Ok(Some((timings, format!("`{}`'s `text` group", bench::CSV), line)));
+        }
+    }
     let csv = out.join(CSV);
     if !csv.exists() {
         return Ok(None);
     }
-    let rows: Vec<TextTiming> = read_csv(&csv)?;
+    let (_, line) = provenance_line(&out.join(META))?;
+    Ok(Some((read_csv(&csv)?, format!("`{CSV}` (`clipbench reproduce lecture`)"), line)))
+}
+
+/// The section after writing its plot; `None` when `out` holds no text timings.
+pub fn section(out: &Path) -> Result<Option<String>, CliError> {
+    let Some((rows, source, provenance)) = timings(out)? else { return Ok(None) };
     chart(&rows).write_svg(&out.join(PLOT))?;
-    let (_, provenance) = provenance_line(&out.join(META))?;
     let figures: String = FIGURES
         .iter()
         .filter(|(file, _)| out.join(file).exists())
@@ -132,9 +191,52 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          `sutherland-hodgman-split`; glyphs of the 8x8 bitmap font `font8x8` pixel by pixel). A paragraph of six \
          24 px lines is clipped to a centred rectangle whose sides shrink from beyond the paragraph's box to 15% \
          of it; each output is checked by clip-text's raster oracle before it is timed. Times are medians over \
-         interleaved rounds, per character of the paragraph; they are this machine's, so compare them with each \
-         other.\n\n{}\n![ns per character against window size]({PLOT})\n\n{}\n{figures}{provenance}",
+         interleaved rounds, per character of the paragraph, from {source}; they are this machine's, so compare \
+         them with each other.\n\n{}\n![ns per character against window size]({PLOT})\n\n{}\n{figures}{provenance}",
         markdown_table(&rows),
         reading(&rows),
     )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn m(clipper: &str, case: &str, rep: usize, ns: f64) -> Measurement {
+        Measurement {
+            workload: bench::TEXT_GROUP.into(),
+            case: case.into(),
+            clipper: clipper.into(),
+            phase: "clip".into(),
+            size: 100,
+            op: "intersection".into(),
+            fill_rule: "even-odd".into(),
+            repetition: rep,
+            iterations: 1,
+            time_ns: ns,
+        }
+    }
+
+    #[test]
+    fn bench_rows_become_medians_per_character_with_the_glyphs_cut() {
+        let mut rows = vec![
+            m("text-char", "0.45", 0, 1000.0),
+            m("text-char", "0.45", 1, 3000.0),
+            m("text-char", "0.45", 2, 2000.0),
+            m("text-bitmap", "0.45", 0, 50_000.0),
+            m("text-unknown", "0.45", 0, 1.0),
+        ];
+        rows.push(Measurement { workload: "star".into(), ..m("vatti", "0", 0, 5.0) });
+        let parameters = serde_json::json!({ "text": { "windows": [
+            { "window_side": 0.45, "outline_glyphs_cut": 31, "bitmap_glyphs_cut": 29 }
+        ]}});
+        let mut got = from_bench(&rows, &parameters).unwrap();
+        got.sort_by(|a, b| a.strategy.cmp(&b.strategy));
+        assert_eq!(got.len(), 2);
+        assert_eq!((got[0].strategy.as_str(), got[0].cut_glyphs, got[0].ns_per_char), ("bitmap", 29, 500.0));
+        assert_eq!((got[1].strategy.as_str(), got[1].cut_glyphs, got[1].rounds), ("char", 31, 3));
+        assert_eq!(got[1].ns_per_char, 20.0);
+        assert_eq!(got[1].window_side, 0.45);
+        assert!(from_bench(&rows[5..], &parameters).is_none());
+    }
 }

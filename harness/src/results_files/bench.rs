@@ -13,6 +13,9 @@ pub const CSV: &str = "bench.csv";
 pub const MEMORY_CSV: &str = "bench-memory.csv";
 /// The sidecar of [`CSV`].
 pub const META: &str = "bench.meta.json";
+/// The bench group of clip-text's strategies (rows `text-*`; case = window side, size = the
+/// paragraph's characters, time per paragraph), reported in the text section, not the bench's.
+pub const TEXT_GROUP: &str = "text";
 /// The baseline every ratio is taken against.
 pub const BASELINE: &str = "clipper2";
 

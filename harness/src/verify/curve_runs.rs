@@ -1,15 +1,15 @@
 //! Runs every selected curve clipper on one generated case (a window and a batch of circles,
 //! ellipses and arcs) for a rectangle window and a polygon window: the curve oracle on each
-//! outline and filled region, the split identities against the window's complement, the polygon
+//! outline and filled region (whole ellipses, sectors and chord regions), the split identities against the window's complement, the polygon
 //! route (flatten finely, clip with Vatti) within its flattening bound, and the clippers against
 //! each other.
 
-use clip_core::{BoolOp, Ellipse, EllipseArc, FillRule, PolygonClipper, Polygons, WindowKind};
-use clip_curve::{CurveClipper, flatten_ellipse, flattening_area_bound};
+use clip_core::{BoolOp, EllipseArc, FillRule, FilledArc, PolygonClipper, Polygons, WindowKind};
+use clip_curve::{CurveClipper, flatten_filled_arc, flattening_area_bound};
 use clip_oracle::curve::{
-    CURVE_AREA_TOLERANCE, TANGENT_T_TOLERANCE, check_identities, check_region, check_visible, complement_window,
+    CURVE_AREA_TOLERANCE, TANGENT_T_TOLERANCE, check_filled_region, check_identities, check_visible, complement_window,
 };
-use clip_testkit::workload::{CURVES_PER_CASE, curve_case};
+use clip_testkit::workload::{CURVES_PER_CASE, curve_case, filled_object};
 use clip_vatti::Vatti;
 
 use super::finding::{CaseOutcome, Finding, Kind};
@@ -43,10 +43,10 @@ pub struct ObjectAnswer {
     pub area: Option<f64>,
 }
 
-/// The objects of a generated case: whole ellipses clipped filled (and as outlines), arcs as
-/// outlines.
+/// The objects of a generated case, each clipped as an outline and filled: whole ellipses as
+/// filled ellipses, arcs as sectors or chord regions (`filled_object`).
 pub fn case_objects(arcs: &[EllipseArc]) -> Vec<CurveObject> {
-    arcs.iter().map(|&arc| CurveObject { arc, filled: arc.is_closed() }).collect()
+    arcs.iter().enumerate().map(|(k, &arc)| CurveObject::from_filled(filled_object(arc, k))).collect()
 }
 
 /// Every object's answer, and the failures found (object index, message).
@@ -63,7 +63,7 @@ pub fn run_objects(
 ) -> Result<CheckedObjects, String> {
     guarded(|| {
         let prepared = clipper.prepare(window).map_err(|e| format!("refused the window: {e}"))?;
-        let around = objects.iter().fold(window.bounds(), |b, o| b.union(o.arc.bounds()));
+        let around = objects.iter().fold(window.bounds(), |b, o| b.union(o.bounds()));
         let rest = complement_window(window, &around);
         let complement = clipper.prepare(&rest).map_err(|e| format!("refused the complement window: {e}"))?;
         let mut answers = Vec::with_capacity(objects.len());
@@ -73,19 +73,21 @@ pub fn run_objects(
             let other = complement.visible(&o.arc);
             let mut area = None;
             let mut verdict = check_visible(window, &o.arc, &seen.intervals).map_err(|e| format!("outline: {e}"));
-            if o.filled {
-                let e = o.arc.ellipse();
-                let inside = prepared.clip_filled(e).region;
-                let outside = complement.clip_filled(e).region;
+            if let Some(filled) = o.filled_arc() {
+                let inside = prepared.clip_filled_arc(&filled).region;
+                let outside = complement.clip_filled_arc(&filled).region;
                 area = Some(inside.area());
                 verdict = verdict
-                    .and_then(|()| check_region(window, &inside).map_err(|e| format!("filled: {e}")))
+                    .and_then(|()| {
+                        check_filled_region(window, &filled, &inside)
+                            .map_err(|e| format!("filled ({}): {e}", fill_name(&filled)))
+                    })
                     .and_then(|()| {
                         check_identities(
                             &o.arc,
                             &seen.intervals,
                             &other.intervals,
-                            Some((inside.area(), outside.area())),
+                            Some((&filled, inside.area(), outside.area())),
                         )
                         .map_err(|e| e.to_string())
                     });
@@ -103,6 +105,11 @@ pub fn run_objects(
     })
 }
 
+/// How a filled shape is closed, in words.
+fn fill_name(filled: &FilledArc) -> &'static str {
+    if filled.is_whole() { "ellipse" } else { filled.fill().name() }
+}
+
 /// One object in words.
 pub fn describe(arc: &EllipseArc) -> String {
     let e = arc.ellipse();
@@ -115,14 +122,15 @@ pub fn describe(arc: &EllipseArc) -> String {
     if arc.is_closed() { shape } else { format!("arc of {shape} from {:.6} sweeping {:.6}", arc.start(), arc.sweep()) }
 }
 
-/// The clipped area by the polygon route: the ellipse flattened within `ROUTE_TOLERANCE` of its
-/// long radius, intersected with the window by Vatti (even-odd), with the bound it must meet.
-pub fn polygon_route(window: &Polygons, e: &Ellipse) -> Result<(f64, f64), String> {
+/// The clipped area by the polygon route: the filled ellipse or arc flattened within
+/// `ROUTE_TOLERANCE` of its long radius, intersected with the window by Vatti (even-odd), with
+/// the bound it must meet.
+pub fn polygon_route(window: &Polygons, filled: &FilledArc) -> Result<(f64, f64), String> {
+    let e = filled.ellipse();
     let tolerance = ROUTE_TOLERANCE * e.max_radius();
-    let ring = flatten_ellipse(e, tolerance).map_err(|err| err.to_string())?;
+    let ring = flatten_filled_arc(filled, tolerance).map_err(|err| err.to_string())?;
     let clipped = Vatti.clip(&ring, window, BoolOp::Intersection, FillRule::EvenOdd).map_err(|err| err.to_string())?;
-    let bound =
-        flattening_area_bound(&clip_core::CurveRegion::whole(*e), tolerance) + CURVE_AREA_TOLERANCE * e.bounds().area();
+    let bound = flattening_area_bound(&filled.region(), tolerance) + CURVE_AREA_TOLERANCE * e.bounds().area();
     Ok((clipped.signed_area(), bound))
 }
 
@@ -167,10 +175,8 @@ impl CurvePlan<'_> {
                 message,
             };
             // The polygon route, once per filled object: (area, bound).
-            let route: Vec<Option<Result<(f64, f64), String>>> = objects
-                .iter()
-                .map(|o| o.filled.then(|| guarded(|| polygon_route(&case.window, o.arc.ellipse()))))
-                .collect();
+            let route: Vec<Option<Result<(f64, f64), String>>> =
+                objects.iter().map(|o| o.filled_arc().map(|f| guarded(|| polygon_route(&case.window, &f)))).collect();
             let mut answers: Vec<Option<Vec<ObjectAnswer>>> = vec![None; self.entries.len()];
             for (i, e) in self.entries.iter().enumerate() {
                 let row = &mut outcome.rows[i];
@@ -250,8 +256,8 @@ pub fn curve_failure(
     match check {
         Check::Oracle => failures.into_iter().next().map(|(_, m)| m),
         Check::Disagreement(POLYGON_ROUTE) => objects.iter().zip(&answers).enumerate().find_map(|(k, (o, a))| {
-            let area = a.area?;
-            match guarded(|| polygon_route(window, o.arc.ellipse())) {
+            let (area, filled) = (a.area?, o.filled_arc()?);
+            match guarded(|| polygon_route(window, &filled)) {
                 Ok((route, bound)) if (area - route).abs() <= bound => None,
                 Ok((route, bound)) => {
                     Some(format!("object {k}: exact area {area}, polygon route {route} (bound {bound:e})"))

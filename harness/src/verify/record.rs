@@ -254,7 +254,7 @@ fn curve_files(
             .iter()
             .map(|o| {
                 let prepared = entry.clipper.prepare(&generated.window).ok()?;
-                o.filled.then(|| prepared.clip_filled(o.arc.ellipse()).region)
+                o.filled_arc().map(|f| prepared.clip_filled_arc(&f).region)
             })
             .collect();
         let pictures: Vec<CurvePicture<'_>> = objects

@@ -3,7 +3,7 @@
 
 use core::f64::consts::{PI, TAU};
 
-use clip_core::{Ellipse, EllipseArc, Point, Polygons, Rect, WindowKind};
+use clip_core::{ArcFill, Ellipse, EllipseArc, FilledArc, Point, Polygons, Rect, WindowKind};
 use rand::Rng;
 use rand_pcg::Pcg64;
 
@@ -29,7 +29,8 @@ pub struct CurveCase {
     pub index: usize,
     /// The window (read under even-odd).
     pub window: Polygons,
-    /// The objects: whole ellipses (clipped as outlines and filled) and arcs (outlines).
+    /// The objects: whole ellipses and arcs, each clipped as an outline and filled (arcs as
+    /// sectors or chord regions, see [`filled_object`]).
     pub objects: Vec<EllipseArc>,
     /// What the case is, in words.
     pub description: String,
@@ -63,6 +64,13 @@ pub fn curve_case(
     let description =
         format!("{name}: {} objects against a {shape} window of {} edges", objects.len(), w.vertex_count());
     Ok(CurveCase { workload: name, seed, index, window: w, objects, description })
+}
+
+/// Object `k` of a case as a filled shape: a whole ellipse is the filled ellipse, and arcs are
+/// closed alternately by two radii (sectors, even `k`) and by their chord (odd `k`), so every
+/// case clips filled arcs of both kinds, besides their outlines.
+pub fn filled_object(arc: EllipseArc, k: usize) -> FilledArc {
+    FilledArc::new(arc, if k.is_multiple_of(2) { ArcFill::Sector } else { ArcFill::Chord })
 }
 
 fn curve_window(rng: &mut Pcg64, kind: WindowKind) -> (Polygons, &'static str) {
