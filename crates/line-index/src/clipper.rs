@@ -19,11 +19,14 @@ const SHORT: f64 = 0.25;
 /// walk is cheaper than locating the start and walking again.
 const SHORT_FROM_LEAVES: usize = 4;
 
-/// What the horizontal ray found about a segment's start.
+/// What is known, before the walk, about where a segment's ends lie.
 enum Start {
-    /// Not on the boundary: inside (true) or outside the window.
+    /// The start is not on the boundary: inside (true) or outside the window.
     Inside(bool),
-    /// On an edge or a vertex.
+    /// The end lies strictly outside the bounding box, so outside the window (and the start may
+    /// be anywhere).
+    EndOutside,
+    /// Nothing: the start may be on the boundary.
     OnBoundary,
 }
 
@@ -141,28 +144,47 @@ impl PreparedLineIndex {
         let ray = Ray::new(a, b);
         let side = LineSide::new(a, b);
         let frame = LineFrame::new(s);
-        // A segment short beside the window: its crossings and the exact place of its start,
-        // found along a horizontal ray to the nearer side of the box, cost less than everything
-        // along the ray through it. A start on the boundary has no place that tells the parity
-        // just after it: those segments take the ray.
-        let short = self.tree.leaves.len() > SHORT_FROM_LEAVES
-            && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height());
-        let start = if short { self.locate::<COUNT>(a, counts) } else { Start::OnBoundary };
-        if let Start::Inside(inside) = start {
-            let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
-            // The crossings on the segment toggle the parity from the start's to the end's.
-            if (found + u32::from(inside)) % 2 == 1 {
-                crossings.record(Along::After, 1.0);
-            }
-            if inside {
-                crossings.record(Along::Before, 0.0);
-            }
+        // An end strictly outside the bounding box is outside the window, so the crossings on the
+        // segment alone give the parity at the other end: only the boxes meeting the segment are
+        // walked. Otherwise a segment short beside the window: its crossings and the exact place
+        // of its start, found along a horizontal ray to the nearer side of the box, cost less
+        // than everything along the ray through it. A start on the boundary has no place that
+        // tells the parity just after it: those segments take the ray.
+        let start = if self.bounds.outcode(a) != 0 {
+            Start::Inside(false)
+        } else if self.bounds.outcode(b) != 0 {
+            Start::EndOutside
+        } else if self.tree.leaves.len() > SHORT_FROM_LEAVES
+            && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height())
+        {
+            self.locate::<COUNT>(a, counts)
         } else {
-            // Crossings at or after the start, counted: every ring crosses the line an even
-            // number of times, so their parity is the parity of those before the start.
-            let found = self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
-            if found % 2 == 1 {
-                crossings.record(Along::Before, 0.0);
+            Start::OnBoundary
+        };
+        match start {
+            Start::Inside(inside) => {
+                let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                // The crossings on the segment toggle the parity from the start's to the end's.
+                if (found + u32::from(inside)) % 2 == 1 {
+                    crossings.record(Along::After, 1.0);
+                }
+                if inside {
+                    crossings.record(Along::Before, 0.0);
+                }
+            }
+            Start::EndOutside | Start::OnBoundary => {
+                // Crossings at or after the start, counted: every ring crosses the line an even
+                // number of times, so their parity is the parity of those before the start. Past
+                // an end outside the window the ray crosses the boundary an even number of times,
+                // so leaving those out keeps every parity.
+                let found = if matches!(start, Start::EndOutside) {
+                    self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts)
+                } else {
+                    self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts)
+                };
+                if found % 2 == 1 {
+                    crossings.record(Along::Before, 0.0);
+                }
             }
         }
         if crossings.is_empty() {
@@ -365,8 +387,12 @@ impl PreparedWindow for PreparedLineIndex {
         validate_segments(segments)?;
         let mut crossings = LineCrossings::default();
         let mut counts = IndexCounts::default();
-        for (index, &s) in segments.iter().enumerate() {
-            self.clip_one::<false>(index, s, out, &mut crossings, &mut counts);
+        // The bounding box over the whole batch first, without branches (see
+        // `Rect::keep_meeting`), then the segments it kept.
+        let mut kept = Vec::new();
+        self.bounds.keep_meeting(segments, &mut kept);
+        for &index in &kept {
+            self.clip_one::<false>(index, segments[index], out, &mut crossings, &mut counts);
         }
         Ok(())
     }

@@ -1,0 +1,45 @@
+//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds (for callgrind).
+
+use std::time::Instant;
+
+use clip_core::{LineClipper, PreparedWindow, VisiblePiece};
+use clip_cyrus_beck::Liu;
+use clip_line_index::LineIndex;
+use clip_testkit::workload::{WangSize, wang_segments, wang_window};
+use clip_virtual_box::VirtualBox;
+
+/// One timed pairing: the window's label, the clipper's name, the prepared window, its times.
+type Run<'a> = (String, &'a str, Box<dyn PreparedWindow>, Vec<f64>);
+
+fn main() -> Result<(), clip_core::ClipError> {
+    let args: Vec<String> = std::env::args().collect();
+    let only = args.iter().position(|a| a == "--only").and_then(|i| args.get(i + 1)).cloned();
+    let rounds = args.iter().position(|a| a == "--rounds").and_then(|i| args.get(i + 1)?.parse().ok()).unwrap_or(101);
+    let segments = wang_segments(10_000, 1);
+    let clippers: [&dyn LineClipper; 3] = [&Liu, &VirtualBox::NEW2, &LineIndex];
+    let clippers: Vec<&dyn LineClipper> =
+        clippers.into_iter().filter(|c| only.as_deref().is_none_or(|o| o == c.name())).collect();
+    let mut runs: Vec<Run> = Vec::new();
+    for edges in [6, 50] {
+        for size in WangSize::ALL {
+            let window = wang_window(edges, size, 1, false);
+            for c in &clippers {
+                runs.push((format!("{edges:>3} edges {}", size.name()), c.name(), c.prepare(&window)?, Vec::new()));
+            }
+        }
+    }
+    let mut out: Vec<VisiblePiece> = Vec::with_capacity(30_000);
+    for _ in 0..rounds {
+        for (_, _, prepared, times) in &mut runs {
+            out.clear();
+            let start = Instant::now();
+            prepared.clip_batch(&segments, &mut out)?;
+            times.push(start.elapsed().as_secs_f64());
+        }
+    }
+    for (window, name, _, times) in &mut runs {
+        times.sort_by(f64::total_cmp);
+        println!("{window}  {name:<12} {:.1} ns", times[rounds / 2] * 1e9 / segments.len() as f64);
+    }
+    Ok(())
+}
