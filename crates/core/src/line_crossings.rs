@@ -64,6 +64,14 @@ impl LineCrossings {
         }
     }
 
+    /// Records `before` crossings before the start and `after` past the end, which only count
+    /// toward the ends' parities (stand-ins for crossings not looked for). No branch.
+    #[inline]
+    pub fn count_beyond(&mut self, before: u32, after: u32) {
+        self.before_end += before;
+        self.after_start += after;
+    }
+
     /// Records a window edge along the line, its ends given by place and parameter.
     pub fn along(&mut self, p: (Along, f64), q: (Along, f64)) {
         let (tp, tq) = (clamped(p.0, p.1), clamped(q.0, q.1));
@@ -79,6 +87,14 @@ impl LineCrossings {
     /// crossing; then united with the edges along the line, touching pieces merged, points
     /// dropped. Returns the number of pieces written.
     pub fn emit(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
+        if self.along.is_empty() {
+            return self.emit_few(index, frame, out);
+        }
+        self.emit_general(index, frame, out)
+    }
+
+    /// [`LineCrossings::emit`] in general: any number of crossings, edges along the line.
+    fn emit_general(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
         sort_small(&mut self.inside);
         snap(&mut self.inside);
         let (m0_inside, m1_inside) = (self.after_start % 2 == 1, self.before_end % 2 == 1);
@@ -119,6 +135,39 @@ impl LineCrossings {
         }
         if let Some(done) = current {
             frame.push_piece(out, index, done);
+        }
+        out.len() - before
+    }
+}
+
+impl LineCrossings {
+    /// [`LineCrossings::emit`] with no edge along the line: up to two crossings on the segment (the
+    /// common case) written out without the general loops, whose trip counts vary from segment to
+    /// segment and mispredict; the same pieces.
+    #[inline]
+    fn emit_few(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
+        let before = out.len();
+        let m0_inside = self.after_start % 2 == 1;
+        match *self.inside.as_slice() {
+            [] => {
+                if m0_inside {
+                    frame.push_piece(out, index, (0.0, 1.0));
+                }
+            }
+            [t] => frame.push_piece(out, index, if m0_inside { (0.0, t) } else { (t, 1.0) }),
+            [t0, t1] => {
+                let (t0, t1) = (t0.min(t1), t0.max(t1));
+                let t1 = if t1 - t0 <= PARAMETER_SNAP { t0 } else { t1 };
+                if !m0_inside {
+                    frame.push_piece(out, index, (t0, t1));
+                } else if t1 <= t0 + PARAMETER_SNAP || frame.at(t1) == frame.at(t0) {
+                    frame.push_piece(out, index, (0.0, 1.0));
+                } else {
+                    frame.push_piece(out, index, (0.0, t0));
+                    frame.push_piece(out, index, (t1, 1.0));
+                }
+            }
+            _ => return self.emit_general(index, frame, out),
         }
         out.len() - before
     }

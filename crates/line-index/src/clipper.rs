@@ -3,7 +3,8 @@
 use clip_core::predicates::orient2d;
 use clip_core::{
     Along, ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, LineSide, Point, Polygons,
-    PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, validate_segments, validate_window,
+    PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, retain_indices, validate_segments,
+    validate_window,
 };
 
 use core::ops::Range;
@@ -19,14 +20,11 @@ const SHORT: f64 = 0.25;
 /// walk is cheaper than locating the start and walking again.
 const SHORT_FROM_LEAVES: usize = 4;
 
-/// What is known, before the walk, about where a segment's ends lie.
+/// What the horizontal ray found about a segment's start.
 enum Start {
-    /// The start is not on the boundary: inside (true) or outside the window.
+    /// Not on the boundary: inside (true) or outside the window.
     Inside(bool),
-    /// The end lies strictly outside the bounding box, so outside the window (and the start may
-    /// be anywhere).
-    EndOutside,
-    /// Nothing: the start may be on the boundary.
+    /// On an edge or a vertex.
     OnBoundary,
 }
 
@@ -150,19 +148,23 @@ impl PreparedLineIndex {
         // of its start, found along a horizontal ray to the nearer side of the box, cost less
         // than everything along the ray through it. A start on the boundary has no place that
         // tells the parity just after it: those segments take the ray.
-        let start = if self.bounds.outcode(a) != 0 {
-            Start::Inside(false)
-        } else if self.bounds.outcode(b) != 0 {
-            Start::EndOutside
-        } else if self.tree.leaves.len() > SHORT_FROM_LEAVES
-            && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height())
-        {
-            self.locate::<COUNT>(a, counts)
+        let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
+        if a_outside | b_outside {
+            let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            // With the start outside, the crossings on the segment give the end's parity; with
+            // the end outside, the start's. Counted without a branch on which end it is (it is
+            // random in a batch spread over the screen).
+            let odd = found & 1;
+            crossings.count_beyond(odd & u32::from(!a_outside), odd & u32::from(a_outside));
         } else {
-            Start::OnBoundary
-        };
-        match start {
-            Start::Inside(inside) => {
+            let start = if self.tree.leaves.len() > SHORT_FROM_LEAVES
+                && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height())
+            {
+                self.locate::<COUNT>(a, counts)
+            } else {
+                Start::OnBoundary
+            };
+            if let Start::Inside(inside) = start {
                 let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
                 // The crossings on the segment toggle the parity from the start's to the end's.
                 if (found + u32::from(inside)) % 2 == 1 {
@@ -171,17 +173,10 @@ impl PreparedLineIndex {
                 if inside {
                     crossings.record(Along::Before, 0.0);
                 }
-            }
-            Start::EndOutside | Start::OnBoundary => {
+            } else {
                 // Crossings at or after the start, counted: every ring crosses the line an even
-                // number of times, so their parity is the parity of those before the start. Past
-                // an end outside the window the ray crosses the boundary an even number of times,
-                // so leaving those out keeps every parity.
-                let found = if matches!(start, Start::EndOutside) {
-                    self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts)
-                } else {
-                    self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts)
-                };
+                // number of times, so their parity is the parity of those before the start.
+                let found = self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
                 if found % 2 == 1 {
                     crossings.record(Along::Before, 0.0);
                 }
@@ -197,6 +192,25 @@ impl PreparedLineIndex {
         if COUNT && written > 0 {
             counts.visible += 1;
         }
+    }
+
+    /// False when `s` (of positive length, not rejected by the bounding box) certainly shows
+    /// nothing: an end lies outside the bounding box, so outside the window, and no child box of
+    /// the root meets the segment, so it crosses and touches no edge. Branch-free.
+    #[inline(always)]
+    fn may_show(&self, s: Segment) -> bool {
+        let root = &self.tree.nodes[0];
+        let segment = s.bounds();
+        let mut mask = 0;
+        for i in 0..WAYS {
+            let apart = (root.min_x[i] > segment.max.x)
+                | (root.max_x[i] < segment.min.x)
+                | (root.min_y[i] > segment.max.y)
+                | (root.max_y[i] < segment.min.y);
+            mask |= u32::from(!apart) << i;
+        }
+        let meets = mask & Ray::new(s.a, s.b).line_hits(root) & u32::from(root.present) != 0;
+        meets | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0)
     }
 
     /// Walks the tree: along the ray from the start (`ON_SEGMENT` false), or over the boxes
@@ -391,6 +405,9 @@ impl PreparedWindow for PreparedLineIndex {
         // `Rect::keep_meeting`), then the segments it kept.
         let mut kept = Vec::new();
         self.bounds.keep_meeting(segments, &mut kept);
+        // Then the root's child boxes, also over the batch: a segment with an end outside the
+        // bounding box that meets none of them lies wholly outside.
+        retain_indices(&mut kept, |i| self.may_show(segments[i]));
         for &index in &kept {
             self.clip_one::<false>(index, segments[index], out, &mut crossings, &mut counts);
         }

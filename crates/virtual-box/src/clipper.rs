@@ -4,7 +4,7 @@ use core::ops::Range;
 
 use clip_core::{
     ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, Point, Polygons, PreparedWindow, Rect, Segment,
-    VisiblePiece, WindowKind, WindowRings, validate_segments, validate_window,
+    VisiblePiece, WindowKind, WindowRings, retain_indices, validate_segments, validate_window,
 };
 
 use crate::adaptive_box::AdaptiveBox;
@@ -162,9 +162,9 @@ impl PreparedVirtualBox {
         let mut kept = Vec::new();
         self.meb.keep_meeting(segments, &mut kept);
         if ROTATED {
-            keep_where(&mut kept, |i| !self.rotated.rejects(segments[i].a, segments[i].b));
+            retain_indices(&mut kept, |i| !self.rotated.rejects(segments[i].a, segments[i].b));
         }
-        keep_where(&mut kept, |i| AdaptiveBox::new(segments[i].a, segments[i].b, &self.meb).is_some());
+        retain_indices(&mut kept, |i| AdaptiveBox::new(segments[i].a, segments[i].b, &self.meb).is_some());
         for &index in &kept {
             self.clip_one::<ROTATED>(index, segments[index], out, &mut scratch);
         }
@@ -207,19 +207,6 @@ impl PreparedVirtualBox {
         intersect(&self.points, &self.rings, &scratch.codes, &scratch.sides, &frame, &mut scratch.display);
         Stage::Intersected(scratch.display.emit(index, &frame, out))
     }
-}
-
-/// Keeps the indices for which `keep` holds, in order, writing each one and advancing by the
-/// outcome (no branch on it).
-#[inline(always)]
-fn keep_where(kept: &mut Vec<usize>, keep: impl Fn(usize) -> bool) {
-    let mut n = 0;
-    for k in 0..kept.len() {
-        let index = kept[k];
-        kept[n] = index;
-        n += usize::from(keep(index));
-    }
-    kept.truncate(n);
 }
 
 impl PreparedWindow for PreparedVirtualBox {
