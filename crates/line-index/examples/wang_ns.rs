@@ -1,4 +1,4 @@
-//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds (for callgrind).
+//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind).
 
 use std::time::Instant;
 
@@ -20,7 +20,11 @@ fn main() -> Result<(), clip_core::ClipError> {
     let clippers: Vec<&dyn LineClipper> =
         clippers.into_iter().filter(|c| only.as_deref().is_none_or(|o| o == c.name())).collect();
     let mut runs: Vec<Run> = Vec::new();
-    for edges in [6, 50] {
+    let sizes: Vec<usize> = match args.iter().position(|a| a == "--edges").and_then(|i| args.get(i + 1)?.parse().ok()) {
+        Some(edges) => vec![edges],
+        None => vec![6, 50],
+    };
+    for &edges in &sizes {
         for size in WangSize::ALL {
             let window = wang_window(edges, size, 1, false);
             for c in &clippers {
