@@ -1,11 +1,11 @@
-//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind).
+//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead.
 
 use std::time::Instant;
 
 use clip_core::{LineClipper, PreparedWindow, VisiblePiece};
 use clip_cyrus_beck::Liu;
 use clip_line_index::LineIndex;
-use clip_testkit::workload::{WangSize, wang_segments, wang_window};
+use clip_testkit::workload::{WangSize, beyond_window, wang_segments, wang_window};
 use clip_virtual_box::VirtualBox;
 
 /// One timed pairing: the window's label, the clipper's name, the prepared window, its times.
@@ -24,11 +24,19 @@ fn main() -> Result<(), clip_core::ClipError> {
         Some(edges) => vec![edges],
         None => vec![6, 50],
     };
+    let beyond = args.iter().any(|a| a == "--beyond");
     for &edges in &sizes {
-        for size in WangSize::ALL {
-            let window = wang_window(edges, size, 1, false);
+        // wang-t4's two size rows, or with `--beyond` the lobed concave window of `reproduce beyond-paper`.
+        let windows: Vec<(String, clip_core::Polygons)> = if beyond {
+            vec![(format!("{edges:>5} edges lobed"), beyond_window(edges, 1, false))]
+        } else {
+            WangSize::ALL
+                .map(|size| (format!("{edges:>3} edges {}", size.name()), wang_window(edges, size, 1, false)))
+                .into()
+        };
+        for (label, window) in windows {
             for c in &clippers {
-                runs.push((format!("{edges:>3} edges {}", size.name()), c.name(), c.prepare(&window)?, Vec::new()));
+                runs.push((label.clone(), c.name(), c.prepare(&window)?, Vec::new()));
             }
         }
     }

@@ -1,6 +1,6 @@
 //! The clipper: the window prepared into an edge tree once, then per segment a walk of the tree along its ray.
 
-use clip_core::predicates::orient2d;
+use clip_core::predicates::{orient_sign, orient2d};
 use clip_core::{
     Along, ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, LineSide, Point, Polygons,
     PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, retain_indices, validate_segments,
@@ -315,7 +315,7 @@ impl PreparedLineIndex {
                     if p == a {
                         on_boundary = true;
                     } else if (p.y > a.y) != (q.y > a.y) {
-                        let o = orient2d(p, q, a);
+                        let o = orient_sign(p, q, a);
                         on_boundary |= o == 0.0;
                         // `a` left of an upward edge (right of a downward one): the edge is to its
                         // right.
@@ -354,9 +354,13 @@ impl PreparedLineIndex {
             f[k] = value;
             unsure |= u64::from(value.abs() <= bound) << k;
         }
+        // The exact sign for those; its magnitude is made accurate below only where a crossing is
+        // placed by it (the accurate magnitude costs an exact expansion, and vertices near the
+        // line are many on a finely sampled boundary).
+        let approximate = unsure;
         while unsure != 0 {
             let k = unsure.trailing_zeros() as usize;
-            f[k] = orient2d(frame.a, frame.b, points[k]);
+            f[k] = orient_sign(frame.a, frame.b, points[k]);
             unsure &= unsure - 1;
         }
         let (mut positive, mut zero) = (0u64, 0u64);
@@ -373,7 +377,10 @@ impl PreparedLineIndex {
         while crossed != 0 {
             let k = crossed.trailing_zeros() as usize;
             crossed &= crossed - 1;
-            let (p, q, fp, fq) = (points[k], points[k + 1], f[k], f[k + 1]);
+            let (p, q, mut fp, mut fq) = (points[k], points[k + 1], f[k], f[k + 1]);
+            if (approximate >> k) & 0b11 != 0 {
+                (fp, fq) = (orient2d(frame.a, frame.b, p), orient2d(frame.a, frame.b, q));
+            }
             let (place, t) = if fp == 0.0 {
                 (frame.place(p), frame.param(p))
             } else if fq == 0.0 {
