@@ -1,4 +1,4 @@
-//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead.
+//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead, `--large` the indexed clipper on lines-large case 3.
 
 use std::time::Instant;
 
@@ -11,7 +11,7 @@ use clip_virtual_box::VirtualBox;
 /// One timed pairing: the window's label, the clipper's name, the prepared window, its times.
 type Run<'a> = (String, &'a str, Box<dyn PreparedWindow>, Vec<f64>);
 
-fn main() -> Result<(), clip_core::ClipError> {
+fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
     let only = args.iter().position(|a| a == "--only").and_then(|i| args.get(i + 1)).cloned();
     let rounds = args.iter().position(|a| a == "--rounds").and_then(|i| args.get(i + 1)?.parse().ok()).unwrap_or(101);
@@ -25,6 +25,22 @@ fn main() -> Result<(), clip_core::ClipError> {
         None => vec![6, 50],
     };
     let beyond = args.iter().any(|a| a == "--beyond");
+    if args.iter().any(|a| a == "--large") {
+        // `reproduce beyond-paper`'s 10^6-segment window (lines-large case 3), on 10^5 segments.
+        let case = clip_testkit::workload::line_case("lines-large", 1, 3, clip_core::WindowKind::Any, 100_000)?;
+        let prepared = LineIndex.prepare(&case.window)?;
+        let mut out = Vec::new();
+        let mut times = Vec::new();
+        for _ in 0..rounds.min(7) {
+            out.clear();
+            let start = Instant::now();
+            prepared.clip_batch(&case.segments, &mut out)?;
+            times.push(start.elapsed().as_secs_f64());
+        }
+        times.sort_by(f64::total_cmp);
+        println!("lines-large case 3  indexed {:.1} ns", times[times.len() / 2] * 1e9 / case.segments.len() as f64);
+        return Ok(());
+    }
     for &edges in &sizes {
         // wang-t4's two size rows, or with `--beyond` the lobed concave window of `reproduce beyond-paper`.
         let windows: Vec<(String, clip_core::Polygons)> = if beyond {

@@ -150,7 +150,7 @@ impl PreparedLineIndex {
         // tells the parity just after it: those segments take the ray.
         let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
         if a_outside | b_outside {
-            let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
             // random in a batch spread over the screen).
@@ -165,7 +165,7 @@ impl PreparedLineIndex {
                 Start::OnBoundary
             };
             if let Start::Inside(inside) = start {
-                let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
                 // The crossings on the segment toggle the parity from the start's to the end's.
                 if (found + u32::from(inside)) % 2 == 1 {
                     crossings.record(Along::After, 1.0);
@@ -173,12 +173,20 @@ impl PreparedLineIndex {
                 if inside {
                     crossings.record(Along::Before, 0.0);
                 }
-            } else {
+            } else if self.exit_length(b, b - a) <= self.exit_length(a, a - b) {
                 // Crossings at or after the start, counted: every ring crosses the line an even
                 // number of times, so their parity is the parity of those before the start.
-                let found = self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, false, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
                 if found % 2 == 1 {
                     crossings.record(Along::Before, 0.0);
+                }
+            } else {
+                // The same from the end backwards, where the line leaves the box sooner that way:
+                // crossings at or before the end, and the parity of those after it.
+                let back = Ray::new(b, a);
+                let found = self.walk::<COUNT, false, true>(&back, &side, &frame, &s.bounds(), crossings, counts);
+                if found % 2 == 1 {
+                    crossings.record(Along::After, 1.0);
                 }
             }
         }
@@ -213,11 +221,27 @@ impl PreparedLineIndex {
         meets | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0)
     }
 
-    /// Walks the tree: along the ray from the start (`ON_SEGMENT` false), or over the boxes
+    /// How far the ray from `p` in direction `d` runs inside the bounding box, in units of `|d|`
+    /// (rounded: it only chooses a direction to walk).
+    fn exit_length(&self, p: Point, d: Point) -> f64 {
+        let along = |p: f64, d: f64, lo: f64, hi: f64| {
+            if d > 0.0 {
+                (hi - p) / d
+            } else if d < 0.0 {
+                (lo - p) / d
+            } else {
+                f64::INFINITY
+            }
+        };
+        along(p.x, d.x, self.bounds.min.x, self.bounds.max.x).min(along(p.y, d.y, self.bounds.min.y, self.bounds.max.y))
+    }
+
+    /// Walks the tree: along the ray from the start (`ON_SEGMENT` false; from the end backwards
+    /// when `BACKWARD`), or over the boxes
     /// meeting the closed segment whose box is `segment` (`ON_SEGMENT` true); records the
     /// crossings at or after the start (on the segment) and returns how many there were.
     #[inline(always)]
-    fn walk<const COUNT: bool, const ON_SEGMENT: bool>(
+    fn walk<const COUNT: bool, const ON_SEGMENT: bool, const BACKWARD: bool>(
         &self,
         ray: &Ray,
         side: &LineSide,
@@ -243,7 +267,10 @@ impl PreparedLineIndex {
                     ray.hits(node)
                 }
             },
-            |range| found += self.leaf::<ON_SEGMENT>(range.start as usize, range.end as usize, side, frame, crossings),
+            |range| {
+                found +=
+                    self.leaf::<ON_SEGMENT, BACKWARD>(range.start as usize, range.end as usize, side, frame, crossings)
+            },
             counts,
         );
         found
@@ -333,9 +360,10 @@ impl PreparedLineIndex {
     /// Liu's rule on one leaf's edges `first..end`: the exact sign of the line function at each
     /// vertex, a crossing for each edge whose signs differ (a vertex on the line counting as on
     /// the negative side), edges on the line recorded as boundary. Records the crossings at or
-    /// after the start (only those on the segment when `ON_SEGMENT`) and returns how many there were.
+    /// after the start (at or before the end when `BACKWARD`; only those on the segment when
+    /// `ON_SEGMENT`) and returns how many there were.
     #[inline(always)]
-    fn leaf<const ON_SEGMENT: bool>(
+    fn leaf<const ON_SEGMENT: bool, const BACKWARD: bool>(
         &self,
         first: usize,
         end: usize,
@@ -388,7 +416,10 @@ impl PreparedLineIndex {
             } else {
                 frame.edge_crossing(p, q, fp, fq)
             };
-            if place != Along::Before && !(ON_SEGMENT && place == Along::After) {
+            // Behind the walk's start, or past the segment's far end when only the segment is walked.
+            let left_out = if BACKWARD { place == Along::After } else { place == Along::Before }
+                || (ON_SEGMENT && place == Along::After);
+            if !left_out {
                 crossings.record(place, t);
                 found += 1;
             }
