@@ -16,8 +16,8 @@ use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_line_index::LineIndex;
 use clip_oracle::polygon::{GEO_TOLERANCE, REGION_TOLERANCE};
 use clip_peers::{
-    Clipper1Clipper, Clipper2Clipper, Clipper2RectClipper, Clipper2RectLines, Clipper2RustClipper, GeoClipper,
-    GeoLineClipper, GeosClipper, IOverlayClipper,
+    Clipper1Clipper, Clipper2Clipper, Clipper2OpenLines, Clipper2RectClipper, Clipper2RectLines, Clipper2RustClipper,
+    GeoClipper, GeoLineClipper, GeosClipper, IOverlayClipper,
 };
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
@@ -49,6 +49,7 @@ pub fn registry() -> Registry {
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2Clipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper2RectClipper)
         .line(Origin::Peer, GEO_TOLERANCE, Clipper2RectLines)
+        .line(Origin::Peer, GEO_TOLERANCE, Clipper2OpenLines)
         .polygon(Origin::Peer, GEO_TOLERANCE, GeosClipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, IOverlayClipper::new())
         .polygon(Origin::Peer, GEO_TOLERANCE, Clipper1Clipper::new())

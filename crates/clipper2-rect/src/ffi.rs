@@ -12,8 +12,10 @@
 use std::ffi::{c_int, c_void};
 
 use clipper2c_sys::{
-    ClipperPaths64, ClipperPoint64, clipper_allocate, clipper_delete_path64, clipper_delete_paths64,
-    clipper_path64_of_points, clipper_path64_size, clipper_paths64, clipper_paths64_add_path,
+    ClipperClipType_INTERSECTION, ClipperClipper64, ClipperFillRule_EVEN_ODD, ClipperPaths64, ClipperPoint64,
+    clipper_allocate, clipper_clipper64, clipper_clipper64_add_clip, clipper_clipper64_add_open_subject,
+    clipper_clipper64_execute, clipper_clipper64_size, clipper_delete_clipper64, clipper_delete_path64,
+    clipper_delete_paths64, clipper_path64_of_points, clipper_path64_size, clipper_paths64, clipper_paths64_add_path,
     clipper_paths64_get_point, clipper_paths64_length, clipper_paths64_path_length, clipper_paths64_size,
 };
 
@@ -88,15 +90,69 @@ fn run(clip: RectClipFn, rect: GridRect, paths: &[Vec<GridPoint>]) -> Option<Vec
     output.read()
 }
 
+/// Clipper2's general engine (`Clipper64`) on open paths, one call per segment: for each of
+/// `segments`, `AddClip(window)`, `AddOpenSubject({segment})` and `Execute(Intersection,
+/// EvenOdd)` on a fresh `Clipper64`, and the open paths it returns (the segment's parts inside
+/// the window). `None` when Clipper2 reports a failure or a count does not fit the C layer's
+/// `int` indices.
+pub(crate) fn open_intersections(
+    window: &[Vec<GridPoint>],
+    segments: &[[GridPoint; 2]],
+) -> Option<Vec<Vec<Vec<GridPoint>>>> {
+    let window = OwnedPaths::from_paths(window);
+    let mut all = Vec::with_capacity(segments.len());
+    for segment in segments {
+        let subject = OwnedPaths::from_paths(&[segment.to_vec()]);
+        let closed = OwnedPaths::empty();
+        let open = OwnedPaths::empty();
+        // SAFETY: a fresh buffer of `clipper_clipper64_size()` bytes with a `Clipper64` built in
+        // it, deleted by `OwnedClipper`'s drop. `add_clip` and `add_open_subject` copy the live
+        // `Paths64` they are given; `execute` writes into the two live, owned `Paths64`.
+        let done = unsafe {
+            let clipper = OwnedClipper(clipper_clipper64(clipper_allocate(clipper_clipper64_size())));
+            clipper_clipper64_add_clip(clipper.0, window.0);
+            clipper_clipper64_add_open_subject(clipper.0, subject.0);
+            clipper_clipper64_execute(
+                clipper.0,
+                ClipperClipType_INTERSECTION,
+                ClipperFillRule_EVEN_ODD,
+                closed.0,
+                open.0,
+            )
+        };
+        if done == 0 {
+            return None;
+        }
+        all.push(open.read()?);
+    }
+    Some(all)
+}
+
+/// A `Clipper64` this side owns, deleted (destructor and buffer) when dropped.
+struct OwnedClipper(*mut ClipperClipper64);
+
+impl Drop for OwnedClipper {
+    fn drop(&mut self) {
+        // SAFETY: `self.0` came from the `Clipper64` constructor in a `clipper_allocate` buffer and
+        // is deleted only here, once.
+        unsafe { clipper_delete_clipper64(self.0) }
+    }
+}
+
 /// A `Paths64` this side owns, deleted (destructor and buffer) when dropped.
 struct OwnedPaths(*mut ClipperPaths64);
 
 impl OwnedPaths {
-    /// A copy of `paths` on the C++ side.
-    fn from_paths(paths: &[Vec<GridPoint>]) -> OwnedPaths {
+    /// An empty `Paths64` on the C++ side.
+    fn empty() -> OwnedPaths {
         // SAFETY: a fresh buffer of `clipper_paths64_size()` bytes from `clipper_allocate`,
         // an empty `Paths64` built in it; `OwnedPaths` deletes it with `clipper_delete_paths64`.
-        let owned = OwnedPaths(unsafe { clipper_paths64(clipper_allocate(clipper_paths64_size())) });
+        OwnedPaths(unsafe { clipper_paths64(clipper_allocate(clipper_paths64_size())) })
+    }
+
+    /// A copy of `paths` on the C++ side.
+    fn from_paths(paths: &[Vec<GridPoint>]) -> OwnedPaths {
+        let owned = OwnedPaths::empty();
         for path in paths {
             let mut points: Vec<ClipperPoint64> = path.iter().map(|&[x, y]| ClipperPoint64 { x, y }).collect();
             // SAFETY: `points` is `points.len()` initialised `ClipperPoint64` (layout of
@@ -197,6 +253,18 @@ mod tests {
         // these are Clipper2's own integers).
         assert_eq!(rect_clip_lines(RECT, &[vec![[2, 0], [8, 0]]]).unwrap(), vec![vec![[2, 0], [8, 0]]]);
         assert!(rect_clip_lines(RECT, &[vec![[2, 0], [15, 0]]]).unwrap().is_empty());
+    }
+
+    #[test]
+    fn open_paths_keep_their_parts_inside_a_concave_window() {
+        // A U: the segment crosses both arms and passes over the notch.
+        let u = vec![[0, 0], [30, 0], [30, 30], [20, 30], [20, 10], [10, 10], [10, 30], [0, 30]];
+        let out = open_intersections(&[u], &[[[-10, 20], [40, 20]], [[-10, 40], [40, 40]]]).unwrap();
+        assert_eq!(out.len(), 2);
+        let mut pieces: Vec<(i64, i64)> = out[0].iter().map(|p| (p[0][0].min(p[1][0]), p[0][0].max(p[1][0]))).collect();
+        pieces.sort_unstable();
+        assert_eq!(pieces, vec![(0, 10), (20, 30)]);
+        assert!(out[1].is_empty());
     }
 
     #[test]

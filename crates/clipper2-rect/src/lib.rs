@@ -9,7 +9,9 @@
 //! wraps that C function in [`Clipper2RectClipper`], a [`clip_core::PolygonClipper`], so the
 //! harness's `verify` and the window clippers' benches can put the two papers' algorithms
 //! next to it, and its line counterpart `RectClipLines` in [`Clipper2RectLines`], a
-//! [`clip_core::LineClipper`] for rectangle windows.
+//! [`clip_core::LineClipper`] for rectangle windows. The general engine's open-path clipping
+//! (`Clipper64` with `AddOpenSubject`), which the `clipper2` crate does not return, is the line
+//! peer [`Clipper2OpenLines`] for any window.
 //!
 //! # Why a crate of its own
 //!
@@ -42,6 +44,9 @@
 //!   `GEO_TOLERANCE`). Cut points on the rectangle's sides get the sides' exact coordinates back.
 //!   Line pieces are rebuilt on the input segment from their parameters; each segment gets a
 //!   grid of its own (see [`Clipper2RectLines`]).
+//! - [`Clipper2OpenLines`] runs one `Execute` per segment on a grid shared by the batch and the
+//!   window; its boundary rules are Clipper2's: a segment along a window edge can lose its part
+//!   on the edge, so `verify` reports oracle failures for it on `lines-degenerate` and `lines-large`.
 //! - `RectClipLines` breaks the closed-set rule of `docs/DESIGN.md` for a segment along a side that
 //!   goes on beyond the rectangle: it drops the part on the side (a segment wholly on a side is
 //!   kept), so `verify` reports oracle failures for this peer on the `lines-degenerate` workload.
@@ -68,11 +73,13 @@ mod clipper;
 mod ffi;
 mod grid;
 mod lines;
+mod open_lines;
 
 pub use clipper::Clipper2RectClipper;
 pub use ffi::GridPoint;
 pub use grid::IntegerGrid;
 pub use lines::Clipper2RectLines;
+pub use open_lines::{Clipper2OpenLines, OPEN_LINES_NAME};
 
 /// The registry name.
 pub const NAME: &str = "clipper2-rect";

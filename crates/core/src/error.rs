@@ -168,7 +168,7 @@ pub fn validate_polygons(polygons: &Polygons, operand: Operand) -> Result<(), Cl
 pub fn validate_segments(segments: &[Segment]) -> Result<(), ClipError> {
     // The common case in one branch-free pass the compiler vectorises (NaN fails `<=`); only a
     // batch that fails it is walked again to name the first bad endpoint.
-    let in_range = |v: f64| v.abs() <= MAX_COORDINATE && (v == 0.0 || v.abs() >= MIN_COORDINATE);
+    let in_range = |v: f64| (v.abs() <= MAX_COORDINATE) & ((v == 0.0) | (v.abs() >= MIN_COORDINATE));
     let all_good =
         segments.iter().fold(true, |ok, s| ok & in_range(s.a.x) & in_range(s.a.y) & in_range(s.b.x) & in_range(s.b.y));
     if all_good {

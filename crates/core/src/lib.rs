@@ -40,6 +40,7 @@
 pub struct ReadmeDoctests;
 
 mod area;
+mod batch_filter;
 mod clipper;
 mod curve_region;
 mod ellipse;
@@ -62,6 +63,7 @@ mod winding;
 mod window_rings;
 
 pub use area::signed_area;
+pub use batch_filter::retain_indices;
 pub use clipper::{
     LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
     WindowKind,

@@ -64,6 +64,14 @@ impl LineCrossings {
         }
     }
 
+    /// Records `before` crossings before the start and `after` past the end, which only count
+    /// toward the ends' parities (stand-ins for crossings not looked for). No branch.
+    #[inline]
+    pub fn count_beyond(&mut self, before: u32, after: u32) {
+        self.before_end += before;
+        self.after_start += after;
+    }
+
     /// Records a window edge along the line, its ends given by place and parameter.
     pub fn along(&mut self, p: (Along, f64), q: (Along, f64)) {
         let (tp, tq) = (clamped(p.0, p.1), clamped(q.0, q.1));
@@ -79,6 +87,14 @@ impl LineCrossings {
     /// crossing; then united with the edges along the line, touching pieces merged, points
     /// dropped. Returns the number of pieces written.
     pub fn emit(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
+        if self.along.is_empty() {
+            return self.emit_few(index, frame, out);
+        }
+        self.emit_general(index, frame, out)
+    }
+
+    /// [`LineCrossings::emit`] in general: any number of crossings, edges along the line.
+    fn emit_general(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
         sort_small(&mut self.inside);
         snap(&mut self.inside);
         let (m0_inside, m1_inside) = (self.after_start % 2 == 1, self.before_end % 2 == 1);
@@ -124,6 +140,77 @@ impl LineCrossings {
     }
 }
 
+impl LineCrossings {
+    /// [`LineCrossings::emit`] with no edge along the line: up to two crossings on the segment (the
+    /// common case) written out without the general loops, whose trip counts vary from segment to
+    /// segment and mispredict; the same pieces.
+    #[inline]
+    fn emit_few(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
+        let before = out.len();
+        let m0_inside = self.after_start % 2 == 1;
+        match *self.inside.as_slice() {
+            [] => {
+                if m0_inside {
+                    frame.push_piece(out, index, (0.0, 1.0));
+                }
+            }
+            [t] => frame.push_piece(out, index, if m0_inside { (0.0, t) } else { (t, 1.0) }),
+            [t0, t1] => {
+                let (t0, t1) = (t0.min(t1), t0.max(t1));
+                let t1 = if t1 - t0 <= PARAMETER_SNAP { t0 } else { t1 };
+                if !m0_inside {
+                    frame.push_piece(out, index, (t0, t1));
+                } else if t1 <= t0 + PARAMETER_SNAP || frame.at(t1) == frame.at(t0) {
+                    frame.push_piece(out, index, (0.0, 1.0));
+                } else {
+                    frame.push_piece(out, index, (0.0, t0));
+                    frame.push_piece(out, index, (t1, 1.0));
+                }
+            }
+            _ => self.emit_sorted(index, frame, out),
+        }
+        out.len() - before
+    }
+
+    /// [`LineCrossings::emit`] with no edge along the line, in one pass over the sorted crossings:
+    /// snapping, pairing by parity and merging as the general path does, without its separate
+    /// loops (each loop of varying length mispredicts once at its end).
+    fn emit_sorted(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) {
+        sort_small(&mut self.inside);
+        let mut inside = self.after_start % 2 == 1;
+        let (mut from, mut previous) = (0.0, f64::NEG_INFINITY);
+        let mut current: Option<(f64, f64)> = None;
+        let mut show = |span: (f64, f64), current: &mut Option<(f64, f64)>| {
+            *current = match *current {
+                Some((clo, chi)) if span.0 <= chi + PARAMETER_SNAP || frame.at(span.0) == frame.at(chi) => {
+                    Some((clo, chi.max(span.1)))
+                }
+                Some(done) => {
+                    frame.push_piece(out, index, done);
+                    Some(span)
+                }
+                None => Some(span),
+            };
+        };
+        for &t in &self.inside {
+            let t = if t - previous <= PARAMETER_SNAP { previous } else { t };
+            previous = t;
+            if inside {
+                show((from, t), &mut current);
+            }
+            inside = !inside;
+            from = t;
+        }
+        debug_assert_eq!(inside, self.before_end % 2 == 1, "parity of the crossings between the ends");
+        if self.before_end % 2 == 1 {
+            show((from, 1.0), &mut current);
+        }
+        if let Some(done) = current {
+            frame.push_piece(out, index, done);
+        }
+    }
+}
+
 impl LineFrame {
     /// Appends the piece `[t0, t1]` of segment `index` to `out` when it has positive length
     /// (longer than [`PARAMETER_SNAP`] and with distinct end points).
@@ -151,9 +238,27 @@ fn snap(v: &mut [f64]) {
     }
 }
 
-/// Insertion sort: a segment meets a window's boundary a handful of times.
+/// Sorts the few crossing parameters of one segment. Up to [`RANK_SORT_UP_TO`] of them by rank
+/// (each value's place is the count of values before it, ties by position): a fixed number of
+/// comparisons and no branch on the data, where an insertion sort of crossings that come in ring
+/// order (not along the line) mispredicts about once per element. Longer lists by insertion.
 #[inline]
 fn sort_small(v: &mut [f64]) {
+    if v.len() <= RANK_SORT_UP_TO {
+        // Padded with +inf to a constant length, so the loops have fixed trip counts too.
+        let mut padded = [f64::INFINITY; RANK_SORT_UP_TO];
+        padded[..v.len()].copy_from_slice(v);
+        let mut sorted = [0.0f64; RANK_SORT_UP_TO];
+        for (i, &x) in padded.iter().enumerate() {
+            let mut rank = 0;
+            for (j, &y) in padded.iter().enumerate() {
+                rank += usize::from((y < x) | ((y == x) & (j < i)));
+            }
+            sorted[rank] = x;
+        }
+        v.copy_from_slice(&sorted[..v.len()]);
+        return;
+    }
     for i in 1..v.len() {
         let x = v[i];
         let mut j = i;
@@ -164,6 +269,9 @@ fn sort_small(v: &mut [f64]) {
         v[j] = x;
     }
 }
+
+/// The longest list [`sort_small`] sorts by rank (quadratic in the length).
+const RANK_SORT_UP_TO: usize = 8;
 
 #[cfg(test)]
 mod tests {
@@ -225,6 +333,17 @@ mod tests {
         out.clear();
         d.emit(0, &frame, &mut out);
         assert_eq!(out.len(), 2, "{out:?}");
+    }
+
+    #[test]
+    fn sorts_by_rank_and_by_insertion_alike() {
+        for n in 0..=12 {
+            let mut v: Vec<f64> = (0..n).map(|i| f64::from((i * 7 + 3) % 5) / 4.0).collect();
+            let mut expected = v.clone();
+            expected.sort_by(f64::total_cmp);
+            sort_small(&mut v);
+            assert_eq!(v, expected, "{n} values");
+        }
     }
 
     #[test]

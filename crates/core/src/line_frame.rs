@@ -1,6 +1,6 @@
 //! A segment's line as a parameter axis: `t` of points on it and their exact place relative to the ends.
 
-use crate::predicates::orient2d_inline as orient2d;
+use crate::predicates::{orient_sign, orient2d_inline as orient2d};
 use crate::{Point, Segment};
 
 /// Where a point of the segment's line lies relative to the segment, decided exactly.
@@ -72,7 +72,10 @@ impl LineFrame {
     /// of `p` (of `q`) as `p` (`q`) nears the line.
     #[inline]
     pub fn edge_crossing(&self, p: Point, q: Point, fp: f64, fq: f64) -> (Along, f64) {
-        let ga = orient2d(p, q, self.a);
+        // Only the signs of the edge's function at the ends place the crossing: the sign-only
+        // predicate spares the accurate magnitude's expansion where the ends lie near the edge's
+        // line (short edges of large windows, seen from afar).
+        let ga = orient_sign(p, q, self.a);
         let ahead_positive = fp > 0.0;
         if ga == 0.0 {
             return (Along::AtStart, 0.0);
@@ -80,7 +83,7 @@ impl LineFrame {
         if (ga > 0.0) == ahead_positive {
             return (Along::Before, 0.0);
         }
-        let gb = orient2d(p, q, self.b);
+        let gb = orient_sign(p, q, self.b);
         if gb == 0.0 {
             (Along::AtEnd, 1.0)
         } else if (gb > 0.0) == ahead_positive {

@@ -132,6 +132,23 @@ impl Rect {
             | (a.y.min(b.y) > self.max.y)
     }
 
+    /// The indices of the segments of positive length that [`Rect::rejects_segment`] keeps, in
+    /// order, into `kept` (cleared first). The line clippers run it over a whole batch before any
+    /// other work: with no branch on a segment's fate (the index is always written, the length
+    /// grows by the test's outcome), randomly placed segments cost no mispredicted branch here,
+    /// where a per-segment early out mispredicts on about a third of them.
+    pub fn keep_meeting(&self, segments: &[crate::Segment], kept: &mut Vec<usize>) {
+        kept.clear();
+        kept.resize(segments.len() + 1, 0);
+        let mut n = 0;
+        for (i, s) in segments.iter().enumerate() {
+            kept[n] = i;
+            let zero_length = (s.a.x == s.b.x) & (s.a.y == s.b.y);
+            n += usize::from(!(self.rejects_segment(s.a, s.b) | zero_length));
+        }
+        kept.truncate(n);
+    }
+
     /// The box grown by `d` on every side.
     #[inline]
     pub fn inflate(&self, d: f64) -> Rect {
@@ -141,5 +158,30 @@ impl Rect {
     /// The box as a counter-clockwise ring starting at the lower-left corner.
     pub fn to_ring(&self) -> Ring {
         Ring::new(vec![self.min, Point::new(self.max.x, self.min.y), self.max, Point::new(self.min.x, self.max.y)])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Segment;
+
+    #[test]
+    fn keep_meeting_keeps_touching_segments_in_order_and_drops_points() {
+        let r = Rect::new(0.0, 0.0, 1.0, 1.0);
+        let s = |ax, ay, bx, by| Segment::new(Point::new(ax, ay), Point::new(bx, by));
+        let segments = [
+            s(-2.0, 0.5, -1.0, 0.5), // left of the box
+            s(-1.0, 1.0, 0.0, 2.0),  // past the corner, beyond no single side
+            s(0.5, 0.5, 0.5, 0.5),   // a point inside
+            s(1.0, -1.0, 1.0, 2.0),  // along the right side
+            s(0.0, 2.0, 1.0, 1.5),   // above
+            s(-1.0, -1.0, 2.0, 2.0), // through
+        ];
+        let mut kept = vec![7];
+        r.keep_meeting(&segments, &mut kept);
+        assert_eq!(kept, vec![1, 3, 5]);
+        r.keep_meeting(&[], &mut kept);
+        assert!(kept.is_empty());
     }
 }

@@ -100,26 +100,39 @@ impl PreparedLiu {
                 }
                 continue;
             }
-            let frame = LineFrame::new(s);
-            cross_by_vertex_sides(&self.table, &frame, &mut scratch);
-            if scratch.crossings.is_empty() {
-                if COUNT {
-                    counts.no_crossing += 1;
-                }
-                continue;
-            }
-            let written = scratch.crossings.emit(index, &frame, out);
-            if COUNT && written > 0 {
-                counts.visible += 1;
+            match self.clip_met(index, s, out, &mut scratch) {
+                None if COUNT => counts.no_crossing += 1,
+                Some(written) if COUNT && written > 0 => counts.visible += 1,
+                _ => {}
             }
         }
         Ok(())
     }
+
+    /// One segment of positive length that the bounding box did not reject: `None` when its line
+    /// meets no edge, else the number of pieces written.
+    #[inline(always)]
+    fn clip_met(&self, index: usize, s: Segment, out: &mut Vec<VisiblePiece>, scratch: &mut Scratch) -> Option<usize> {
+        let frame = LineFrame::new(s);
+        cross_by_vertex_sides(&self.table, &frame, scratch);
+        if scratch.crossings.is_empty() {
+            return None;
+        }
+        Some(scratch.crossings.emit(index, &frame, out))
+    }
 }
 
 impl PreparedWindow for PreparedLiu {
+    /// The bounding box first over the whole batch, without branches, then the segments it kept.
     fn clip_batch(&self, segments: &[Segment], out: &mut Vec<VisiblePiece>) -> Result<(), ClipError> {
-        self.run::<false>(segments, out, &mut LiuCounts::default())
+        validate_segments(segments)?;
+        let mut scratch = Scratch::default();
+        let mut kept = Vec::new();
+        self.table.bounds.keep_meeting(segments, &mut kept);
+        for &index in &kept {
+            self.clip_met(index, segments[index], out, &mut scratch);
+        }
+        Ok(())
     }
 }
 

@@ -1,9 +1,10 @@
 //! The clipper: the window prepared into an edge tree once, then per segment a walk of the tree along its ray.
 
-use clip_core::predicates::orient2d;
+use clip_core::predicates::{orient_sign, orient2d};
 use clip_core::{
     Along, ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, LineSide, Point, Polygons,
-    PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, validate_segments, validate_window,
+    PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, retain_indices, validate_segments,
+    validate_window,
 };
 
 use core::ops::Range;
@@ -141,28 +142,52 @@ impl PreparedLineIndex {
         let ray = Ray::new(a, b);
         let side = LineSide::new(a, b);
         let frame = LineFrame::new(s);
-        // A segment short beside the window: its crossings and the exact place of its start,
-        // found along a horizontal ray to the nearer side of the box, cost less than everything
-        // along the ray through it. A start on the boundary has no place that tells the parity
-        // just after it: those segments take the ray.
-        let short = self.tree.leaves.len() > SHORT_FROM_LEAVES
-            && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height());
-        let start = if short { self.locate::<COUNT>(a, counts) } else { Start::OnBoundary };
-        if let Start::Inside(inside) = start {
-            let found = self.walk::<COUNT, true>(&ray, &side, &frame, &s.bounds(), crossings, counts);
-            // The crossings on the segment toggle the parity from the start's to the end's.
-            if (found + u32::from(inside)) % 2 == 1 {
-                crossings.record(Along::After, 1.0);
-            }
-            if inside {
-                crossings.record(Along::Before, 0.0);
-            }
+        // An end strictly outside the bounding box is outside the window, so the crossings on the
+        // segment alone give the parity at the other end: only the boxes meeting the segment are
+        // walked. Otherwise a segment short beside the window: its crossings and the exact place
+        // of its start, found along a horizontal ray to the nearer side of the box, cost less
+        // than everything along the ray through it. A start on the boundary has no place that
+        // tells the parity just after it: those segments take the ray.
+        let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
+        if a_outside | b_outside {
+            let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            // With the start outside, the crossings on the segment give the end's parity; with
+            // the end outside, the start's. Counted without a branch on which end it is (it is
+            // random in a batch spread over the screen).
+            let odd = found & 1;
+            crossings.count_beyond(odd & u32::from(!a_outside), odd & u32::from(a_outside));
         } else {
-            // Crossings at or after the start, counted: every ring crosses the line an even
-            // number of times, so their parity is the parity of those before the start.
-            let found = self.walk::<COUNT, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
-            if found % 2 == 1 {
-                crossings.record(Along::Before, 0.0);
+            let start = if self.tree.leaves.len() > SHORT_FROM_LEAVES
+                && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height())
+            {
+                self.locate::<COUNT>(a, counts)
+            } else {
+                Start::OnBoundary
+            };
+            if let Start::Inside(inside) = start {
+                let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                // The crossings on the segment toggle the parity from the start's to the end's.
+                if (found + u32::from(inside)) % 2 == 1 {
+                    crossings.record(Along::After, 1.0);
+                }
+                if inside {
+                    crossings.record(Along::Before, 0.0);
+                }
+            } else if self.exit_length(b, b - a) <= self.exit_length(a, a - b) {
+                // Crossings at or after the start, counted: every ring crosses the line an even
+                // number of times, so their parity is the parity of those before the start.
+                let found = self.walk::<COUNT, false, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                if found % 2 == 1 {
+                    crossings.record(Along::Before, 0.0);
+                }
+            } else {
+                // The same from the end backwards, where the line leaves the box sooner that way:
+                // crossings at or before the end, and the parity of those after it.
+                let back = Ray::new(b, a);
+                let found = self.walk::<COUNT, false, true>(&back, &side, &frame, &s.bounds(), crossings, counts);
+                if found % 2 == 1 {
+                    crossings.record(Along::After, 1.0);
+                }
             }
         }
         if crossings.is_empty() {
@@ -177,11 +202,46 @@ impl PreparedLineIndex {
         }
     }
 
-    /// Walks the tree: along the ray from the start (`ON_SEGMENT` false), or over the boxes
+    /// False when `s` (of positive length, not rejected by the bounding box) certainly shows
+    /// nothing: an end lies outside the bounding box, so outside the window, and no child box of
+    /// the root meets the segment, so it crosses and touches no edge. Branch-free.
+    #[inline(always)]
+    fn may_show(&self, s: Segment) -> bool {
+        let root = &self.tree.nodes[0];
+        let segment = s.bounds();
+        let mut mask = 0;
+        for i in 0..WAYS {
+            let apart = (root.min_x[i] > segment.max.x)
+                | (root.max_x[i] < segment.min.x)
+                | (root.min_y[i] > segment.max.y)
+                | (root.max_y[i] < segment.min.y);
+            mask |= u32::from(!apart) << i;
+        }
+        let meets = mask & Ray::new(s.a, s.b).line_hits(root) & u32::from(root.present) != 0;
+        meets | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0)
+    }
+
+    /// How far the ray from `p` in direction `d` runs inside the bounding box, in units of `|d|`
+    /// (rounded: it only chooses a direction to walk).
+    fn exit_length(&self, p: Point, d: Point) -> f64 {
+        let along = |p: f64, d: f64, lo: f64, hi: f64| {
+            if d > 0.0 {
+                (hi - p) / d
+            } else if d < 0.0 {
+                (lo - p) / d
+            } else {
+                f64::INFINITY
+            }
+        };
+        along(p.x, d.x, self.bounds.min.x, self.bounds.max.x).min(along(p.y, d.y, self.bounds.min.y, self.bounds.max.y))
+    }
+
+    /// Walks the tree: along the ray from the start (`ON_SEGMENT` false; from the end backwards
+    /// when `BACKWARD`), or over the boxes
     /// meeting the closed segment whose box is `segment` (`ON_SEGMENT` true); records the
     /// crossings at or after the start (on the segment) and returns how many there were.
     #[inline(always)]
-    fn walk<const COUNT: bool, const ON_SEGMENT: bool>(
+    fn walk<const COUNT: bool, const ON_SEGMENT: bool, const BACKWARD: bool>(
         &self,
         ray: &Ray,
         side: &LineSide,
@@ -207,7 +267,10 @@ impl PreparedLineIndex {
                     ray.hits(node)
                 }
             },
-            |range| found += self.leaf::<ON_SEGMENT>(range.start as usize, range.end as usize, side, frame, crossings),
+            |range| {
+                found +=
+                    self.leaf::<ON_SEGMENT, BACKWARD>(range.start as usize, range.end as usize, side, frame, crossings)
+            },
             counts,
         );
         found
@@ -279,7 +342,7 @@ impl PreparedLineIndex {
                     if p == a {
                         on_boundary = true;
                     } else if (p.y > a.y) != (q.y > a.y) {
-                        let o = orient2d(p, q, a);
+                        let o = orient_sign(p, q, a);
                         on_boundary |= o == 0.0;
                         // `a` left of an upward edge (right of a downward one): the edge is to its
                         // right.
@@ -297,9 +360,10 @@ impl PreparedLineIndex {
     /// Liu's rule on one leaf's edges `first..end`: the exact sign of the line function at each
     /// vertex, a crossing for each edge whose signs differ (a vertex on the line counting as on
     /// the negative side), edges on the line recorded as boundary. Records the crossings at or
-    /// after the start (only those on the segment when `ON_SEGMENT`) and returns how many there were.
+    /// after the start (at or before the end when `BACKWARD`; only those on the segment when
+    /// `ON_SEGMENT`) and returns how many there were.
     #[inline(always)]
-    fn leaf<const ON_SEGMENT: bool>(
+    fn leaf<const ON_SEGMENT: bool, const BACKWARD: bool>(
         &self,
         first: usize,
         end: usize,
@@ -318,9 +382,13 @@ impl PreparedLineIndex {
             f[k] = value;
             unsure |= u64::from(value.abs() <= bound) << k;
         }
+        // The exact sign for those; its magnitude is made accurate below only where a crossing is
+        // placed by it (the accurate magnitude costs an exact expansion, and vertices near the
+        // line are many on a finely sampled boundary).
+        let approximate = unsure;
         while unsure != 0 {
             let k = unsure.trailing_zeros() as usize;
-            f[k] = orient2d(frame.a, frame.b, points[k]);
+            f[k] = orient_sign(frame.a, frame.b, points[k]);
             unsure &= unsure - 1;
         }
         let (mut positive, mut zero) = (0u64, 0u64);
@@ -337,7 +405,10 @@ impl PreparedLineIndex {
         while crossed != 0 {
             let k = crossed.trailing_zeros() as usize;
             crossed &= crossed - 1;
-            let (p, q, fp, fq) = (points[k], points[k + 1], f[k], f[k + 1]);
+            let (p, q, mut fp, mut fq) = (points[k], points[k + 1], f[k], f[k + 1]);
+            if (approximate >> k) & 0b11 != 0 {
+                (fp, fq) = (orient2d(frame.a, frame.b, p), orient2d(frame.a, frame.b, q));
+            }
             let (place, t) = if fp == 0.0 {
                 (frame.place(p), frame.param(p))
             } else if fq == 0.0 {
@@ -345,7 +416,10 @@ impl PreparedLineIndex {
             } else {
                 frame.edge_crossing(p, q, fp, fq)
             };
-            if place != Along::Before && !(ON_SEGMENT && place == Along::After) {
+            // Behind the walk's start, or past the segment's far end when only the segment is walked.
+            let left_out = if BACKWARD { place == Along::After } else { place == Along::Before }
+                || (ON_SEGMENT && place == Along::After);
+            if !left_out {
                 crossings.record(place, t);
                 found += 1;
             }
@@ -365,8 +439,15 @@ impl PreparedWindow for PreparedLineIndex {
         validate_segments(segments)?;
         let mut crossings = LineCrossings::default();
         let mut counts = IndexCounts::default();
-        for (index, &s) in segments.iter().enumerate() {
-            self.clip_one::<false>(index, s, out, &mut crossings, &mut counts);
+        // The bounding box over the whole batch first, without branches (see
+        // `Rect::keep_meeting`), then the segments it kept.
+        let mut kept = Vec::new();
+        self.bounds.keep_meeting(segments, &mut kept);
+        // Then the root's child boxes, also over the batch: a segment with an end outside the
+        // bounding box that meets none of them lies wholly outside.
+        retain_indices(&mut kept, |i| self.may_show(segments[i]));
+        for &index in &kept {
+            self.clip_one::<false>(index, segments[index], out, &mut crossings, &mut counts);
         }
         Ok(())
     }

@@ -26,12 +26,16 @@
 //! piece of the boundary, so a line meets few of them; a node keeps its four children's boxes
 //! side by side, so they are tested together with straight-line arithmetic.
 //!
-//! Per segment `a -> b`:
+//! Per batch, two branch-free passes first (a segment's fate is random in a batch spread over a
+//! screen, and a per-segment early out mispredicts on a large share of it): zero-length segments
+//! and those the window's bounding box rejects (both ends beyond one side, Cohen-Sutherland) are
+//! dropped, then those with an end outside the bounding box that meet none of the root's child
+//! boxes (they lie wholly outside). Per segment `a -> b` left:
 //!
-//! 1. zero length: nothing; the window's bounding box rejects the segment when both ends lie beyond
-//!    one side (Cohen-Sutherland, as in Liu and Wang et al.);
-//! 2. the tree is walked along the **ray** from `a` through `b` (the line from the start on): a
-//!    child is skipped when its box lies wholly on one side of the line or behind `a`;
+//! 1. an end strictly outside the bounding box is outside the window, so only the boxes meeting
+//!    the **segment** are walked, and the crossings on it give the other end's parity;
+//! 2. otherwise the tree is walked along the **ray** from `a` through `b` (the line from the start
+//!    on): a child is skipped when its box lies wholly on one side of the line or behind `a`;
 //! 3. in each leaf reached, Liu's rule: the exact sign of the line function at each vertex, a
 //!    crossing for each edge whose end signs differ, placed exactly before, at, inside or after
 //!    the segment's ends ([`clip_core::LineFrame::edge_crossing`]); edges on the line are boundary;

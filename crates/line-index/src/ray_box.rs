@@ -36,15 +36,17 @@ impl Ray {
     /// strictly on one side of it.
     #[inline(always)]
     pub fn line_hits(&self, node: &Node) -> u32 {
-        // f(c) = d.x (c.y - a.y) - d.y (c.x - a.x) grows with c.y when d.x > 0 and shrinks with c.x
-        // when d.y > 0.
-        let (y_hi, y_lo) = if self.d.x > 0.0 { (&node.max_y, &node.min_y) } else { (&node.min_y, &node.max_y) };
-        let (x_hi, x_lo) = if self.d.y > 0.0 { (&node.min_x, &node.max_x) } else { (&node.max_x, &node.min_x) };
+        // f(c) = l - r with l = d.x (c.y - a.y), r = d.y (c.x - a.x): its largest value over the
+        // corners takes the larger l and the smaller r, its smallest the reverse. Taken with
+        // min and max of the two candidates (the same products a choice of corner by the signs
+        // of d would pick), so the direction costs no branch.
         let mut mask = 0;
         for i in 0..WAYS {
-            let (l, r) = (self.d.x * (y_hi[i] - self.a.y), self.d.y * (x_hi[i] - self.a.x));
+            let (l1, l2) = (self.d.x * (node.max_y[i] - self.a.y), self.d.x * (node.min_y[i] - self.a.y));
+            let (r1, r2) = (self.d.y * (node.min_x[i] - self.a.x), self.d.y * (node.max_x[i] - self.a.x));
+            let (l, r) = (l1.max(l2), r1.min(r2));
             let below = l - r < -(ORIENT_ERROR_BOUND * (l.abs() + r.abs()));
-            let (l, r) = (self.d.x * (y_lo[i] - self.a.y), self.d.y * (x_lo[i] - self.a.x));
+            let (l, r) = (l1.min(l2), r1.max(r2));
             let above = l - r > ORIENT_ERROR_BOUND * (l.abs() + r.abs());
             mask |= u32::from(!(below | above)) << i;
         }
@@ -55,11 +57,11 @@ impl Ray {
     /// ray has `d . (c - a) < 0`, beyond the same error bound.
     #[inline(always)]
     fn ahead(&self, node: &Node) -> u32 {
-        let xs = if self.d.x > 0.0 { &node.max_x } else { &node.min_x };
-        let ys = if self.d.y > 0.0 { &node.max_y } else { &node.min_y };
+        // The corner farthest along the ray: the larger of the two products per axis.
         let mut mask = 0;
         for i in 0..WAYS {
-            let (p, q) = (self.d.x * (xs[i] - self.a.x), self.d.y * (ys[i] - self.a.y));
+            let p = (self.d.x * (node.max_x[i] - self.a.x)).max(self.d.x * (node.min_x[i] - self.a.x));
+            let q = (self.d.y * (node.max_y[i] - self.a.y)).max(self.d.y * (node.min_y[i] - self.a.y));
             let behind = p + q < -(ORIENT_ERROR_BOUND * (p.abs() + q.abs()));
             mask |= u32::from(!behind) << i;
         }

@@ -16,6 +16,9 @@
 //!   (`RectClip`, `RectClipLines`), from the clip-clipper2-rect crate (the C API needs `unsafe`),
 //!   on the same grid; rectangle windows only, polygon output read under the input's fill rule
 //!   like Sutherland-Hodgman's.
+//! - [`Clipper2OpenLines`]: Clipper2's general engine clipping open paths (`AddOpenSubject`, one
+//!   `Execute` per segment) against any window read even-odd, from the same crate and on the same
+//!   kind of grid; a line peer whose boundary rules are Clipper2's, not the closed-set rule.
 //! - [`IOverlayClipper`]: i_overlay 9's f64 overlay (`FloatOverlay`), called directly, every op
 //!   under every fill rule.
 //! - [`GeosClipper`]: GEOS (the `geos` crate, against the system libgeos); the adapter builds each
@@ -51,4 +54,4 @@ pub use self::geo::{GeoClipper, GeoLineClipper};
 pub use self::geos::GeosClipper;
 pub use self::i_overlay::IOverlayClipper;
 pub use self::ring_counts::{FINE_GRID_OVERLAPS, PEER_CRACKS, normalised_counts_agree, thin_rings};
-pub use clip_clipper2_rect::{Clipper2RectClipper, Clipper2RectLines};
+pub use clip_clipper2_rect::{Clipper2OpenLines, Clipper2RectClipper, Clipper2RectLines, OPEN_LINES_NAME};

@@ -3,7 +3,7 @@
 use plotters::style::RGBColor;
 
 /// Every clipper's colour, so a clipper looks the same in every plot.
-const CLIPPERS: [(&str, RGBColor); 18] = [
+const CLIPPERS: [(&str, RGBColor); 19] = [
     ("vatti", RGBColor(31, 119, 180)),
     ("sutherland-hodgman", RGBColor(255, 127, 14)),
     ("rect-four-state", RGBColor(44, 160, 44)),
@@ -18,6 +18,7 @@ const CLIPPERS: [(&str, RGBColor); 18] = [
     ("i_overlay", RGBColor(0, 0, 0)),
     ("clipper2-rust", RGBColor(255, 152, 150)),
     ("clipper1", RGBColor(140, 140, 60)),
+    ("clipper2-open", RGBColor(255, 99, 71)),
     ("curve", RGBColor(31, 158, 137)),
     ("curve-no-tests", RGBColor(64, 64, 64)),
     ("curve-outline", RGBColor(102, 194, 165)),

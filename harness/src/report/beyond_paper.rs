@@ -20,13 +20,14 @@ pub const MD: &str = "beyond-paper.md";
 pub const PLOTS: [(&str, &str); 2] = [("long", "beyond-paper-long.svg"), ("short", "beyond-paper-short.svg")];
 
 /// The clippers, in column order, with their column titles.
-const COLUMNS: [(&str, &str); 6] = [
+const COLUMNS: [(&str, &str); 7] = [
     ("liu", "Liu"),
     ("virtual-box-no45", "New1"),
     ("virtual-box", "New2"),
     ("indexed", "indexed"),
     ("cyrus-beck", "cyrus-beck"),
     ("geo", "geo"),
+    ("clipper2-open", "Clipper2 open"),
 ];
 /// Column of the indexed clipper, and of the linear clippers it is compared with.
 const INDEXED: usize = 3;
@@ -43,7 +44,7 @@ pub struct Row {
     /// Window edges.
     pub edges: usize,
     /// Median ns per segment per column.
-    pub ns: [f64; 6],
+    pub ns: [f64; 7],
 }
 
 impl Row {
@@ -98,6 +99,7 @@ pub fn markdown_table(rows: &[Row], set: &str) -> String {
         "indexed",
         "cyrus-beck",
         "geo",
+        "Clipper2 open",
         "indexed / Liu",
         "indexed / best linear",
     ]);
@@ -126,8 +128,17 @@ pub fn prepare_table(records: &[PrepareRecord]) -> String {
     edges.dedup();
     let find =
         |shape: &str, e: usize, c: &str| records.iter().find(|r| r.shape == shape && r.edges == e && r.clipper == c);
-    let head =
-        header(&["Edges", "Liu", "New1", "New2", "indexed", "cyrus-beck (convex)", "geo", "indexed memory (KiB)"]);
+    let head = header(&[
+        "Edges",
+        "Liu",
+        "New1",
+        "New2",
+        "indexed",
+        "cyrus-beck (convex)",
+        "geo",
+        "Clipper2 open",
+        "indexed memory (KiB)",
+    ]);
     let body = edges
         .iter()
         .map(|&e| {
@@ -299,11 +310,12 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          second size row (W1 = 4, W2 = 80) and centred on the 800 x 600 screen. Two batches of {} segments per window: \
          **long** ones as in `wang-t4` (ends uniform on the screen, so most miss the window's box) and **short** ones \
          as in road data (at most 2% of the window's width, midpoints uniform in its bounding box). Times are medians \
-         over {} interleaved rounds (geo: {} rounds on {} segments), in **ns per segment**. `indexed` is \
-         `clip-line-index` (a box tree over runs of 8 edges, walked along the segment's ray); Cyrus-Beck runs on the \
-         convex windows only. Clipper2's open-path clipping is reachable through `clipper2c-sys`'s C API \
-         (`clipper_clipper64_add_open_subject`, `clipper_clipper64_execute_tree_with_open`; the `clipper2` 0.6 crate \
-         drops open output) but is not wired into the harness yet, so it has no column.\n\n\
+         over {} interleaved rounds (geo and Clipper2 open: {} rounds on {} segments), in **ns per segment**. `indexed` \
+         is `clip-line-index` (a box tree over runs of 16 edges, walked over the boxes the segment, or its ray, \
+         meets); Cyrus-Beck runs on the convex windows only. **Clipper2 open** is Clipper2's general engine clipping \
+         open paths (`AddOpenSubject` against the window's rings, even-odd, through `clipper2c-sys`'s C API; the \
+         `clipper2` 0.6 crate drops open output), one `Execute` per segment like geo's one call per segment; a peer \
+         on an integer grid with its own boundary rules, not exact.\n\n\
          ### Long segments (as in wang-t4)\n\n{}\n![ns per segment against edges, long segments]({})\n\n\
          ### Short segments (at most 2% of the window's width)\n\n{}\n![ns per segment against edges, short segments]({})\n\n{}\n\
          ### Preparation (once per window) and the indexed clipper's memory\n\n{}\n\

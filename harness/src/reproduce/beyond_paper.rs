@@ -10,7 +10,7 @@ use std::time::Instant;
 use clip_core::{LineClipper, Polygons, PreparedWindow, Segment, VisiblePiece, WindowKind};
 use clip_cyrus_beck::{CyrusBeck, Liu};
 use clip_line_index::{LineIndex, PreparedLineIndex};
-use clip_peers::GeoLineClipper;
+use clip_peers::{Clipper2OpenLines, GeoLineClipper, OPEN_LINES_NAME};
 use clip_testkit::workload::{BEYOND_EDGES, beyond_window, line_case, short_segments, wang_segments};
 use clip_virtual_box::VirtualBox;
 use serde_json::json;
@@ -76,7 +76,14 @@ fn clippers() -> Vec<Box<dyn LineClipper>> {
         Box::new(LineIndex),
         Box::new(CyrusBeck),
         Box::new(GeoLineClipper),
+        Box::new(Clipper2OpenLines),
     ]
+}
+
+/// Peers that clip one segment per call (geo's `BooleanOps::clip`, a `Clipper64::Execute` per
+/// segment): they run on the first segments of a batch, in the first rounds only.
+fn per_segment_call(name: &str) -> bool {
+    name == GEO || name == OPEN_LINES_NAME
 }
 
 /// One window, its two segment batches, and every clipper that takes it, prepared.
@@ -102,7 +109,7 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
                 let n = window.prepared.len();
                 for j in 0..n {
                     let (name, prepared) = &window.prepared[(j + repetition) % n];
-                    let batch = if *name == GEO {
+                    let batch = if per_segment_call(name) {
                         if repetition >= settings.geo_repetitions {
                             continue;
                         }
@@ -158,7 +165,8 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
     });
     let mut provenance = Provenance::now("reproduce beyond-paper", settings.seed, parameters);
     provenance.notes.push(format!(
-        "geo clips one segment per call and takes part in the first {} rounds, on the first {} segments of each batch.",
+        "geo and Clipper2's open-path clipping (`clipper2-open`) clip one segment per call and take part in the first {} \
+         rounds, on the first {} segments of each batch.",
         settings.geo_repetitions, settings.geo_segments
     ));
     provenance.notes.extend(large_notes);

@@ -1,0 +1,73 @@
+//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead, `--large` the indexed clipper on lines-large case 3.
+
+use std::time::Instant;
+
+use clip_core::{LineClipper, PreparedWindow, VisiblePiece};
+use clip_cyrus_beck::Liu;
+use clip_line_index::LineIndex;
+use clip_testkit::workload::{WangSize, beyond_window, wang_segments, wang_window};
+use clip_virtual_box::VirtualBox;
+
+/// One timed pairing: the window's label, the clipper's name, the prepared window, its times.
+type Run<'a> = (String, &'a str, Box<dyn PreparedWindow>, Vec<f64>);
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().collect();
+    let only = args.iter().position(|a| a == "--only").and_then(|i| args.get(i + 1)).cloned();
+    let rounds = args.iter().position(|a| a == "--rounds").and_then(|i| args.get(i + 1)?.parse().ok()).unwrap_or(101);
+    let segments = wang_segments(10_000, 1);
+    let clippers: [&dyn LineClipper; 3] = [&Liu, &VirtualBox::NEW2, &LineIndex];
+    let clippers: Vec<&dyn LineClipper> =
+        clippers.into_iter().filter(|c| only.as_deref().is_none_or(|o| o == c.name())).collect();
+    let mut runs: Vec<Run> = Vec::new();
+    let sizes: Vec<usize> = match args.iter().position(|a| a == "--edges").and_then(|i| args.get(i + 1)?.parse().ok()) {
+        Some(edges) => vec![edges],
+        None => vec![6, 50],
+    };
+    let beyond = args.iter().any(|a| a == "--beyond");
+    if args.iter().any(|a| a == "--large") {
+        // `reproduce beyond-paper`'s 10^6-segment window (lines-large case 3), on 10^5 segments.
+        let case = clip_testkit::workload::line_case("lines-large", 1, 3, clip_core::WindowKind::Any, 100_000)?;
+        let prepared = LineIndex.prepare(&case.window)?;
+        let mut out = Vec::new();
+        let mut times = Vec::new();
+        for _ in 0..rounds.min(7) {
+            out.clear();
+            let start = Instant::now();
+            prepared.clip_batch(&case.segments, &mut out)?;
+            times.push(start.elapsed().as_secs_f64());
+        }
+        times.sort_by(f64::total_cmp);
+        println!("lines-large case 3  indexed {:.1} ns", times[times.len() / 2] * 1e9 / case.segments.len() as f64);
+        return Ok(());
+    }
+    for &edges in &sizes {
+        // wang-t4's two size rows, or with `--beyond` the lobed concave window of `reproduce beyond-paper`.
+        let windows: Vec<(String, clip_core::Polygons)> = if beyond {
+            vec![(format!("{edges:>5} edges lobed"), beyond_window(edges, 1, false))]
+        } else {
+            WangSize::ALL
+                .map(|size| (format!("{edges:>3} edges {}", size.name()), wang_window(edges, size, 1, false)))
+                .into()
+        };
+        for (label, window) in windows {
+            for c in &clippers {
+                runs.push((label.clone(), c.name(), c.prepare(&window)?, Vec::new()));
+            }
+        }
+    }
+    let mut out: Vec<VisiblePiece> = Vec::with_capacity(30_000);
+    for _ in 0..rounds {
+        for (_, _, prepared, times) in &mut runs {
+            out.clear();
+            let start = Instant::now();
+            prepared.clip_batch(&segments, &mut out)?;
+            times.push(start.elapsed().as_secs_f64());
+        }
+    }
+    for (window, name, _, times) in &mut runs {
+        times.sort_by(f64::total_cmp);
+        println!("{window}  {name:<12} {:.1} ns", times[rounds / 2] * 1e9 / segments.len() as f64);
+    }
+    Ok(())
+}
