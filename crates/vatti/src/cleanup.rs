@@ -17,10 +17,19 @@ use crate::raw_rings::RawRings;
 use crate::simplify::simplify_ring;
 use crate::touches::Touches;
 
+/// The clean-up's rings, and whether two of them (or two passes of one) run the same way along
+/// an edge: rounded crossings put both sides of a sliver an ulp wide onto one line, so their
+/// insides overlap and the rings must be joined (`repair`).
+#[derive(Debug, Default)]
+pub(crate) struct CleanRings {
+    pub rings: Vec<Ring>,
+    pub same_way_edges: bool,
+}
+
 /// The sweep's rings as conventional output rings. Only rings that share a point with another
 /// ring (or with themselves) or have a vertex inside a horizontal edge are rebuilt; the others
 /// are already simple and lose only collinear vertices. `touches` is a reused work buffer.
-pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> Vec<Ring> {
+pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> CleanRings {
     touches.find(raw);
     let touches = &*touches;
     let mut out = Vec::with_capacity(raw.len());
@@ -32,15 +41,13 @@ pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> Vec<R
             }
         }
     }
-    if touches.touched.contains(&true) {
-        rebuild(raw, touches, &mut out);
-    }
-    out
+    let same_way_edges = touches.touched.contains(&true) && rebuild(raw, touches, &mut out);
+    CleanRings { rings: out, same_way_edges }
 }
 
 /// Rebuilds the touched rings (horizontal edges split at the vertices inside them) into simple
-/// rings, pushed onto `out`.
-fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
+/// rings, pushed onto `out`. True when two of their edges run the same way between two points.
+fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let mut visits: Vec<u32> = Vec::new();
@@ -85,6 +92,11 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
         fill[a as usize] += 1;
     }
     drop(fill);
+    let same_way_edges = edges.iter().enumerate().any(|(i, &(a, b))| {
+        outgoing[row[a as usize] as usize..row[a as usize + 1] as usize]
+            .iter()
+            .any(|&j| j as usize > i && edges[j as usize].1 == b)
+    });
     // Opposite edges cancel in pairs (they bound nothing): each edge from the lower id, in edge
     // order, with the first edge back not yet cancelled. Cancelled edges count as used.
     let mut used = vec![false; edges.len()];
@@ -127,6 +139,7 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
             }
         });
     }
+    same_way_edges
 }
 
 /// Of the edges leaving `v`, the first met turning clockwise from the direction back to `u`.
@@ -206,7 +219,7 @@ mod tests {
     use super::*;
 
     fn conventional_rings(rings: Vec<Vec<Point>>) -> Vec<Ring> {
-        super::conventional_rings(&RawRings::from_rings(rings), &mut Touches::default())
+        super::conventional_rings(&RawRings::from_rings(rings), &mut Touches::default()).rings
     }
 
     fn ring(points: &[(f64, f64)]) -> Vec<Point> {

@@ -91,6 +91,7 @@ mod horizontal;
 mod intersections;
 mod output;
 mod raw_rings;
+mod repair;
 mod scanbeam;
 mod scratch;
 mod simplify;
@@ -150,9 +151,15 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        Vatti::sweep(subject, clip, op, fill, false, |rings, touches, _| {
-            Polygons::new(cleanup::conventional_rings(rings, touches))
-        })
+        let clean = |subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule| {
+            Vatti::sweep(subject, clip, op, fill, false, |rings, touches, _| {
+                cleanup::conventional_rings(rings, touches)
+            })
+        };
+        let rings = clean(subject, clip, op, fill)?;
+        Ok(Polygons::new(repair::join_overlapping(rings, |out| {
+            clean(out, &Polygons::default(), BoolOp::Union, FillRule::Positive)
+        })))
     }
 
     fn clip_trapezoids(
