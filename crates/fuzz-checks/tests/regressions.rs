@@ -130,6 +130,31 @@ fn vatti_shallow_crossing_at_1e15() {
     regression("vatti", "shallow-crossing-at-1e15");
 }
 
+/// Two triangles at 1e15 (an ulp is 0.125) whose union has a sliver an ulp wide between two of
+/// its parts: the sliver's crossings rounded onto one line, and the clean-up left two rings running
+/// the same way along it (their insides overlapping). Such rings are now joined by sweeping the
+/// output's own union under the positive rule (`clip_vatti`'s `repair`).
+#[test]
+fn vatti_triangles_joined_along_a_rounded_edge_at_1e15() {
+    regression("vatti", "triangles-joined-along-a-rounded-edge-at-1e15");
+}
+
+/// Near (0.1, 0.7), where an ulp is 1.4e-17: a triangle a few ulps wide inside a large one left
+/// the union with a clockwise ring of rounded crossings running the same way as the outer ring
+/// along one of its edges. Joined by the same repair.
+#[test]
+fn vatti_hole_an_ulp_wide_along_an_outer_edge() {
+    regression("vatti", "hole-an-ulp-wide-along-an-outer-edge");
+}
+
+/// At 1e15 two rings of the union ran the same way along parts of one horizontal edge: the
+/// clean-up splits horizontal edges at the vertices inside them, so the parts became one directed
+/// edge twice, which it now reports and the repair joins.
+#[test]
+fn vatti_horizontal_edge_run_twice_at_1e15() {
+    regression("vatti", "horizontal-edge-run-twice-at-1e15");
+}
+
 /// Known issues, not fixed: vatti's output breaks the conventions (a ring running the wrong way,
 /// a ring overlapping itself, two rings crossing at a shared point) where features are a few ulps
 /// wide far from the origin (1e9, 1e15, 1e140) or where edges run to points 1e50 and more times

@@ -92,11 +92,7 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
         fill[a as usize] += 1;
     }
     drop(fill);
-    let same_way_edges = edges.iter().enumerate().any(|(i, &(a, b))| {
-        outgoing[row[a as usize] as usize..row[a as usize + 1] as usize]
-            .iter()
-            .any(|&j| j as usize > i && edges[j as usize].1 == b)
-    });
+    let same_way_edges = has_same_way_edges(&row, &outgoing, &edges);
     // Opposite edges cancel in pairs (they bound nothing): each edge from the lower id, in edge
     // order, with the first edge back not yet cancelled. Cancelled edges count as used.
     let mut used = vec![false; edges.len()];
@@ -140,6 +136,21 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
         });
     }
     same_way_edges
+}
+
+/// True when two edges run from one point to the same other point. `outgoing[row[v]..row[v + 1]]`
+/// are the edges leaving point `v`; most points have one. Kept out of line: it is cheap and
+/// `rebuild`'s walk is the hot part.
+#[inline(never)]
+fn has_same_way_edges(row: &[u32], outgoing: &[u32], edges: &[(u32, u32)]) -> bool {
+    row.windows(2).any(|r| {
+        let leaving = &outgoing[r[0] as usize..r[1] as usize];
+        leaving.len() > 1
+            && leaving
+                .iter()
+                .enumerate()
+                .any(|(k, &i)| leaving[k + 1..].iter().any(|&j| edges[j as usize].1 == edges[i as usize].1))
+    })
 }
 
 /// Of the edges leaving `v`, the first met turning clockwise from the direction back to `u`.
@@ -259,6 +270,20 @@ mod tests {
         assert_eq!(out.len(), 1);
         assert_eq!(out[0].len(), 8, "{:?}", out[0]);
         assert_eq!(out[0].signed_area(), 4.0);
+    }
+
+    #[test]
+    fn rings_running_the_same_way_along_an_edge_are_reported() {
+        // Both triangles lie left of (0,0) -> (2,0): their insides overlap there.
+        let big = ring(&[(0.0, 0.0), (2.0, 0.0), (1.0, 2.0)]);
+        let small = ring(&[(0.0, 0.0), (2.0, 0.0), (1.0, 1.0)]);
+        let clean = super::conventional_rings(&RawRings::from_rings(vec![big, small]), &mut Touches::default());
+        assert!(clean.same_way_edges);
+        // Run opposite ways, the shared edge bounds nothing and the rings merge.
+        let left = ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+        let right = ring(&[(1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0)]);
+        let clean = super::conventional_rings(&RawRings::from_rings(vec![left, right]), &mut Touches::default());
+        assert!(!clean.same_way_edges);
     }
 
     #[test]
