@@ -155,6 +155,23 @@ fn vatti_horizontal_edge_run_twice_at_1e15() {
     regression("vatti", "horizontal-edge-run-twice-at-1e15");
 }
 
+/// A triangle near the origin and a sliver running to (-6.2e66, -6.2e66) from nearly parallel
+/// edges: at the sliver's scale (an ulp is 1e51) the union lost its outer ring and kept the
+/// triangle, a clockwise hole of it, with no ring around it. The clean-up now checks that each
+/// clockwise ring it rebuilds is held by another ring; one that is not is joined by the repair's
+/// sweep (the output's union under non-zero, which turns it counter-clockwise).
+#[test]
+fn vatti_hole_left_by_an_outer_lost_at_6e66() {
+    regression("vatti", "hole-left-by-an-outer-lost-at-6e66");
+}
+
+/// At 1e15 (an ulp is 0.125) a triangle of the union made of input vertices came out clockwise
+/// beside the ring it touches: an outer turned inside out by rounded crossings. Fixed as above.
+#[test]
+fn vatti_outer_turned_clockwise_at_1e15() {
+    regression("vatti", "outer-turned-clockwise-at-1e15");
+}
+
 /// Known issues, not fixed: vatti's output breaks the conventions (a ring running the wrong way,
 /// a ring overlapping itself, two rings crossing at a shared point) where features are a few ulps
 /// wide far from the origin (1e9, 1e15, 1e140) or where edges run to points 1e50 and more times

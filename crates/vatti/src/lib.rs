@@ -158,7 +158,7 @@ impl PolygonClipper for Vatti {
         };
         let rings = clean(subject, clip, op, fill)?;
         Ok(Polygons::new(repair::join_overlapping(rings, |out| {
-            clean(out, &Polygons::default(), BoolOp::Union, FillRule::Positive)
+            clean(out, &Polygons::default(), BoolOp::Union, FillRule::NonZero)
         })))
     }
 

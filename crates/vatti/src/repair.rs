@@ -22,7 +22,7 @@ pub(crate) fn join_overlapping(
     union_positive: impl Fn(&Polygons) -> Result<CleanRings, ClipError>,
 ) -> Vec<Ring> {
     for _ in 0..MAX_PASSES {
-        if !clean.same_way_edges {
+        if !clean.broken_form {
             break;
         }
         let out = Polygons::new(std::mem::take(&mut clean.rings));
