@@ -51,11 +51,16 @@
 //!   rounding to its integer grid, drops them: ring counts differ from Clipper2's on many of its
 //!   `Polygons.txt` cases (the cross-library test in `clip-peers` runs Clipper2 on each,
 //!   normalises its output to these conventions and checks the counts agree).
-//!   Known limit (found by fuzzing, not fixed): with features a few ulps wide far from the
-//!   origin, or nearly parallel edges running to points 1e50 and more times farther away,
-//!   rounded crossings can break these conventions (a ring the wrong way round, a ring
-//!   overlapping itself), while the region stays within the oracle's tolerance; the repository
-//!   keeps such inputs in `fuzz/known-issues/vatti/`.
+//! - Repair (`repair`): with features a few ulps wide far from the origin, or nearly parallel
+//!   edges running to points 1e50 and more times farther away, rounded crossings can leave two
+//!   rings running the same way along an edge (their insides overlapping), or a clockwise ring
+//!   that no ring holds. The clean-up reports both among the rings it rebuilds, and the output is
+//!   then swept once more, alone, as its union under non-zero (at most `repair::MAX_PASSES`
+//!   times); this costs nothing where it does not happen.
+//!   Known limit (found by fuzzing, not fixed): where such rings share no point the clean-up
+//!   does not see them, and a ring can still lie inside another running the same way, or cross
+//!   it by less than a rounding distance, while the region stays within the oracle's tolerance;
+//!   the repository keeps the three such inputs found in `fuzz/known-issues/`.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
