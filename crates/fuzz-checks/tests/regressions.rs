@@ -172,47 +172,30 @@ fn vatti_outer_turned_clockwise_at_1e15() {
     regression("vatti", "outer-turned-clockwise-at-1e15");
 }
 
-/// Known issues, not fixed (2 of the 51 inputs kept here before issue 15's clean-up repair; the
-/// other 49 moved to `fuzz/crashes/vatti/`): where features are a few ulps wide far from the
-/// origin or edges run nearly parallel to points far away, the sweep's order of the active edges
-/// follows rounded x, not the exact one, and two rings that share no point come out one inside
-/// the other running the same way (at 1e15 a difference's hole of three input vertices came out
-/// counter-clockwise; at 5e25 a union's rings crossed by less than the snap distance). The
-/// clean-up only sees rings that touch, so it cannot tell; fixing these needs snap-rounded
-/// crossings in the sweep. Their regions are right (`vatti_known_issues_keep_their_regions`).
+/// A 5-vertex ring with a vertex at 5e25 (an ulp is 8.6e9) and a triangle near the origin: the
+/// union's two rings near the origin share no point, yet one crossed into the other, which the
+/// oracle saw as a counter-clockwise hole. The clean-up cannot see rings that share no point, so
+/// small outputs with an edge within 4096 ulps of the inputs' largest coordinate now get a full
+/// exact check of their form (`clip_vatti`'s `form_check`), and the repair joins what it finds.
 #[test]
-#[ignore = "vatti: output form at ulp-scale features and nearly parallel edges (issue 15, known issues)"]
-fn vatti_known_issues_at_ulp_scale() {
-    assert_known_issues_pass("vatti");
+fn vatti_rings_crossing_near_a_sliver_to_5e25() {
+    regression("vatti", "rings-crossing-near-a-sliver-to-5e25");
 }
 
-/// `fuzz/known-issues/vatti-same-way/`: 1 of the 231 inputs on which vatti's output had two rings
-/// running the same way along a shared edge (the other 230 moved back to `fuzz/corpus/vatti/`,
-/// joined by the clean-up repair). Left: at 1e9, with an edge running to 6e66, two rings that
-/// share no point overlap along part of an edge that is not horizontal (each has a rounded vertex
-/// inside the other's edge, exactly on it); the clean-up splits only horizontal edges at the
-/// vertices inside them, so it does not see them. The region is right.
+/// At 1e15 the clip's triangle of three input vertices, 0.4 by 0.3 (a few ulps), was swept in
+/// the wrong order among rounded x, and the difference's hole came out counter-clockwise, apart
+/// from every other ring. Found by the full check above, joined by the repair.
 #[test]
-#[ignore = "vatti: rings running the same way along a shared edge on fuzz inputs (issue 15, known issues)"]
-fn vatti_known_issues_same_way_edges() {
-    assert_known_issues_pass("vatti-same-way");
+fn vatti_hole_of_input_vertices_counter_clockwise_at_1e15() {
+    regression("vatti", "hole-of-input-vertices-counter-clockwise-at-1e15");
 }
 
-/// Every input in `fuzz/known-issues/<folder>/` passes the vatti target's checks.
-fn assert_known_issues_pass(folder: &str) {
-    let dir = fuzz_dir().join("known-issues").join(folder);
-    let mut failing = Vec::new();
-    for entry in fs::read_dir(&dir).expect("the known issues' folder") {
-        let path = entry.expect("readable folder").path();
-        if path.extension().is_some_and(|e| e == "svg") {
-            continue;
-        }
-        let data = fs::read(&path).expect("readable input");
-        if let Err(why) = clip_fuzz_checks::vatti::check_bytes(&data) {
-            failing.push(format!("{}: {why}", path.display()));
-        }
-    }
-    assert!(failing.is_empty(), "{}", failing.join("\n"));
+/// At 1e9 with an edge running to 6.2e66: two rounded crossings fell exactly on each other's
+/// edges, and the union's rings, sharing no point, ran the same way along part of an edge that is
+/// not horizontal. Found by the full check above, joined by the repair.
+#[test]
+fn vatti_rings_sharing_no_point_overlap_along_an_edge_at_1e9() {
+    regression("vatti", "rings-sharing-no-point-overlap-along-an-edge-at-1e9");
 }
 
 /// At 1e15 (an ulp is 0.125) a triangle touching a clip ring at a vertex that ring visits twice,
@@ -290,29 +273,4 @@ fn line_clippers_plain_determinant_1e_8_off() {
 #[test]
 fn vatti_ulp_long_self_overlap() {
     regression("vatti", "ulp-long-self-overlap");
-}
-
-/// The known issues above break the output's form only: every operation's result on each of them
-/// covers the exact region within the oracle's tolerance.
-#[test]
-fn vatti_known_issues_keep_their_regions() {
-    use clip_core::{BoolOp, FillRule, PolygonClipper};
-    use clip_oracle::polygon::{REGION_TOLERANCE, region_area, tolerance};
-    for folder in ["vatti", "vatti-same-way"] {
-        let dir = fuzz_dir().join("known-issues").join(folder);
-        let mut count = 0;
-        for entry in fs::read_dir(&dir).expect("the known issues' folder") {
-            let path = entry.expect("readable folder").path();
-            let case = clip_fuzz_checks::vatti::decode(&fs::read(&path).expect("readable input")).expect("a case");
-            let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
-            for op in BoolOp::ALL {
-                let out = clip_vatti::Vatti.clip(&case.subject, &case.clip, op, case.fill).expect("valid input");
-                let layers = [(&case.subject, case.fill), (&case.clip, case.fill), (&out, FillRule::NonZero)];
-                let xor = region_area(&layers, |inside| op.apply(inside[0], inside[1]) != inside[2]);
-                assert!(xor <= tol, "{} {op}: region off by {xor:e} (tolerance {tol:e})", path.display());
-            }
-            count += 1;
-        }
-        assert!(count > 0, "no known issue found under {}", dir.display());
-    }
 }
