@@ -28,15 +28,24 @@ pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[
 }
 
 /// Whether an output edge is shorter than [`ULPS_NEAR_ROUNDING`] ulps of the inputs' largest
-/// coordinate.
+/// coordinate. Plain loops: this runs on every small clip.
 fn near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
-    let largest = subject.points().chain(clip.points()).fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-    let limit = ULPS_NEAR_ROUNDING * largest * f64::EPSILON;
-    let limit2 = limit * limit;
-    rings.iter().flat_map(Ring::edges).any(|e| {
-        let d = e.b - e.a;
-        d.dot(d) <= limit2
-    })
+    let mut shortest2 = f64::INFINITY;
+    for ring in rings {
+        let p = &ring.points;
+        let mut a = p[p.len() - 1];
+        for &b in p {
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            shortest2 = shortest2.min(dx * dx + dy * dy);
+            a = b;
+        }
+    }
+    // The largest coordinate that leaves the shortest edge above the limit.
+    let largest_far = shortest2.sqrt() / (ULPS_NEAR_ROUNDING * f64::EPSILON);
+    [subject, clip]
+        .iter()
+        .flat_map(|p| &p.rings)
+        .any(|r| r.points.iter().any(|q| q.x.abs().max(q.y.abs()) >= largest_far))
 }
 
 /// Two edges crossing, a ring overlapping itself, or two rings running the same way along an
