@@ -60,7 +60,9 @@
 //!   coordinate also get a full exact check of their form. A broken output is swept once more,
 //!   alone, as its union under non-zero (the region the oracle reads from it), at most
 //!   `repair::MAX_PASSES` times. Known limit: a larger output broken that way between rings that
-//!   share no point is not found (the fuzzer's outputs are small); the region is right either way.
+//!   share no point is not found, nor are rings running the same way along part of an edge that
+//!   is not horizontal where the full check does not run (three such inputs are kept in
+//!   `fuzz/known-issues/vatti-same-way/`); the region is right either way.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
