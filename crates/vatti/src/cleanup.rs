@@ -11,16 +11,27 @@
 //! counter-clockwise and holes clockwise. Collinear vertices are dropped last.
 
 use clip_core::predicates::{Orientation, orient};
-use clip_core::{Point, Ring};
+use clip_core::{Point, Ring, ring_winding};
 
 use crate::raw_rings::RawRings;
 use crate::simplify::simplify_ring;
 use crate::touches::Touches;
 
+/// The clean-up's rings, and whether rounding left their form broken (`repair` then joins
+/// them): two rings (or two passes of one) running the same way along an edge, where rounded
+/// crossings put both sides of a sliver an ulp wide onto one line and their insides overlap; or a
+/// rebuilt clockwise ring that no other ring holds, a hole whose outer rounding lost or an outer
+/// turned inside out.
+#[derive(Debug, Default)]
+pub(crate) struct CleanRings {
+    pub rings: Vec<Ring>,
+    pub broken_form: bool,
+}
+
 /// The sweep's rings as conventional output rings. Only rings that share a point with another
 /// ring (or with themselves) or have a vertex inside a horizontal edge are rebuilt; the others
 /// are already simple and lose only collinear vertices. `touches` is a reused work buffer.
-pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> Vec<Ring> {
+pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> CleanRings {
     touches.find(raw);
     let touches = &*touches;
     let mut out = Vec::with_capacity(raw.len());
@@ -32,15 +43,14 @@ pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> Vec<R
             }
         }
     }
-    if touches.touched.contains(&true) {
-        rebuild(raw, touches, &mut out);
-    }
-    out
+    let broken_form = touches.touched.contains(&true) && rebuild(raw, touches, &mut out);
+    CleanRings { rings: out, broken_form }
 }
 
 /// Rebuilds the touched rings (horizontal edges split at the vertices inside them) into simple
-/// rings, pushed onto `out`.
-fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
+/// rings, pushed onto `out` (after the untouched ones). True when two of their edges run the
+/// same way between two points, or a clockwise one is held by no other ring of `out`.
+fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let mut visits: Vec<u32> = Vec::new();
@@ -85,6 +95,7 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
         fill[a as usize] += 1;
     }
     drop(fill);
+    let same_way_edges = has_same_way_edges(&row, &outgoing, &edges);
     // Opposite edges cancel in pairs (they bound nothing): each edge from the lower id, in edge
     // order, with the first edge back not yet cancelled. Cancelled edges count as used.
     let mut used = vec![false; edges.len()];
@@ -101,6 +112,7 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
     }
     let mut slot = vec![usize::MAX; pts.len()];
     let mut walk: Vec<u32> = Vec::new();
+    let mut clockwise: Vec<usize> = Vec::new();
     for start in 0..edges.len() {
         if used[start] {
             continue;
@@ -123,10 +135,50 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) {
             let points: Vec<Point> = ring.iter().map(|&i| pts[i as usize]).collect();
             let s = simplify_ring(&points);
             if s.len() >= 3 {
-                out.push(Ring::new(s));
+                let ring = Ring::new(s);
+                if ring.signed_area() <= 0.0 {
+                    clockwise.push(out.len());
+                }
+                out.push(ring);
             }
         });
     }
+    same_way_edges || clockwise.iter().any(|&h| !held(out, h))
+}
+
+/// True when a vertex of `rings[hole]` off every other ring has a winding number of 1 or more
+/// in them: the hole lies inside an outer. False when every vertex lies on another ring (the
+/// repair's sweep then decides). Exact; only the clean-up's rare clockwise rings come here.
+fn held(rings: &[Ring], hole: usize) -> bool {
+    'vertex: for &p in &rings[hole].points {
+        let mut winding = 0;
+        for (k, r) in rings.iter().enumerate() {
+            if k == hole || !r.bounds().contains(p) {
+                continue;
+            }
+            match ring_winding(p, r) {
+                Some(w) => winding += w,
+                None => continue 'vertex,
+            }
+        }
+        return winding > 0;
+    }
+    false
+}
+
+/// True when two edges run from one point to the same other point. `outgoing[row[v]..row[v + 1]]`
+/// are the edges leaving point `v`; most points have one. Kept out of line: it is cheap and
+/// `rebuild`'s walk is the hot part.
+#[inline(never)]
+fn has_same_way_edges(row: &[u32], outgoing: &[u32], edges: &[(u32, u32)]) -> bool {
+    row.windows(2).any(|r| {
+        let leaving = &outgoing[r[0] as usize..r[1] as usize];
+        leaving.len() > 1
+            && leaving
+                .iter()
+                .enumerate()
+                .any(|(k, &i)| leaving[k + 1..].iter().any(|&j| edges[j as usize].1 == edges[i as usize].1))
+    })
 }
 
 /// Of the edges leaving `v`, the first met turning clockwise from the direction back to `u`.
@@ -206,7 +258,7 @@ mod tests {
     use super::*;
 
     fn conventional_rings(rings: Vec<Vec<Point>>) -> Vec<Ring> {
-        super::conventional_rings(&RawRings::from_rings(rings), &mut Touches::default())
+        super::conventional_rings(&RawRings::from_rings(rings), &mut Touches::default()).rings
     }
 
     fn ring(points: &[(f64, f64)]) -> Vec<Point> {
@@ -246,6 +298,35 @@ mod tests {
         assert_eq!(out.len(), 1);
         assert_eq!(out[0].len(), 8, "{:?}", out[0]);
         assert_eq!(out[0].signed_area(), 4.0);
+    }
+
+    #[test]
+    fn rings_running_the_same_way_along_an_edge_are_reported() {
+        // Both triangles lie left of (0,0) -> (2,0): their insides overlap there.
+        let big = ring(&[(0.0, 0.0), (2.0, 0.0), (1.0, 2.0)]);
+        let small = ring(&[(0.0, 0.0), (2.0, 0.0), (1.0, 1.0)]);
+        let clean = super::conventional_rings(&RawRings::from_rings(vec![big, small]), &mut Touches::default());
+        assert!(clean.broken_form);
+        // Run opposite ways, the shared edge bounds nothing and the rings merge.
+        let left = ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+        let right = ring(&[(1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0)]);
+        let clean = super::conventional_rings(&RawRings::from_rings(vec![left, right]), &mut Touches::default());
+        assert!(!clean.broken_form);
+    }
+
+    #[test]
+    fn clockwise_rings_held_by_no_ring_are_reported() {
+        // A clockwise triangle touching a square at its corner, outside it: an outer turned
+        // inside out.
+        let square = ring(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)]);
+        let outside = ring(&[(2.0, 2.0), (3.0, 4.0), (4.0, 3.0)]);
+        let clean =
+            super::conventional_rings(&RawRings::from_rings(vec![square.clone(), outside]), &mut Touches::default());
+        assert!(clean.broken_form);
+        // The same triangle inside the square, touching it at that corner: a hole.
+        let inside = ring(&[(2.0, 2.0), (1.0, 0.5), (0.5, 1.0)]);
+        let clean = super::conventional_rings(&RawRings::from_rings(vec![square, inside]), &mut Touches::default());
+        assert!(!clean.broken_form);
     }
 
     #[test]

@@ -51,11 +51,18 @@
 //!   rounding to its integer grid, drops them: ring counts differ from Clipper2's on many of its
 //!   `Polygons.txt` cases (the cross-library test in `clip-peers` runs Clipper2 on each,
 //!   normalises its output to these conventions and checks the counts agree).
-//!   Known limit (found by fuzzing, not fixed): with features a few ulps wide far from the
-//!   origin, or nearly parallel edges running to points 1e50 and more times farther away,
-//!   rounded crossings can break these conventions (a ring the wrong way round, a ring
-//!   overlapping itself), while the region stays within the oracle's tolerance; the repository
-//!   keeps such inputs in `fuzz/known-issues/vatti/`.
+//! - Repair (`repair`, `form_check`): with features a few ulps wide far from the origin, or
+//!   nearly parallel edges running to points 1e50 and more times farther away, rounded crossings
+//!   can leave two rings running the same way along an edge (their insides overlapping), a
+//!   clockwise ring that no ring holds, or rings crossing or nested against their orientation.
+//!   The clean-up reports the first two among the rings it rebuilds; outputs of at most
+//!   `form_check::MAX_EDGES` edges with an edge within 4096 ulps of the inputs' largest
+//!   coordinate also get a full exact check of their form. A broken output is swept once more,
+//!   alone, as its union under non-zero (the region the oracle reads from it), at most
+//!   `repair::MAX_PASSES` times. Known limit: a larger output broken that way between rings that
+//!   share no point is not found, nor are rings running the same way along part of an edge that
+//!   is not horizontal where the full check does not run (three such inputs are kept in
+//!   `fuzz/known-issues/vatti-same-way/`); the region is right either way.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
@@ -87,10 +94,12 @@ mod active;
 mod bounds;
 mod cleanup;
 mod contribution;
+mod form_check;
 mod horizontal;
 mod intersections;
 mod output;
 mod raw_rings;
+mod repair;
 mod scanbeam;
 mod scratch;
 mod simplify;
@@ -150,9 +159,16 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        Vatti::sweep(subject, clip, op, fill, false, |rings, touches, _| {
-            Polygons::new(cleanup::conventional_rings(rings, touches))
-        })
+        let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule| {
+            Vatti::sweep(a, b, op, fill, false, |rings, touches, _| cleanup::conventional_rings(rings, touches))
+        };
+        let mut rings = clean(subject, clip, op, fill)?;
+        // The full check only judges the sweep's own output: the repair's sweeps are judged by the
+        // clean-up alone, so a check stricter than the conventions cannot make it loop.
+        rings.broken_form = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
+        Ok(Polygons::new(repair::join_overlapping(rings, |out| {
+            clean(out, &Polygons::default(), BoolOp::Union, FillRule::NonZero)
+        })))
     }
 
     fn clip_trapezoids(

@@ -71,3 +71,43 @@ fn input_vertices_far_from_the_origin_are_exact() {
         assert!(verdict.is_ok(), "{op}: {}\noutput: {:?}", verdict.unwrap_err(), out.rings);
     }
 }
+
+/// Two triangles at 1e15 (an ulp is 0.125) whose union pinches to a sliver an ulp wide: its
+/// crossings rounded onto one line and the union had two rings running the same way along it,
+/// insides overlapping. They are joined now, so no directed edge appears twice.
+#[test]
+fn rings_overlapping_after_rounding_are_joined() {
+    let clip = Polygons::new(vec![
+        Ring::new(
+            [
+                (-999999999999999.9, 1000000000000000.1),
+                (-999999999999999.8, 1000000000000000.6),
+                (-999999999999999.8, 1000000000000000.5),
+            ]
+            .iter()
+            .map(|&(x, y)| Point::new(x, y))
+            .collect(),
+        ),
+        Ring::new(
+            [
+                (-999999999999998.4, 1e15),
+                (-1000000000000001.5, 1000000000000001.3),
+                (-1000000000000000.4, 1000000000000000.4),
+            ]
+            .iter()
+            .map(|&(x, y)| Point::new(x, y))
+            .collect(),
+        ),
+    ]);
+    for op in BoolOp::ALL {
+        let out = Vatti.clip(&Polygons::default(), &clip, op, FillRule::EvenOdd).expect("valid input");
+        let rules = OutputRules::conventional(REGION_TOLERANCE);
+        let verdict = check_polygon_result(&Polygons::default(), &clip, op, FillRule::EvenOdd, &out, &rules);
+        assert!(verdict.is_ok(), "{op}: {}\noutput: {:?}", verdict.unwrap_err(), out.rings);
+        let mut edges: Vec<_> = out.rings.iter().flat_map(Ring::edges).map(|e| (e.a, e.b)).collect();
+        let count = edges.len();
+        edges.sort_by(|p, q| (p.0.x, p.0.y, p.1.x, p.1.y).partial_cmp(&(q.0.x, q.0.y, q.1.x, q.1.y)).unwrap());
+        edges.dedup();
+        assert_eq!(edges.len(), count, "{op}: an edge runs twice the same way: {:?}", out.rings);
+    }
+}

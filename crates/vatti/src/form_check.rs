@@ -1,0 +1,124 @@
+//! An exact check of a small output's form, run only where rounding may have broken it.
+//!
+//! The clean-up sees only rings that share a point. Where an output edge is within a few
+//! thousand ulps of the inputs' largest coordinate, rounded crossings can also leave rings that
+//! share no point overlapping along an edge, crossing, or one inside another running the same
+//! way (found by the `vatti` fuzz target at 1e15 and with edges running to 5e25 and 6e66). For
+//! outputs of at most [`MAX_EDGES`] edges this check looks for exactly those, pair by pair, so
+//! that `repair` can join them; larger outputs are not checked (a known limit).
+
+use clip_core::{Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection};
+
+/// The most output edges checked: the pair test is quadratic in the worst case.
+pub(crate) const MAX_EDGES: usize = 1024;
+
+/// Output edges shorter than this many ulps of the inputs' largest coordinate make the output
+/// worth checking: features that small are where rounded crossings misplace edges.
+const ULPS_NEAR_ROUNDING: f64 = 4096.0;
+
+/// True when `rings` (at most [`MAX_EDGES`] edges, with an edge within
+/// [`ULPS_NEAR_ROUNDING`] ulps of the largest coordinate of `subject` and `clip`) cross,
+/// overlap, or nest against their orientation. False for outputs not checked.
+pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
+    let edge_count: usize = rings.iter().map(Ring::len).sum();
+    if edge_count > MAX_EDGES || rings.is_empty() || !near_rounding(subject, clip, rings) {
+        return false;
+    }
+    crossing_or_overlapping(rings) || nested_against_orientation(rings)
+}
+
+/// Whether an output edge is shorter than [`ULPS_NEAR_ROUNDING`] ulps of the inputs' largest
+/// coordinate. Plain loops: this runs on every small clip.
+fn near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
+    let mut shortest2 = f64::INFINITY;
+    for ring in rings {
+        let p = &ring.points;
+        let mut a = p[p.len() - 1];
+        for &b in p {
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            shortest2 = shortest2.min(dx * dx + dy * dy);
+            a = b;
+        }
+    }
+    // The largest coordinate that leaves the shortest edge above the limit.
+    let largest_far = shortest2.sqrt() / (ULPS_NEAR_ROUNDING * f64::EPSILON);
+    [subject, clip]
+        .iter()
+        .flat_map(|p| &p.rings)
+        .any(|r| r.points.iter().any(|q| q.x.abs().max(q.y.abs()) >= largest_far))
+}
+
+/// Two edges crossing, a ring overlapping itself, or two rings running the same way along an
+/// edge. Rings may touch at points and share edges run in opposite directions.
+fn crossing_or_overlapping(rings: &[Ring]) -> bool {
+    let edges: Vec<(usize, usize, Segment, Rect)> = rings
+        .iter()
+        .enumerate()
+        .flat_map(|(r, ring)| ring.edges().enumerate().map(move |(i, s)| (r, i, s, s.bounds())))
+        .collect();
+    for (k, &(r, i, s, sb)) in edges.iter().enumerate() {
+        for &(q, j, t, tb) in &edges[k + 1..] {
+            let n = rings[r].len();
+            if !sb.intersects(&tb) || (r == q && (j == i + 1 || (i == 0 && j == n - 1))) {
+                continue;
+            }
+            match segment_intersection(s, t) {
+                SegmentIntersection::Crossing(_) => return true,
+                SegmentIntersection::Overlap(_) if r == q || (t.b - t.a).dot(s.b - s.a) > 0.0 => return true,
+                _ => {}
+            }
+        }
+    }
+    false
+}
+
+/// A ring whose orientation disagrees with the number of other rings around it (outers, at
+/// even depth, counter-clockwise; holes clockwise). Each ring is placed by its first vertex off
+/// every other ring; a ring with none such is counted as broken.
+fn nested_against_orientation(rings: &[Ring]) -> bool {
+    rings.iter().enumerate().any(|(r, ring)| {
+        let depth = ring.points.iter().find_map(|&p| {
+            rings.iter().enumerate().filter(|&(k, _)| k != r).try_fold(0usize, |d, (_, other)| {
+                if !other.bounds().contains(p) {
+                    return Some(d);
+                }
+                ring_winding(p, other).map(|w| d + usize::from(w != 0))
+            })
+        });
+        depth.is_none_or(|d| (d % 2 == 0) != (ring.signed_area() > 0.0))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clip_core::Point;
+
+    /// A square of side `side` at (`x`, `y`), counter-clockwise or clockwise.
+    fn square(x: f64, y: f64, side: f64, ccw: bool) -> Ring {
+        let mut p =
+            vec![Point::new(x, y), Point::new(x + side, y), Point::new(x + side, y + side), Point::new(x, y + side)];
+        if !ccw {
+            p.reverse();
+        }
+        Ring::new(p)
+    }
+
+    #[test]
+    fn rings_nested_or_crossing_near_rounding_are_broken() {
+        let far = Polygons::from(square(1e15, 1e15, 64.0, true));
+        let inside_same_way = [square(1e15, 1e15, 64.0, true), square(1e15 + 8.0, 1e15 + 8.0, 8.0, true)];
+        assert!(small_output_broken(&far, &Polygons::default(), &inside_same_way));
+        let crossing = [square(1e15, 1e15, 16.0, true), square(1e15 + 8.0, 1e15 + 8.0, 16.0, true)];
+        assert!(small_output_broken(&far, &Polygons::default(), &crossing));
+        let hole = [square(1e15, 1e15, 64.0, true), square(1e15 + 8.0, 1e15 + 8.0, 8.0, false)];
+        assert!(!small_output_broken(&far, &Polygons::default(), &hole));
+    }
+
+    #[test]
+    fn outputs_far_above_rounding_are_not_checked() {
+        let near = Polygons::from(square(0.0, 0.0, 64.0, true));
+        let inside_same_way = [square(0.0, 0.0, 64.0, true), square(8.0, 8.0, 8.0, true)];
+        assert!(!small_output_broken(&near, &Polygons::default(), &inside_same_way));
+    }
+}
