@@ -11,17 +11,24 @@ a fault off.
 Usage: broken_clipper.py STATE_FILE CRASH HANG GARBAGE WRONG_ID
 """
 
+import fcntl
 import json
-import os
 import sys
 import time
 
 
 def next_request_number(state):
-    n = int(open(state).read()) + 1 if os.path.exists(state) else 1
-    with open(state, "w") as f:
+    # Workers share the counter: hold a lock across read and write, or two of them can read
+    # the file while the other has just truncated it.
+    with open(state, "a+") as f:
+        fcntl.flock(f, fcntl.LOCK_EX)
+        f.seek(0)
+        text = f.read()
+        n = int(text) + 1 if text else 1
+        f.seek(0)
+        f.truncate()
         f.write(str(n))
-    return n
+        return n
 
 
 def clip_ring(ring, xmin, ymin, xmax, ymax):
