@@ -87,9 +87,13 @@ mod active;
 mod bounds;
 mod cleanup;
 mod contribution;
+mod edge_blocks;
+mod envelope;
 mod horizontal;
 mod intersections;
 mod output;
+mod prepared;
+mod prepared_reuse;
 mod raw_rings;
 mod scanbeam;
 mod scratch;
@@ -98,9 +102,14 @@ mod sweep;
 mod touches;
 mod trapezoids;
 
+use std::borrow::Cow;
+
 use clip_core::{
     BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, validate_polygons,
 };
+
+pub use crate::prepared::PreparedClip;
+pub use crate::prepared_reuse::VattiPrepared;
 
 use crate::contribution::Rules;
 use crate::raw_rings::RawRings;
@@ -114,8 +123,46 @@ use crate::touches::Touches;
 pub struct Vatti;
 
 impl Vatti {
-    /// Runs the sweep in this thread's reused buffers and hands its raw rings and trapezoids
-    /// to `finish`.
+    /// `subject op clip` by the plain sweep, without the envelope pre-filter that
+    /// [`PolygonClipper::clip`] applies: every input edge enters the tables. The same region;
+    /// for comparing the two paths.
+    pub fn clip_unfiltered(
+        &self,
+        subject: &Polygons,
+        clip: &Polygons,
+        op: BoolOp,
+        fill: FillRule,
+    ) -> Result<Polygons, ClipError> {
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        Ok(Vatti::sweep_polygons(subject, clip, op, fill))
+    }
+
+    /// Validates both operands and cuts away what cannot reach the result (`envelope`).
+    fn filtered<'a>(
+        subject: &'a Polygons,
+        clip: &'a Polygons,
+        op: BoolOp,
+    ) -> Result<(Cow<'a, Polygons>, Cow<'a, Polygons>), ClipError> {
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        Ok(envelope::prefilter(subject, clip, clip.bounds(), None, op))
+    }
+
+    /// The sweep's conventional rings of valid operands.
+    fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Polygons {
+        Vatti::sweep(subject, clip, op, fill, false, |rings, touches, _| {
+            Polygons::new(cleanup::conventional_rings(rings, touches))
+        })
+    }
+
+    /// The sweep's trapezoids of valid operands.
+    fn sweep_trapezoids(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Vec<Trapezoid> {
+        Vatti::sweep(subject, clip, op, fill, true, |_, _, traps| traps)
+    }
+
+    /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings
+    /// and trapezoids to `finish`.
     fn sweep<T>(
         subject: &Polygons,
         clip: &Polygons,
@@ -123,9 +170,7 @@ impl Vatti {
         fill: FillRule,
         trapezoids: bool,
         finish: impl FnOnce(&RawRings, &mut Touches, Vec<Trapezoid>) -> T,
-    ) -> Result<T, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
+    ) -> T {
         let mut scratch = Scratch::take();
         scratch.bounds.rebuild(subject, clip);
         let buffers = std::mem::take(&mut scratch.sweep);
@@ -136,7 +181,7 @@ impl Vatti {
         scratch.sweep = sweep.into_buffers();
         let result = finish(&scratch.raw, &mut scratch.touches, traps);
         scratch.give_back();
-        Ok(result)
+        result
     }
 }
 
@@ -150,9 +195,8 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        Vatti::sweep(subject, clip, op, fill, false, |rings, touches, _| {
-            Polygons::new(cleanup::conventional_rings(rings, touches))
-        })
+        let (a, b) = Vatti::filtered(subject, clip, op)?;
+        Ok(Vatti::sweep_polygons(&a, &b, op, fill))
     }
 
     fn clip_trapezoids(
@@ -162,6 +206,7 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        Vatti::sweep(subject, clip, op, fill, true, |_, _, traps| traps)
+        let (a, b) = Vatti::filtered(subject, clip, op)?;
+        Ok(Vatti::sweep_trapezoids(&a, &b, op, fill))
     }
 }
