@@ -95,6 +95,7 @@ mod output;
 mod prepared;
 mod prepared_reuse;
 mod raw_rings;
+mod rect_path;
 mod scanbeam;
 mod scratch;
 mod simplify;
@@ -105,13 +106,15 @@ mod trapezoids;
 use std::borrow::Cow;
 
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, validate_polygons,
+    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Rect, Trapezoid,
+    validate_polygons,
 };
 
 pub use crate::prepared::PreparedClip;
 pub use crate::prepared_reuse::VattiPrepared;
 
 use crate::contribution::Rules;
+use crate::edge_blocks::EdgeBlocks;
 use crate::raw_rings::RawRings;
 use crate::scratch::Scratch;
 use crate::sweep::Sweep;
@@ -123,9 +126,9 @@ use crate::touches::Touches;
 pub struct Vatti;
 
 impl Vatti {
-    /// `subject op clip` by the plain sweep, without the envelope pre-filter that
-    /// [`PolygonClipper::clip`] applies: every input edge enters the tables. The same region;
-    /// for comparing the two paths.
+    /// `subject op clip` by the plain sweep, without the rectangle path and the envelope
+    /// pre-filter that [`PolygonClipper::clip`] takes where they apply: every input edge enters
+    /// the tables. The same region; for comparing the paths.
     pub fn clip_unfiltered(
         &self,
         subject: &Polygons,
@@ -138,15 +141,37 @@ impl Vatti {
         Ok(Vatti::sweep_polygons(subject, clip, op, fill))
     }
 
-    /// Validates both operands and cuts away what cannot reach the result (`envelope`).
+    /// What the sweep is given for valid operands: with one rectangle as the clip of ∩, the
+    /// subject cut to it alone (`rect_path`); otherwise both operands with what cannot reach the
+    /// result cut away (`envelope`). The region of `subject op clip` is that of the returned
+    /// `a op' b`. `clip_blocks` are the clip's edge blocks when it was prepared.
+    fn reduced<'a>(
+        subject: &'a Polygons,
+        clip: &'a Polygons,
+        clip_bounds: Rect,
+        clip_blocks: Option<&[EdgeBlocks]>,
+        op: BoolOp,
+        fill: FillRule,
+    ) -> (Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp) {
+        if let Some((r, inside)) = rect_path::rectangle_clip(clip, op, fill) {
+            // Outside the clip both operands wind zero, so ∩ becomes the cut subject ∪ nothing.
+            let a = if inside { rect_path::cut_to_rectangle(subject, r) } else { Polygons::default() };
+            return (Cow::Owned(a), Cow::Owned(Polygons::default()), BoolOp::Union);
+        }
+        let (a, b) = envelope::prefilter(subject, clip, clip_bounds, clip_blocks, op);
+        (a, b, op)
+    }
+
+    /// Validates both operands and reduces them ([`Vatti::reduced`]).
     fn filtered<'a>(
         subject: &'a Polygons,
         clip: &'a Polygons,
         op: BoolOp,
-    ) -> Result<(Cow<'a, Polygons>, Cow<'a, Polygons>), ClipError> {
+        fill: FillRule,
+    ) -> Result<(Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp), ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        Ok(envelope::prefilter(subject, clip, clip.bounds(), None, op))
+        Ok(Vatti::reduced(subject, clip, clip.bounds(), None, op, fill))
     }
 
     /// The sweep's conventional rings of valid operands.
@@ -195,7 +220,7 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        let (a, b) = Vatti::filtered(subject, clip, op)?;
+        let (a, b, op) = Vatti::filtered(subject, clip, op, fill)?;
         Ok(Vatti::sweep_polygons(&a, &b, op, fill))
     }
 
@@ -206,7 +231,7 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        let (a, b) = Vatti::filtered(subject, clip, op)?;
+        let (a, b, op) = Vatti::filtered(subject, clip, op, fill)?;
         Ok(Vatti::sweep_trapezoids(&a, &b, op, fill))
     }
 }

@@ -5,7 +5,6 @@ use clip_core::{BoolOp, ClipError, FillRule, Operand, Polygons, Rect, Trapezoid,
 
 use crate::Vatti;
 use crate::edge_blocks::EdgeBlocks;
-use crate::envelope;
 
 /// A clip operand and fill rule fixed for many subjects. Each [`PreparedClip::clip`] validates
 /// only the subject and, for ∩ and −, sweeps only the clip edges that can reach the subject's
@@ -56,14 +55,14 @@ impl PreparedClip {
     /// `subject op clip`, as [`Vatti`]'s `clip` gives it.
     pub fn clip(&self, subject: &Polygons, op: BoolOp) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
-        let (a, b) = envelope::prefilter(subject, &self.clip, self.bounds, Some(&self.blocks), op);
+        let (a, b, op) = Vatti::reduced(subject, &self.clip, self.bounds, Some(&self.blocks), op, self.fill);
         Ok(Vatti::sweep_polygons(&a, &b, op, self.fill))
     }
 
     /// `subject op clip` as trapezoids, as [`Vatti`]'s `clip_trapezoids` gives them.
     pub fn clip_trapezoids(&self, subject: &Polygons, op: BoolOp) -> Result<Vec<Trapezoid>, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
-        let (a, b) = envelope::prefilter(subject, &self.clip, self.bounds, Some(&self.blocks), op);
+        let (a, b, op) = Vatti::reduced(subject, &self.clip, self.bounds, Some(&self.blocks), op, self.fill);
         Ok(Vatti::sweep_trapezoids(&a, &b, op, self.fill))
     }
 }

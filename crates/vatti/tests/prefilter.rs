@@ -31,10 +31,15 @@ fn operands() -> impl Strategy<Value = (Polygons, Polygons)> {
         (rings_in(0.0, 0.0, 100.0), (-20.0f64..100.0, -20.0f64..100.0, 1.0f64..40.0))
             .prop_flat_map(|(s, (x, y, k))| (Just(s), rings_in(x, y, k))),
         (grid_rings(), grid_rings()),
-        (rings_in(0.0, 0.0, 100.0), (-10i32..12, -10i32..12, 1i32..12)).prop_map(|(s, (x, y, k))| {
-            let r = Rect::new(f64::from(x) * 8.0, f64::from(y) * 8.0, f64::from(x + k) * 8.0, f64::from(y + k) * 8.0);
-            (s, Polygons::from(r))
-        }),
+        // One rectangle, either way round: the rectangle path.
+        (rings_in(0.0, 0.0, 100.0), (-10i32..12, -10i32..12, 1i32..12), any::<bool>()).prop_map(
+            |(s, (x, y, k), cw)| {
+                let r =
+                    Rect::new(f64::from(x) * 8.0, f64::from(y) * 8.0, f64::from(x + k) * 8.0, f64::from(y + k) * 8.0);
+                let ring = Polygons::from(r).rings.remove(0);
+                (s, Polygons::from(if cw { ring.reversed() } else { ring }))
+            }
+        ),
     ]
 }
 

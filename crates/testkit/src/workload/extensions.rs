@@ -6,7 +6,7 @@ use clip_core::{Point, Polygons, Rect, Ring};
 use rand::Rng;
 use rand_pcg::Pcg64;
 
-use super::shapes::{scribble, star};
+use super::shapes::{lobed, scribble, star};
 use super::stream_rng;
 
 /// The clip polygon's edge count in `many-subjects` when no size is given.
@@ -21,11 +21,12 @@ pub(crate) fn spiky_box(rng: &mut Pcg64, n: usize) -> (Polygons, Polygons) {
     (s.into(), Rect::new(c.x - half, c.y - half, c.x + half, c.y + half).into())
 }
 
-/// The fixed clip of `many-subjects`: a concave star of `edges` edges over [50, 950]², the same
-/// for every index of a seed.
+/// The fixed clip of `many-subjects`: a lobed ring of `edges` edges (seven petals, a detailed
+/// boundary like a map sheet's, crossed by a line a bounded number of times) over [50, 950]²,
+/// the same for every index of a seed.
 pub(crate) fn many_subjects_clip(seed: u64, edges: usize) -> Ring {
     let mut rng = stream_rng("many-subjects clip", seed, edges as u64);
-    star(&mut rng, edges, Point::new(500.0, 500.0), 450.0, 450.0, 0.6)
+    lobed(&mut rng, edges, Point::new(500.0, 500.0), 450.0, 7.0, 0.4)
 }
 
 /// Subject `index` of `many-subjects`: 4-40 edges, 10-60 units across, anywhere over the clip;
