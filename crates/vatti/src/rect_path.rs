@@ -18,6 +18,11 @@ pub(crate) fn rectangle_clip(clip: &Polygons, op: BoolOp, fill: FillRule) -> Opt
         return None;
     }
     let r = ring.as_rect()?;
+    // `as_rect` also takes a spike that visits three corners twice: all four must be there.
+    let corners = [r.min, Point::new(r.max.x, r.min.y), r.max, Point::new(r.min.x, r.max.y)];
+    if !corners.iter().all(|c| ring.points.contains(c)) {
+        return None;
+    }
     let winding = if ring.signed_area() > 0.0 { 1 } else { -1 };
     Some((r, fill.is_inside(winding)))
 }
@@ -117,6 +122,10 @@ mod tests {
         assert!(rectangle_clip(&rect, BoolOp::Union, FillRule::NonZero).is_none());
         let two = Polygons::new(vec![rect.rings[0].clone(), rect.rings[0].clone()]);
         assert!(rectangle_clip(&two, BoolOp::Intersection, FillRule::NonZero).is_none());
+        // Found by the window_clippers fuzz corpus: an L-shaped spike, no area, three corners.
+        let p = |x, y| Point::new(x, y);
+        let spike = Polygons::from(Ring::new(vec![p(0.0, 6.0), p(0.0, 0.0), p(6.0, 0.0), p(0.0, 0.0)]));
+        assert!(rectangle_clip(&spike, BoolOp::Intersection, FillRule::EvenOdd).is_none());
     }
 
     #[test]
