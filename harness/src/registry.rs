@@ -21,7 +21,7 @@ use clip_peers::{
 };
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
-use clip_vatti::Vatti;
+use clip_vatti::{Vatti, VattiPrepared};
 use clip_virtual_box::VirtualBox;
 
 use crate::cli_error::CliError;
@@ -34,6 +34,7 @@ pub const LINE_TOLERANCE: f64 = 1e-9;
 pub fn registry() -> Registry {
     Registry::default()
         .polygon(Origin::Ours, REGION_TOLERANCE, Vatti)
+        .polygon(Origin::Ours, REGION_TOLERANCE, VattiPrepared)
         .polygon(Origin::Ours, REGION_TOLERANCE, SutherlandHodgman::default())
         .polygon(Origin::Ours, REGION_TOLERANCE, SutherlandHodgman::SPLIT)
         .polygon(Origin::Ours, REGION_TOLERANCE, FourState)

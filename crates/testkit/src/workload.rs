@@ -2,6 +2,7 @@
 
 mod curves;
 mod degenerate_lines;
+mod extensions;
 mod hard_cases;
 mod large_lines;
 mod shapes;
@@ -11,6 +12,7 @@ mod wang;
 mod windows;
 
 pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case, filled_object};
+pub use extensions::MANY_SUBJECTS_CLIP_EDGES;
 pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
 pub use large_lines::{
     BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,
@@ -30,7 +32,8 @@ use rand_pcg::Pcg64;
 use shapes::{checkerboard, edge_count, grid_ring, scribble, smooth, star};
 
 /// The polygon workloads, by name.
-pub const POLYGON_WORKLOADS: &[&str] = &["vatti-t3", "star", "star-far", "scribble", "holes", "multi", "grid", "large"];
+pub const POLYGON_WORKLOADS: &[&str] =
+    &["vatti-t3", "star", "star-far", "scribble", "holes", "multi", "grid", "large", "spiky-box", "many-subjects"];
 
 /// How far `star-far` moves `star`'s cases: UTM-like magnitudes, where one ulp of a coordinate
 /// (about 1.2e-7) is no longer small beside the 1e-9 relative area tolerance of a 1000-unit box.
@@ -132,7 +135,10 @@ fn polygon_name(workload: &str) -> Result<&'static str, UnknownWorkload> {
 /// `Rectangle` is asked (see [`vatti_window`]).
 ///
 /// Sizes: `vatti-t3` cycles through [`VATTI_EDGES`] by index; `large` alternates smooth blobs and
-/// checkerboards over [`LARGE_EDGES`]; the others draw 6-200 edges per operand, log-uniformly.
+/// checkerboards over [`LARGE_EDGES`]; `spiky-box` is a spiky star against a box of about 1% of
+/// its area inside it; `many-subjects` is a subject of 4-40 edges over one clip polygon of
+/// [`MANY_SUBJECTS_CLIP_EDGES`] edges that is the same for every index of a seed (a sized case
+/// sizes that clip); the others draw 6-200 edges per operand, log-uniformly.
 pub fn polygon_case(
     workload: &str,
     seed: u64,
@@ -143,6 +149,7 @@ pub fn polygon_case(
     let edges = match name {
         "vatti-t3" => VATTI_EDGES[index % VATTI_EDGES.len()],
         "large" => LARGE_EDGES[(index / 2) % LARGE_EDGES.len()],
+        "many-subjects" => MANY_SUBJECTS_CLIP_EDGES,
         _ => 0,
     };
     make_polygon_case(name, seed, index, (edges > 0).then_some(edges), window)
@@ -187,6 +194,17 @@ fn make_polygon_case(
             let o = offset_center(&mut rng);
             let c = star(&mut rng, m, o + far, 350.0, 350.0, 0.2);
             (s.into(), c.into(), format!("{name} subject {n} edges vs star clip {m} edges"))
+        }
+        "spiky-box" => {
+            let n = size(&mut rng);
+            let (s, c) = extensions::spiky_box(&mut rng, n);
+            (s, c, format!("spiky-box star subject {n} edges vs a box of 1% of its area inside it"))
+        }
+        "many-subjects" => {
+            let m = size(&mut rng);
+            let s = extensions::many_subjects_subject(&mut rng, index);
+            let what = format!("many-subjects subject {} edges over a fixed star clip of {m} edges", s.len());
+            (s.into(), extensions::many_subjects_clip(seed, m).into(), what)
         }
         "scribble" => {
             let (n, m) = (size(&mut rng), size(&mut rng));

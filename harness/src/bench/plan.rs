@@ -43,7 +43,9 @@ impl Group {
 /// `large` smooth blobs (even indices) and checkerboards (odd indices) up to 10^6 vertices (10^5
 /// quick); rectangle windows over `star` and `large` smooth subjects, intersection only, where the
 /// window-limited clippers join (Sutherland-Hodgman, four-state, and Clipper2's dedicated
-/// rectangle clipper `clipper2-rect`, the peer to compare them with).
+/// rectangle clipper `clipper2-rect`, the peer to compare them with); `spiky-box` (Vatti's
+/// envelope pre-filter) at the large sizes and `many-subjects` (small subjects over one clip of
+/// 10^3 or 10^5 edges, 10^4 quick; times per subject; the prepared clip's case), all operations.
 pub fn groups(quick: bool) -> Vec<Group> {
     let small: Vec<usize> = if quick { vec![4, 20, 100, 200] } else { vec![4, 10, 20, 40, 100, 200] };
     let large: Vec<usize> = if quick { vec![1_000, 10_000, 100_000] } else { vec![1_000, 10_000, 100_000, 1_000_000] };
@@ -88,6 +90,27 @@ pub fn groups(quick: bool) -> Vec<Group> {
             indices: cases,
             sizes: small,
             ops: vec![BoolOp::Intersection],
+            memory: false,
+        },
+        Group {
+            label: "spiky-box",
+            workload: "spiky-box",
+            window: WindowKind::Any,
+            indices: vec![0],
+            sizes: large.clone(),
+            ops: BoolOp::ALL.to_vec(),
+            memory: true,
+        },
+        Group {
+            label: "many-subjects",
+            workload: "many-subjects",
+            window: WindowKind::Any,
+            // Subjects, each a case over the same clip; the sizes are the clip's edges.
+            indices: (0..if quick { 16 } else { 48 }).collect(),
+            // Clipper2 spends minutes per subject over a 10^5-edge lobed clip (its intersection
+            // list), so quick runs stop at 10^4.
+            sizes: if quick { vec![1_000, 10_000] } else { vec![1_000, 100_000] },
+            ops: BoolOp::ALL.to_vec(),
             memory: false,
         },
         Group {

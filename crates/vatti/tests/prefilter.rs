@@ -1,0 +1,109 @@
+//! The envelope pre-filter, the rectangle path it gives and the prepared clip against the plain
+//! sweep and the exact oracle: operands that overlap partly, rectangles, far-apart operands.
+
+mod common;
+
+use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Rect, Ring};
+use clip_oracle::polygon::{OutputRules, REGION_TOLERANCE, check_polygon_result, same_region, tolerance};
+use clip_testkit::workload::polygon_case_sized;
+use clip_vatti::Vatti;
+use proptest::prelude::*;
+
+/// Rings of random float vertices in a box placed at `(ox, oy)` of side `size` (self-crossing).
+fn rings_in(ox: f64, oy: f64, size: f64) -> impl Strategy<Value = Polygons> {
+    let ring = prop::collection::vec((0.0f64..1.0, 0.0f64..1.0), 3..16)
+        .prop_map(move |v| Ring::new(v.into_iter().map(|(x, y)| Point::new(ox + size * x, oy + size * y)).collect()));
+    prop::collection::vec(ring, 1..4)
+        .prop_map(|rings| Polygons::new(rings.into_iter().filter(|r| r.distinct_points() >= 3).collect()))
+}
+
+/// Integer-grid rings: shared vertices and edges along the other operand's box.
+fn grid_rings() -> impl Strategy<Value = Polygons> {
+    let ring = prop::collection::vec((0i32..12, 0i32..12), 3..10)
+        .prop_map(|v| Ring::new(v.into_iter().map(|(x, y)| Point::new(f64::from(x), f64::from(y))).collect()));
+    prop::collection::vec(ring, 1..3)
+        .prop_map(|rings| Polygons::new(rings.into_iter().filter(|r| r.distinct_points() >= 3).collect()))
+}
+
+/// A big subject and a smaller operand somewhere over it, beside it or inside it.
+fn operands() -> impl Strategy<Value = (Polygons, Polygons)> {
+    prop_oneof![
+        (rings_in(0.0, 0.0, 100.0), (-20.0f64..100.0, -20.0f64..100.0, 1.0f64..40.0))
+            .prop_flat_map(|(s, (x, y, k))| (Just(s), rings_in(x, y, k))),
+        (grid_rings(), grid_rings()),
+        // One rectangle, either way round: the rectangle path.
+        (rings_in(0.0, 0.0, 100.0), (-10i32..12, -10i32..12, 1i32..12), any::<bool>()).prop_map(
+            |(s, (x, y, k), cw)| {
+                let r =
+                    Rect::new(f64::from(x) * 8.0, f64::from(y) * 8.0, f64::from(x + k) * 8.0, f64::from(y + k) * 8.0);
+                let ring = Polygons::from(r).rings.remove(0);
+                (s, Polygons::from(if cw { ring.reversed() } else { ring }))
+            }
+        ),
+    ]
+}
+
+fn op() -> impl Strategy<Value = BoolOp> {
+    prop::sample::select(BoolOp::ALL.to_vec())
+}
+
+fn fill() -> impl Strategy<Value = FillRule> {
+    prop::sample::select(FillRule::ALL.to_vec())
+}
+
+/// The pre-filtered and prepared results: oracle-exact, valid, and the plain sweep's region.
+fn check_all_paths(s: &Polygons, c: &Polygons, op: BoolOp, fill: FillRule) -> Result<(), TestCaseError> {
+    let plain = Vatti.clip_unfiltered(s, c, op, fill).unwrap();
+    let filtered = Vatti.clip(s, c, op, fill).unwrap();
+    let prepared = Vatti::prepare(c, fill).unwrap().clip(s, op).unwrap();
+    let tol = tolerance(s, c, REGION_TOLERANCE);
+    for (name, out) in [("filtered", &filtered), ("prepared", &prepared)] {
+        let verdict = check_polygon_result(s, c, op, fill, out, &OutputRules::conventional(REGION_TOLERANCE));
+        prop_assert!(verdict.is_ok(), "{name}: {}", verdict.unwrap_err());
+        prop_assert!(common::check_valid(out).is_ok(), "{name}: {}", common::check_valid(out).unwrap_err());
+        let same = same_region((out, FillRule::NonZero), (&plain, FillRule::NonZero), tol);
+        prop_assert!(same.is_ok(), "{name} differs from the plain sweep by area {:e}", same.unwrap_err());
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    #[test]
+    fn prefiltered_and_prepared_match_the_plain_sweep((s, c) in operands(), op in op(), fill in fill()) {
+        check_all_paths(&s, &c, op, fill)?;
+        // The other way round: the small operand as the subject.
+        check_all_paths(&c, &s, op, fill)?;
+    }
+
+    #[test]
+    fn prepared_trapezoids_cover_the_result((s, c) in operands(), op in op(), fill in fill()) {
+        let out = Vatti.clip(&s, &c, op, fill).unwrap();
+        let traps = Vatti::prepare(&c, fill).unwrap().clip_trapezoids(&s, op).unwrap();
+        let area: f64 = traps.iter().map(|t| t.area()).sum();
+        prop_assert!((area - out.signed_area()).abs() <= tolerance(&s, &c, REGION_TOLERANCE), "{area} vs {}", out.signed_area());
+    }
+}
+
+#[test]
+fn spiky_stars_cut_to_a_box_inside_them_match_the_plain_sweep() {
+    for (index, edges) in [(0, 2_000), (1, 6_000)] {
+        let case = polygon_case_sized("spiky-box", 7, index, edges, clip_core::WindowKind::Any).unwrap();
+        for op in BoolOp::ALL {
+            for fill in [FillRule::EvenOdd, FillRule::Positive] {
+                check_all_paths(&case.subject, &case.clip, op, fill).unwrap();
+            }
+        }
+    }
+}
+
+#[test]
+fn a_prepared_clip_refuses_bad_subjects_and_clips() {
+    let good = Polygons::from(Rect::new(0.0, 0.0, 1.0, 1.0));
+    let bad = Polygons::from(Ring::new(vec![Point::new(0.0, 0.0), Point::new(f64::NAN, 1.0), Point::new(1.0, 0.0)]));
+    assert!(Vatti::prepare(&bad, FillRule::NonZero).is_err());
+    let prepared = Vatti::prepare(&good, FillRule::NonZero).unwrap();
+    assert!(prepared.clip(&bad, BoolOp::Intersection).is_err());
+    assert!(prepared.clip_trapezoids(&bad, BoolOp::Union).is_err());
+}
