@@ -156,7 +156,10 @@ impl Ring {
             let (a, b) = (p[i], p[(i + 1) % 4]);
             (a.x == b.x) != (a.y == b.y)
         };
-        if p.iter().all(|&q| corner(q)) && (0..4).all(axis_edge) { Some(r) } else { None }
+        // Four corners each visited once: a zero-area spike can visit three corners with axis
+        // edges only.
+        let distinct = (0..4).all(|i| (i + 1..4).all(|j| p[i] != p[j]));
+        if distinct && p.iter().all(|&q| corner(q)) && (0..4).all(axis_edge) { Some(r) } else { None }
     }
 }
 

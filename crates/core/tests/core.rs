@@ -309,6 +309,9 @@ fn windows_are_checked() {
     let diamond = Polygons::from(ring(&[(1.0, 0.0), (2.0, 1.0), (1.0, 2.0), (0.0, 1.0)]));
     assert!(matches!(rect_window(&diamond, "t"), Err(ClipError::WindowNotRectangle { clipper: "t" })));
     assert!(convex_window(&diamond, "t").is_ok());
+    // A spike out and back along two sides visits three corners with axis edges only.
+    let spike = ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (1.0, 0.0)]);
+    assert_eq!(spike.as_rect(), None);
 
     let concave = Polygons::from(ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (2.0, 1.0), (0.0, 4.0)]));
     assert!(matches!(convex_window(&concave, "t"), Err(ClipError::WindowNotConvex { .. })));

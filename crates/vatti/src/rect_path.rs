@@ -18,11 +18,6 @@ pub(crate) fn rectangle_clip(clip: &Polygons, op: BoolOp, fill: FillRule) -> Opt
         return None;
     }
     let r = ring.as_rect()?;
-    // `as_rect` also takes a spike that visits three corners twice: all four must be there.
-    let corners = [r.min, Point::new(r.max.x, r.min.y), r.max, Point::new(r.min.x, r.max.y)];
-    if !corners.iter().all(|c| ring.points.contains(c)) {
-        return None;
-    }
     let winding = if ring.signed_area() > 0.0 { 1 } else { -1 };
     Some((r, fill.is_inside(winding)))
 }
