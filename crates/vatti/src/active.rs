@@ -83,14 +83,15 @@ impl Edge {
         off.abs() <= 2.0 * relative * sum * d.y
     }
 
-    /// True when `p` is within `relative` (times the coordinates' magnitude) of the edge in x.
-    /// With [`ROUNDING`]: a crossing point computed with another edge that, in exact
-    /// arithmetic, lies on this one too.
+    /// How far `p` lies from the edge in x, and the coordinates' magnitude: `p` is near within
+    /// `relative` when the offset is at most `relative` times the magnitude. Within
+    /// [`ROUNDING`]: a crossing point computed with another edge that, in exact arithmetic, lies
+    /// on this one too.
     #[inline]
-    pub(crate) fn near(&self, p: Point, relative: f64) -> bool {
+    pub(crate) fn offset_and_scale(&self, p: Point) -> (f64, f64) {
         let x = self.x_at(p.y);
         let scale = self.bot.x.abs().max(self.top.x.abs()).max(self.bot.y.abs()).max(self.top.y.abs()).max(p.x.abs());
-        (x - p.x).abs() <= relative * scale
+        ((x - p.x).abs(), scale)
     }
 
     /// True when the edge ends at or below `y`.

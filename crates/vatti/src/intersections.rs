@@ -69,6 +69,12 @@ impl Sweep<'_> {
             e.next_y = yt;
             xtop.push(e.next_x);
         }
+        // Most beams have no crossing: then no edge passes its left neighbour, and the
+        // insertion sort below would find nothing.
+        if (1..n).all(|i| !self.left_at_top(i, xtop[i], i - 1, xtop[i - 1], yt)) {
+            self.xtop = xtop;
+            return table;
+        }
         // Sorted edge table: positions in the active edge table, by x at the top.
         let mut st = std::mem::take(&mut self.sorted);
         st.clear();

@@ -234,8 +234,6 @@ impl<'a> Sweep<'a> {
     /// Edges reaching scanline `y`: intermediate vertices hand over to successor edges, local
     /// maxima end pairs of bounds, horizontals make edges slide.
     fn top_of_scanbeam(&mut self, y: f64) {
-        let (mut maxima, mut settle, mut slides) =
-            (std::mem::take(&mut self.maxima), std::mem::take(&mut self.settle), std::mem::take(&mut self.slides));
         for pos in 0..self.ael.len() {
             let id = self.ael.at(pos);
             let e = self.ael.get_mut(id);
@@ -248,9 +246,10 @@ impl<'a> Sweep<'a> {
             let u = self.bounds.along(t, forward);
             let (tp, up) = (self.bounds.pt(t), self.bounds.pt(u));
             if up.y > y {
-                settle.push(self.succeed(pos, t, u));
+                let s = self.succeed(pos, t, u);
+                self.settle.push(s);
             } else if up.y < y {
-                maxima.push(id);
+                self.maxima.push(id);
             } else {
                 let w = self.bounds.along(u, forward);
                 if self.bounds.pt(w).y > y {
@@ -258,14 +257,16 @@ impl<'a> Sweep<'a> {
                     let e = self.ael.get_mut(s);
                     e.curr_x = tp.x;
                     e.moving = true;
-                    slides.push(Slide { edge: s, from_x: tp.x, to_x: up.x, max_vertex: NONE });
+                    self.slides.push(Slide { edge: s, from_x: tp.x, to_x: up.x, max_vertex: NONE });
                 } else if forward {
                     self.ael.get_mut(id).moving = true;
-                    slides.push(Slide { edge: id, from_x: tp.x, to_x: up.x, max_vertex: u });
+                    self.slides.push(Slide { edge: id, from_x: tp.x, to_x: up.x, max_vertex: u });
                 }
             }
         }
-        for &id in &maxima {
+        // The lists are read by index: the events below never add to them.
+        for i in 0..self.maxima.len() {
+            let id = self.maxima[i];
             if !self.ael.get(id).alive {
                 continue;
             }
@@ -275,12 +276,14 @@ impl<'a> Sweep<'a> {
                 self.meet(id, partner, tp, tp.x, tp.x, tp.y);
             }
         }
-        for &id in &settle {
+        for i in 0..self.settle.len() {
+            let id = self.settle[i];
             if self.ael.get(id).alive {
                 self.settle(id);
             }
         }
-        for &s in &slides {
+        for i in 0..self.slides.len() {
+            let s = self.slides[i];
             if s.max_vertex == NONE {
                 self.slide(s, y);
                 self.ael.get_mut(s.edge).moving = false;
@@ -298,10 +301,9 @@ impl<'a> Sweep<'a> {
             }
             self.ael.get_mut(s.edge).moving = false;
         }
-        maxima.clear();
-        settle.clear();
-        slides.clear();
-        (self.maxima, self.settle, self.slides) = (maxima, settle, slides);
+        self.maxima.clear();
+        self.settle.clear();
+        self.slides.clear();
     }
 
     /// Moves the edge at `pos` on to its bound's next edge `from -> to` (an intermediate vertex
@@ -495,14 +497,14 @@ impl<'a> Sweep<'a> {
                 }
                 // Through p exactly; or on the same line as `id`, or within rounding of p, when p
                 // is a rounded crossing that several edges share (the cheap test first).
-                if p.y < e.bot.y
-                    || p.y > e.top.y
-                    || !e.maybe_near(p, 1e-9)
-                    || !e.near(p, 1e-9)
-                    || (e.side_of(p) != Orientation::Collinear
-                        && !self.coincident(id, k)
-                        && !(rounded && e.near(p, ROUNDING)))
-                {
+                if p.y < e.bot.y || p.y > e.top.y || !e.maybe_near(p, 1e-9) {
+                    break;
+                }
+                let (offset, scale) = e.offset_and_scale(p);
+                // Within rounding of a rounded point first: it spares the exact test, which on a
+                // point that close to the line mostly takes the slow, adaptive path.
+                let (near, within_rounding) = (offset <= 1e-9 * scale, rounded && offset <= ROUNDING * scale);
+                if !near || (!within_rounding && e.side_of(p) != Orientation::Collinear && !self.coincident(id, k)) {
                     break;
                 }
                 if e.outrec != NONE && p != e.bot && p != e.top {
