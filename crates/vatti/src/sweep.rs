@@ -7,7 +7,7 @@ use clip_core::{Point, Trapezoid};
 use crate::active::{ActiveEdges, ROUNDING};
 use crate::bounds::{Bounds, LocalMinimum, NONE};
 use crate::contribution::{Crossing, Rules, classify};
-use crate::intersections::Intersection;
+use crate::intersections::{Intersection, TopX};
 use crate::output::OutputBuilder;
 use crate::scanbeam::Scanbeams;
 
@@ -33,7 +33,7 @@ pub(crate) struct SweepBuffers {
     maxima: Vec<u32>,
     settle: Vec<u32>,
     slides: Vec<Slide>,
-    xtop: Vec<f64>,
+    xtop: Vec<TopX>,
     sorted: Vec<u32>,
     table: Vec<Intersection>,
 }
@@ -47,11 +47,11 @@ impl SweepBuffers {
             + self.traps.capacity() * size_of::<Trapezoid>()
             + self.table.capacity() * size_of::<Intersection>()
             + self.slides.capacity() * size_of::<Slide>()
+            + self.xtop.capacity() * size_of::<TopX>()
             + 8 * (self.ael.order.capacity()
                 + self.beams.capacity()
                 + self.maxima.capacity()
                 + self.settle.capacity()
-                + self.xtop.capacity()
                 + self.sorted.capacity())
     }
 }
@@ -71,7 +71,7 @@ pub(crate) struct Sweep<'a> {
     settle: Vec<u32>,
     slides: Vec<Slide>,
     /// The sorted edge table's x values at the scanbeam top, and its order (reused buffers).
-    pub(crate) xtop: Vec<f64>,
+    pub(crate) xtop: Vec<TopX>,
     pub(crate) sorted: Vec<u32>,
     /// The intersection table's buffer, reused between scanbeams.
     pub(crate) table: Vec<Intersection>,
@@ -97,7 +97,7 @@ impl<'a> Sweep<'a> {
             mut table,
         } = buffers;
         ael.reset(2 * bounds.minima.len());
-        beams.clear();
+        beams.rebuild(&bounds.vertices);
         out.reset(if trapezoids { 0 } else { bounds.vertices.len() });
         traps.clear();
         maxima.clear();
@@ -138,14 +138,8 @@ impl<'a> Sweep<'a> {
         loop {
             self.top_of_scanbeam(y);
             self.insert_local_minima(y);
-            let next_lmt = self.bounds.minima.get(self.next_minimum).map(|m| self.bounds.minimum_y(m));
-            let next = match (self.beams.next_above(y), next_lmt) {
-                (Some(a), Some(b)) => a.min(b),
-                (a, b) => match a.or(b) {
-                    Some(v) => v,
-                    None => break,
-                },
-            };
+            // The minima's heights are among the scanlines.
+            let Some(next) = self.beams.next_above(y) else { break };
             self.process_intersections(y, next);
             y = next;
         }
@@ -156,9 +150,7 @@ impl<'a> Sweep<'a> {
     /// Makes the active edge for the bound leaving vertex `from` towards `to`.
     fn new_edge(&mut self, from: u32, to: u32, kind: u8, forward: bool) -> u32 {
         let (bot, top) = (self.bounds.pt(from), self.bounds.pt(to));
-        let id = self.ael.create(bot, top, kind, forward, to);
-        self.beams.mark(top.y);
-        id
+        self.ael.create(bot, top, kind, forward, to)
     }
 
     /// The other bound's edge ending at vertex `v`, opposite in direction to `id`.
@@ -325,7 +317,6 @@ impl<'a> Sweep<'a> {
         e.top_vertex = to;
         e.curr_x = top.x;
         e.next_y = f64::NAN;
-        self.beams.mark(next_top.y);
         id
     }
 
