@@ -350,7 +350,8 @@ impl<'a> Sweep<'a> {
     }
 
     /// Orders a new edge starting at its bottom among edges through the same point by
-    /// direction above it: exact, with crossings at that point.
+    /// direction above it: exact, with crossings at that point. Called on the current scanline,
+    /// where every active edge's `curr_x` is its x there.
     fn settle(&mut self, id: u32) {
         let (p, top) = (self.ael.get(id).bot, self.ael.get(id).top);
         let n = self.ael.len();
@@ -360,7 +361,7 @@ impl<'a> Sweep<'a> {
                 break;
             }
             let k = self.ael.get(self.ael.at(pos + 1));
-            if k.moving || k.ends_by(p.y) || k.side_of(p) != Orientation::Collinear {
+            if k.moving || k.ends_by(p.y) || k.clearly_off_scanline(p) || k.side_of(p) != Orientation::Collinear {
                 break;
             }
             if orient(p, top, k.top) != Orientation::CounterClockwise {
@@ -374,7 +375,7 @@ impl<'a> Sweep<'a> {
                 break;
             }
             let k = self.ael.get(self.ael.at(pos - 1));
-            if k.moving || k.ends_by(p.y) || k.side_of(p) != Orientation::Collinear {
+            if k.moving || k.ends_by(p.y) || k.clearly_off_scanline(p) || k.side_of(p) != Orientation::Collinear {
                 break;
             }
             if orient(p, top, k.top) != Orientation::Clockwise {
