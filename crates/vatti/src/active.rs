@@ -16,6 +16,8 @@ pub(crate) struct Edge {
     pub bot: Point,
     /// Upper end (`top.y > bot.y`).
     pub top: Point,
+    /// Magnitudes of the ends, kept with them for the tolerance tests (see [`Edge::set_ends`]).
+    pub magnitude: EndMagnitudes,
     /// x at the current scanline (the paper's `xbot`).
     pub curr_x: f64,
     /// x at height `next_y`, computed once per scanbeam for its top (NaN height: none).
@@ -42,7 +44,36 @@ pub(crate) struct Edge {
     pub pos: u32,
 }
 
+/// Magnitudes of an edge's ends, computed once per edge rather than per test.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct EndMagnitudes {
+    /// max(|bot.x|, |top.x|).
+    pub x_max: f64,
+    /// The largest of the four coordinates' magnitudes.
+    pub max: f64,
+    /// |bot.x| + |top.x| + |bot.y| + |top.y|, added in that order.
+    pub sum: f64,
+}
+
+impl EndMagnitudes {
+    fn of(bot: Point, top: Point) -> EndMagnitudes {
+        EndMagnitudes {
+            x_max: bot.x.abs().max(top.x.abs()),
+            max: bot.x.abs().max(top.x.abs()).max(bot.y.abs()).max(top.y.abs()),
+            sum: bot.x.abs() + top.x.abs() + bot.y.abs() + top.y.abs(),
+        }
+    }
+}
+
 impl Edge {
+    /// Moves the edge to `bot -> top`, its magnitudes with it.
+    #[inline]
+    pub(crate) fn set_ends(&mut self, bot: Point, top: Point) {
+        self.bot = bot;
+        self.top = top;
+        self.magnitude = EndMagnitudes::of(bot, top);
+    }
+
     /// Winding numbers of the region just right of this edge.
     #[inline]
     pub(crate) fn wind_right(&self) -> [i32; 2] {
@@ -72,14 +103,14 @@ impl Edge {
 
     /// False when `p` (at a height within the edge's span) is clearly farther than
     /// `relative` times the coordinates' magnitude from the edge in x: a test without division,
-    /// with twice the margin, done before [`Edge::near`].
+    /// with twice the margin, done before [`Edge::offset_and_scale`].
     #[inline]
     pub(crate) fn maybe_near(&self, p: Point, relative: f64) -> bool {
         let d = self.top - self.bot;
         // (x_at(p.y) - p.x) * dy, with dy > 0.
         let off = (self.bot.x - p.x) * d.y + (p.y - self.bot.y) * d.x;
         // At least the largest magnitude `near` scales by.
-        let sum = self.bot.x.abs() + self.top.x.abs() + self.bot.y.abs() + self.top.y.abs() + p.x.abs();
+        let sum = self.magnitude.sum + p.x.abs();
         off.abs() <= 2.0 * relative * sum * d.y
     }
 
@@ -90,7 +121,7 @@ impl Edge {
     #[inline]
     pub(crate) fn offset_and_scale(&self, p: Point) -> (f64, f64) {
         let x = self.x_at(p.y);
-        let scale = self.bot.x.abs().max(self.top.x.abs()).max(self.bot.y.abs()).max(self.top.y.abs()).max(p.x.abs());
+        let scale = self.magnitude.max.max(p.x.abs());
         ((x - p.x).abs(), scale)
     }
 
@@ -99,7 +130,7 @@ impl Edge {
     /// ends' magnitude; the slack is ten times that). Spares the exact test for far edges.
     #[inline]
     pub(crate) fn clearly_off_scanline(&self, p: Point) -> bool {
-        (self.curr_x - p.x).abs() > 64.0 * f64::EPSILON * self.bot.x.abs().max(self.top.x.abs())
+        (self.curr_x - p.x).abs() > 64.0 * f64::EPSILON * self.magnitude.x_max
     }
 
     /// True when the edge ends at or below `y`.
@@ -137,6 +168,7 @@ impl ActiveEdges {
         self.edges.push(Edge {
             bot,
             top,
+            magnitude: EndMagnitudes::of(bot, top),
             curr_x: bot.x,
             next_x: bot.x,
             next_y: f64::NAN,

@@ -6,6 +6,7 @@ use clip_core::Point;
 use clip_core::predicates::{Orientation, orient};
 
 use crate::active::ROUNDING;
+use crate::scanbeam::height_key;
 use crate::sweep::Sweep;
 
 /// An entry of the intersection table: `left` precedes `right` in the active edge table.
@@ -14,8 +15,8 @@ pub(crate) struct Intersection {
     pub left: u32,
     pub right: u32,
     pub pt: Point,
-    /// Its place in the order the crossings were found, to sort ties as found.
-    pub found: u32,
+    /// `pt.y` as an integer sort key.
+    pub y_key: i64,
 }
 
 /// An active edge's x at the top of the beam and the magnitude of its ends' x, which scales
@@ -77,7 +78,7 @@ impl Sweep<'_> {
             let e = &mut self.ael.edges[id as usize];
             e.next_x = e.x_at(yt);
             e.next_y = yt;
-            xtop.push(TopX { x: e.next_x, magnitude: e.bot.x.abs().max(e.top.x.abs()) });
+            xtop.push(TopX { x: e.next_x, magnitude: e.magnitude.x_max });
         }
         // Most beams have no crossing: then no edge passes its left neighbour, and the
         // insertion sort below would find nothing.
@@ -94,7 +95,7 @@ impl Sweep<'_> {
             while j > 0 && self.left_at_top(i, xtop[i], st[j - 1] as usize, xtop[st[j - 1] as usize], yt) {
                 let (left, right) = (self.ael.at(st[j - 1] as usize), self.ael.at(i));
                 let pt = self.crossing_point(left, right, yb, yt);
-                table.push(Intersection { left, right, pt, found: table.len() as u32 });
+                table.push(Intersection { left, right, pt, y_key: height_key(pt.y) });
                 st[j] = st[j - 1];
                 j -= 1;
             }
@@ -102,9 +103,8 @@ impl Sweep<'_> {
         }
         self.xtop = xtop;
         self.sorted = st;
-        // By height, ties in the order found (which a stable sort would keep), without the
-        // stable sort's buffer.
-        table.sort_unstable_by(|a, b| a.pt.y.total_cmp(&b.pt.y).then(a.found.cmp(&b.found)));
+        // By height, ties in the order found.
+        table.sort_by_key(|a| a.y_key);
         table
     }
 

@@ -8,7 +8,7 @@ use crate::bounds::Vertex;
 /// Sorting them once replaces a heap's push and pop per edge.
 #[derive(Debug, Default)]
 pub(crate) struct Scanbeams {
-    /// The heights as order-preserving integer keys (see [`key`]), ascending, no repeats.
+    /// The heights as order-preserving integer keys (see [`height_key`]), ascending, no repeats.
     keys: Vec<i64>,
     /// Index of the first height not yet passed.
     next: usize,
@@ -17,14 +17,14 @@ pub(crate) struct Scanbeams {
 /// Up to this many heights the unstable sort is the cheaper (measured with callgrind).
 const SMALL: usize = 64;
 
-/// `f64::total_cmp`'s order as a signed integer: cheaper to sort than the floats.
+/// `f64::total_cmp`'s order as a signed integer: cheaper to sort by than the floats.
 #[inline]
-fn key(y: f64) -> i64 {
+pub(crate) fn height_key(y: f64) -> i64 {
     let bits = y.to_bits() as i64;
     bits ^ (((bits >> 63) as u64) >> 1) as i64
 }
 
-/// The inverse of [`key`].
+/// The inverse of [`height_key`].
 #[inline]
 fn height(k: i64) -> f64 {
     f64::from_bits((k ^ (((k >> 63) as u64) >> 1) as i64) as u64)
@@ -34,7 +34,7 @@ impl Scanbeams {
     /// The heights of `vertices`, replacing whatever was there (the buffer is kept).
     pub(crate) fn rebuild(&mut self, vertices: &[Vertex]) {
         self.keys.clear();
-        self.keys.extend(vertices.iter().map(|v| key(v.pt.y)));
+        self.keys.extend(vertices.iter().map(|v| height_key(v.pt.y)));
         if self.keys.len() <= SMALL {
             self.keys.sort_unstable();
         } else {
@@ -53,7 +53,7 @@ impl Scanbeams {
     /// The smallest height above `y`; heights at or below `y` are passed for good.
     #[inline]
     pub(crate) fn next_above(&mut self, y: f64) -> Option<f64> {
-        let k = key(y);
+        let k = height_key(y);
         while let Some(&top) = self.keys.get(self.next) {
             if top > k {
                 return Some(height(top));
@@ -77,10 +77,10 @@ mod tests {
     fn keys_order_heights_as_total_cmp_does() {
         let ys = [-f64::MAX, -1.5, -1e-300, -0.0, 0.0, 1e-300, 2.0, 3.5, f64::MAX];
         for w in ys.windows(2) {
-            assert!(key(w[0]) < key(w[1]), "{} before {}", w[0], w[1]);
+            assert!(height_key(w[0]) < height_key(w[1]), "{} before {}", w[0], w[1]);
         }
         for y in ys {
-            assert_eq!(height(key(y)).to_bits(), y.to_bits());
+            assert_eq!(height(height_key(y)).to_bits(), y.to_bits());
         }
     }
 

@@ -312,8 +312,7 @@ impl<'a> Sweep<'a> {
         }
         let (bot, next_top) = (self.bounds.pt(from), self.bounds.pt(to));
         let e = self.ael.get_mut(id);
-        e.bot = bot;
-        e.top = next_top;
+        e.set_ends(bot, next_top);
         e.top_vertex = to;
         e.curr_x = top.x;
         e.next_y = f64::NAN;
