@@ -17,6 +17,9 @@ pub(crate) struct Scanbeams {
 /// Up to this many heights the unstable sort is the cheaper (measured with callgrind).
 const SMALL: usize = 64;
 
+/// Heights kept between clips at most (a large buffer is freed when its sweep ends).
+const KEEP_AT_MOST: usize = 4096;
+
 /// `f64::total_cmp`'s order as a signed integer: cheaper to sort by than the floats.
 #[inline]
 pub(crate) fn height_key(y: f64) -> i64 {
@@ -43,6 +46,14 @@ impl Scanbeams {
         }
         self.keys.dedup();
         self.next = 0;
+    }
+
+    /// Once the sweep is over: frees a large buffer at once, so it does not add to the peak
+    /// memory of the clean-up that follows (a small one is kept for the thread's next clip).
+    pub(crate) fn release_if_large(&mut self) {
+        if self.keys.capacity() > KEEP_AT_MOST {
+            self.keys = Vec::new();
+        }
     }
 
     /// Heights the buffer has room for.

@@ -143,6 +143,7 @@ impl<'a> Sweep<'a> {
             self.process_intersections(y, next);
             y = next;
         }
+        self.beams.release_if_large();
     }
 
     // ---- edges ----
