@@ -146,26 +146,46 @@ impl Edge {
     }
 }
 
-/// The active edges: an arena (one record per bound, never freed during a sweep) and their x
-/// order.
+/// The active edges: an arena of edge records and their x order. A bound's record is reused
+/// for a later bound once the bound has ended and its scanline is done, so the arena is as large
+/// as the widest active edge table, not one record per bound.
 #[derive(Debug, Default)]
 pub(crate) struct ActiveEdges {
     pub edges: Vec<Edge>,
     pub order: Vec<u32>,
+    /// Records free for new edges.
+    free: Vec<u32>,
+    /// Records of edges that ended on the current scanline: the scanline's work lists may still
+    /// name them (and check `alive`), so they are freed only when it is done.
+    ended: Vec<u32>,
 }
 
 impl ActiveEdges {
-    /// Empties the table, keeping its buffers, with room for `bounds` bounds.
-    pub(crate) fn reset(&mut self, bounds: usize) {
+    /// Empties the table, keeping its buffers.
+    pub(crate) fn reset(&mut self) {
         self.edges.clear();
         self.order.clear();
-        self.edges.reserve(bounds);
+        self.free.clear();
+        self.ended.clear();
+    }
+
+    /// The current scanline is done: the records of the edges that ended on it are free.
+    #[inline]
+    pub(crate) fn scanline_done(&mut self) {
+        if !self.ended.is_empty() {
+            self.free.append(&mut self.ended);
+        }
+    }
+
+    /// Bytes of capacity the table holds.
+    pub(crate) fn held_bytes(&self) -> usize {
+        self.edges.capacity() * std::mem::size_of::<Edge>()
+            + 4 * (self.order.capacity() + self.free.capacity() + self.ended.capacity())
     }
 
     /// A new edge in the arena (not yet in the order).
     pub(crate) fn create(&mut self, bot: Point, top: Point, kind: u8, forward: bool, top_vertex: u32) -> u32 {
-        let id = self.edges.len() as u32;
-        self.edges.push(Edge {
+        let edge = Edge {
             bot,
             top,
             magnitude: EndMagnitudes::of(bot, top),
@@ -181,8 +201,14 @@ impl ActiveEdges {
             alive: true,
             moving: false,
             pos: NONE,
-        });
-        id
+        };
+        if let Some(id) = self.free.pop() {
+            self.edges[id as usize] = edge;
+            id
+        } else {
+            self.edges.push(edge);
+            self.edges.len() as u32 - 1
+        }
     }
 
     #[inline]
@@ -251,6 +277,7 @@ impl ActiveEdges {
     pub(crate) fn remove_pair(&mut self, pos: usize) {
         for id in self.order.drain(pos..pos + 2) {
             self.edges[id as usize].alive = false;
+            self.ended.push(id);
         }
         self.renumber(pos);
     }

@@ -42,17 +42,13 @@ impl SweepBuffers {
     /// Bytes the buffers hold (their capacity), to decide whether keeping them is worth it.
     pub(crate) fn held_bytes(&self) -> usize {
         use std::mem::size_of;
-        self.ael.edges.capacity() * size_of::<crate::active::Edge>()
+        self.ael.held_bytes()
             + self.out.held_bytes()
             + self.traps.capacity() * size_of::<Trapezoid>()
             + self.table.capacity() * size_of::<Intersection>()
             + self.slides.capacity() * size_of::<Slide>()
             + self.xtop.capacity() * size_of::<TopX>()
-            + 8 * (self.ael.order.capacity()
-                + self.beams.capacity()
-                + self.maxima.capacity()
-                + self.settle.capacity()
-                + self.sorted.capacity())
+            + 8 * (self.beams.capacity() + self.maxima.capacity() + self.settle.capacity() + self.sorted.capacity())
     }
 }
 
@@ -96,7 +92,7 @@ impl<'a> Sweep<'a> {
             mut sorted,
             mut table,
         } = buffers;
-        ael.reset(2 * bounds.minima.len());
+        ael.reset();
         beams.rebuild(&bounds.vertices);
         out.reset(if trapezoids { 0 } else { bounds.vertices.len() });
         traps.clear();
@@ -140,6 +136,7 @@ impl<'a> Sweep<'a> {
             self.insert_local_minima(y);
             // The minima's heights are among the scanlines.
             let Some(next) = self.beams.next_above(y) else { break };
+            self.ael.scanline_done();
             self.process_intersections(y, next);
             y = next;
         }
