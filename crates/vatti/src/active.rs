@@ -16,6 +16,8 @@ pub(crate) struct Edge {
     pub bot: Point,
     /// Upper end (`top.y > bot.y`).
     pub top: Point,
+    /// Magnitudes of the ends, kept with them for the tolerance tests (see [`Edge::set_ends`]).
+    pub magnitude: EndMagnitudes,
     /// x at the current scanline (the paper's `xbot`).
     pub curr_x: f64,
     /// x at height `next_y`, computed once per scanbeam for its top (NaN height: none).
@@ -42,7 +44,36 @@ pub(crate) struct Edge {
     pub pos: u32,
 }
 
+/// Magnitudes of an edge's ends, computed once per edge rather than per test.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct EndMagnitudes {
+    /// max(|bot.x|, |top.x|).
+    pub x_max: f64,
+    /// The largest of the four coordinates' magnitudes.
+    pub max: f64,
+    /// |bot.x| + |top.x| + |bot.y| + |top.y|, added in that order.
+    pub sum: f64,
+}
+
+impl EndMagnitudes {
+    fn of(bot: Point, top: Point) -> EndMagnitudes {
+        EndMagnitudes {
+            x_max: bot.x.abs().max(top.x.abs()),
+            max: bot.x.abs().max(top.x.abs()).max(bot.y.abs()).max(top.y.abs()),
+            sum: bot.x.abs() + top.x.abs() + bot.y.abs() + top.y.abs(),
+        }
+    }
+}
+
 impl Edge {
+    /// Moves the edge to `bot -> top`, its magnitudes with it.
+    #[inline]
+    pub(crate) fn set_ends(&mut self, bot: Point, top: Point) {
+        self.bot = bot;
+        self.top = top;
+        self.magnitude = EndMagnitudes::of(bot, top);
+    }
+
     /// Winding numbers of the region just right of this edge.
     #[inline]
     pub(crate) fn wind_right(&self) -> [i32; 2] {
@@ -72,25 +103,34 @@ impl Edge {
 
     /// False when `p` (at a height within the edge's span) is clearly farther than
     /// `relative` times the coordinates' magnitude from the edge in x: a test without division,
-    /// with twice the margin, done before [`Edge::near`].
+    /// with twice the margin, done before [`Edge::offset_and_scale`].
     #[inline]
     pub(crate) fn maybe_near(&self, p: Point, relative: f64) -> bool {
         let d = self.top - self.bot;
         // (x_at(p.y) - p.x) * dy, with dy > 0.
         let off = (self.bot.x - p.x) * d.y + (p.y - self.bot.y) * d.x;
         // At least the largest magnitude `near` scales by.
-        let sum = self.bot.x.abs() + self.top.x.abs() + self.bot.y.abs() + self.top.y.abs() + p.x.abs();
+        let sum = self.magnitude.sum + p.x.abs();
         off.abs() <= 2.0 * relative * sum * d.y
     }
 
-    /// True when `p` is within `relative` (times the coordinates' magnitude) of the edge in x.
-    /// With [`ROUNDING`]: a crossing point computed with another edge that, in exact
-    /// arithmetic, lies on this one too.
+    /// How far `p` lies from the edge in x, and the coordinates' magnitude: `p` is near within
+    /// `relative` when the offset is at most `relative` times the magnitude. Within
+    /// [`ROUNDING`]: a crossing point computed with another edge that, in exact arithmetic, lies
+    /// on this one too.
     #[inline]
-    pub(crate) fn near(&self, p: Point, relative: f64) -> bool {
+    pub(crate) fn offset_and_scale(&self, p: Point) -> (f64, f64) {
         let x = self.x_at(p.y);
-        let scale = self.bot.x.abs().max(self.top.x.abs()).max(self.bot.y.abs()).max(self.top.y.abs()).max(p.x.abs());
-        (x - p.x).abs() <= relative * scale
+        let scale = self.magnitude.max.max(p.x.abs());
+        ((x - p.x).abs(), scale)
+    }
+
+    /// True when `p`, on the current scanline, is certainly off the edge: `curr_x`, the edge's
+    /// x there, is farther from `p.x` than its rounding can be (x_at errs by under 6 ulps of the
+    /// ends' magnitude; the slack is ten times that). Spares the exact test for far edges.
+    #[inline]
+    pub(crate) fn clearly_off_scanline(&self, p: Point) -> bool {
+        (self.curr_x - p.x).abs() > 64.0 * f64::EPSILON * self.magnitude.x_max
     }
 
     /// True when the edge ends at or below `y`.
@@ -106,28 +146,49 @@ impl Edge {
     }
 }
 
-/// The active edges: an arena (one record per bound, never freed during a sweep) and their x
-/// order.
+/// The active edges: an arena of edge records and their x order. A bound's record is reused
+/// for a later bound once the bound has ended and its scanline is done, so the arena is as large
+/// as the widest active edge table, not one record per bound.
 #[derive(Debug, Default)]
 pub(crate) struct ActiveEdges {
     pub edges: Vec<Edge>,
     pub order: Vec<u32>,
+    /// Records free for new edges.
+    free: Vec<u32>,
+    /// Records of edges that ended on the current scanline: the scanline's work lists may still
+    /// name them (and check `alive`), so they are freed only when it is done.
+    ended: Vec<u32>,
 }
 
 impl ActiveEdges {
-    /// Empties the table, keeping its buffers, with room for `bounds` bounds.
-    pub(crate) fn reset(&mut self, bounds: usize) {
+    /// Empties the table, keeping its buffers.
+    pub(crate) fn reset(&mut self) {
         self.edges.clear();
         self.order.clear();
-        self.edges.reserve(bounds);
+        self.free.clear();
+        self.ended.clear();
+    }
+
+    /// The current scanline is done: the records of the edges that ended on it are free.
+    #[inline]
+    pub(crate) fn scanline_done(&mut self) {
+        if !self.ended.is_empty() {
+            self.free.append(&mut self.ended);
+        }
+    }
+
+    /// Bytes of capacity the table holds.
+    pub(crate) fn held_bytes(&self) -> usize {
+        self.edges.capacity() * std::mem::size_of::<Edge>()
+            + 4 * (self.order.capacity() + self.free.capacity() + self.ended.capacity())
     }
 
     /// A new edge in the arena (not yet in the order).
     pub(crate) fn create(&mut self, bot: Point, top: Point, kind: u8, forward: bool, top_vertex: u32) -> u32 {
-        let id = self.edges.len() as u32;
-        self.edges.push(Edge {
+        let edge = Edge {
             bot,
             top,
+            magnitude: EndMagnitudes::of(bot, top),
             curr_x: bot.x,
             next_x: bot.x,
             next_y: f64::NAN,
@@ -140,8 +201,14 @@ impl ActiveEdges {
             alive: true,
             moving: false,
             pos: NONE,
-        });
-        id
+        };
+        if let Some(id) = self.free.pop() {
+            self.edges[id as usize] = edge;
+            id
+        } else {
+            self.edges.push(edge);
+            self.edges.len() as u32 - 1
+        }
     }
 
     #[inline]
@@ -210,6 +277,7 @@ impl ActiveEdges {
     pub(crate) fn remove_pair(&mut self, pos: usize) {
         for id in self.order.drain(pos..pos + 2) {
             self.edges[id as usize].alive = false;
+            self.ended.push(id);
         }
         self.renumber(pos);
     }

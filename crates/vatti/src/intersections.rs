@@ -6,6 +6,7 @@ use clip_core::Point;
 use clip_core::predicates::{Orientation, orient};
 
 use crate::active::ROUNDING;
+use crate::scanbeam::height_key;
 use crate::sweep::Sweep;
 
 /// An entry of the intersection table: `left` precedes `right` in the active edge table.
@@ -14,6 +15,16 @@ pub(crate) struct Intersection {
     pub left: u32,
     pub right: u32,
     pub pt: Point,
+    /// `pt.y` as an integer sort key.
+    pub y_key: i64,
+}
+
+/// An active edge's x at the top of the beam and the magnitude of its ends' x, which scales
+/// the rounding allowance.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TopX {
+    pub x: f64,
+    pub magnitude: f64,
 }
 
 impl Sweep<'_> {
@@ -67,24 +78,33 @@ impl Sweep<'_> {
             let e = &mut self.ael.edges[id as usize];
             e.next_x = e.x_at(yt);
             e.next_y = yt;
-            xtop.push(e.next_x);
+            xtop.push(TopX { x: e.next_x, magnitude: e.magnitude.x_max });
+        }
+        // Most beams have no crossing: then no edge passes its left neighbour, and the
+        // insertion sort below would find nothing.
+        if (1..n).all(|i| !self.left_at_top(i, xtop[i], i - 1, xtop[i - 1], yt)) {
+            self.xtop = xtop;
+            return table;
         }
         // Sorted edge table: positions in the active edge table, by x at the top.
         let mut st = std::mem::take(&mut self.sorted);
         st.clear();
         for i in 0..n {
-            let x = xtop[i];
             let mut j = st.len();
-            while j > 0 && self.left_at_top(i, x, st[j - 1] as usize, xtop[st[j - 1] as usize], yt) {
+            st.push(i as u32);
+            while j > 0 && self.left_at_top(i, xtop[i], st[j - 1] as usize, xtop[st[j - 1] as usize], yt) {
+                let (left, right) = (self.ael.at(st[j - 1] as usize), self.ael.at(i));
+                let pt = self.crossing_point(left, right, yb, yt);
+                table.push(Intersection { left, right, pt, y_key: height_key(pt.y) });
+                st[j] = st[j - 1];
                 j -= 1;
-                let (left, right) = (self.ael.at(st[j] as usize), self.ael.at(i));
-                table.push(Intersection { left, right, pt: self.crossing_point(left, right, yb, yt) });
             }
-            st.insert(j, i as u32);
+            st[j] = i as u32;
         }
         self.xtop = xtop;
         self.sorted = st;
-        table.sort_by(|a, b| a.pt.y.total_cmp(&b.pt.y));
+        // By height, ties in the order found.
+        table.sort_by_key(|a| a.y_key);
         table
     }
 
@@ -96,12 +116,13 @@ impl Sweep<'_> {
     /// triangle whose two bounds leave its lowest vertex 1e-16 apart in slope was swapped by a
     /// rounded x and came out clockwise.) Two edges passing `yt` keep the rounded order: a crossing
     /// within rounding of `yt` is then taken in this beam or the next, at most ulps away.
-    fn left_at_top(&self, i: usize, xi: f64, k: usize, xk: f64, yt: f64) -> bool {
-        let (a, b) = (self.ael.get(self.ael.at(i)), self.ael.get(self.ael.at(k)));
-        let scale = a.bot.x.abs().max(a.top.x.abs()).max(b.bot.x.abs()).max(b.top.x.abs());
-        if (xi - xk).abs() > ROUNDING * scale {
+    #[inline]
+    fn left_at_top(&self, i: usize, ti: TopX, k: usize, tk: TopX, yt: f64) -> bool {
+        let (xi, xk) = (ti.x, tk.x);
+        if (xi - xk).abs() > ROUNDING * ti.magnitude.max(tk.magnitude) {
             return xi < xk;
         }
+        let (a, b) = (self.ael.get(self.ael.at(i)), self.ael.get(self.ael.at(k)));
         let left = Orientation::CounterClockwise;
         if a.bot == b.bot {
             orient(a.bot, b.top, a.top) == left

@@ -10,7 +10,7 @@
 //! | paper | here |
 //! | --- | --- |
 //! | bounds, local minima table (LMT) | `bounds::Bounds`, `bounds::LocalMinimum` |
-//! | scanbeam table (SBT), MarkSBT | `scanbeam::Scanbeams::mark` |
+//! | scanbeam table (SBT), MarkSBT | `scanbeam::Scanbeams` (every vertex height, sorted once) |
 //! | active edge table (AET), edge record (Table 1) | `active::ActiveEdges`, `active::Edge` |
 //! | sorted edge table (ST), intersection table (IT) | `intersections` |
 //! | contributing edge, left/right side, rules 1-6 | `contribution` (derived from winding counts) |

@@ -73,22 +73,23 @@ impl OutputBuilder {
     }
 
     /// AddLeft / AddRight: appends `p` at the left or right end (nothing if it repeats the end).
+    #[inline]
     pub(crate) fn add(&mut self, rec: u32, at_left: bool, p: Point) {
-        let r = self.recs[rec as usize];
-        let end = if at_left { r.left } else { r.right };
+        let r = &mut self.recs[rec as usize];
+        let (left, right) = (r.left, r.right);
+        let end = if at_left { left } else { right };
         if self.pts[end as usize].pt == p {
             return;
         }
         let id = self.pts.len() as u32;
-        self.pts.push(OutPt { pt: p, next: r.left, prev: r.right });
-        self.pts[r.right as usize].next = id;
-        self.pts[r.left as usize].prev = id;
-        let r = &mut self.recs[rec as usize];
         if at_left {
             r.left = id;
         } else {
             r.right = id;
         }
+        self.pts[right as usize].next = id;
+        self.pts[left as usize].prev = id;
+        self.pts.push(OutPt { pt: p, next: left, prev: right });
     }
 
     /// The two ends of one polygon met: it is a closed ring.
@@ -128,20 +129,18 @@ impl OutputBuilder {
             if !r.closed || r.left == NONE {
                 continue;
             }
+            let start = raw.points.len();
             let mut p = r.left;
-            let mut first = true;
             // A ring holds at most every point ever made: the bound guards a corrupt list.
-            let walk = std::iter::from_fn(|| {
-                if !first && p == r.left {
-                    return None;
+            for _ in 0..self.pts.len() {
+                let here = &self.pts[p as usize];
+                raw.push_point(start, here.pt, p);
+                p = here.next;
+                if p == r.left {
+                    break;
                 }
-                first = false;
-                let here = p;
-                p = self.pts[p as usize].next;
-                Some((self.pts[here as usize].pt, here))
-            })
-            .take(self.pts.len());
-            raw.push_ring(walk);
+            }
+            raw.end_ring(start);
         }
     }
 }

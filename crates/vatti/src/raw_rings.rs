@@ -43,15 +43,29 @@ impl RawRings {
 
     /// Appends `points` as a ring (repeats dropped; nothing if fewer than three remain), each
     /// point stamped by `stamp`.
+    #[cfg(test)]
     pub(crate) fn push_ring(&mut self, points: impl Iterator<Item = (Point, u32)>) {
         let start = self.points.len();
         for (p, stamp) in points {
-            if self.points.len() > start && self.points.last() == Some(&p) {
-                continue;
-            }
-            self.points.push(p);
-            self.emitted.push(stamp);
+            self.push_point(start, p, stamp);
         }
+        self.end_ring(start);
+    }
+
+    /// Adds `p` to the ring that began at point index `start` (see [`RawRings::end_ring`]),
+    /// unless it repeats the ring's last point.
+    #[inline]
+    pub(crate) fn push_point(&mut self, start: usize, p: Point, stamp: u32) {
+        if self.points.len() > start && self.points[self.points.len() - 1] == p {
+            return;
+        }
+        self.points.push(p);
+        self.emitted.push(stamp);
+    }
+
+    /// Closes the ring whose points begin at index `start`: the seam's repeats go, and a ring of
+    /// fewer than three points is dropped.
+    pub(crate) fn end_ring(&mut self, start: usize) {
         while self.points.len() > start + 1 && self.points[start] == self.points[self.points.len() - 1] {
             self.points.pop();
             self.emitted.pop();

@@ -7,7 +7,7 @@ use clip_core::{Point, Trapezoid};
 use crate::active::{ActiveEdges, ROUNDING};
 use crate::bounds::{Bounds, LocalMinimum, NONE};
 use crate::contribution::{Crossing, Rules, classify};
-use crate::intersections::Intersection;
+use crate::intersections::{Intersection, TopX};
 use crate::output::OutputBuilder;
 use crate::scanbeam::Scanbeams;
 
@@ -33,7 +33,7 @@ pub(crate) struct SweepBuffers {
     maxima: Vec<u32>,
     settle: Vec<u32>,
     slides: Vec<Slide>,
-    xtop: Vec<f64>,
+    xtop: Vec<TopX>,
     sorted: Vec<u32>,
     table: Vec<Intersection>,
 }
@@ -42,17 +42,13 @@ impl SweepBuffers {
     /// Bytes the buffers hold (their capacity), to decide whether keeping them is worth it.
     pub(crate) fn held_bytes(&self) -> usize {
         use std::mem::size_of;
-        self.ael.edges.capacity() * size_of::<crate::active::Edge>()
+        self.ael.held_bytes()
             + self.out.held_bytes()
             + self.traps.capacity() * size_of::<Trapezoid>()
             + self.table.capacity() * size_of::<Intersection>()
             + self.slides.capacity() * size_of::<Slide>()
-            + 8 * (self.ael.order.capacity()
-                + self.beams.capacity()
-                + self.maxima.capacity()
-                + self.settle.capacity()
-                + self.xtop.capacity()
-                + self.sorted.capacity())
+            + self.xtop.capacity() * size_of::<TopX>()
+            + 8 * (self.beams.capacity() + self.maxima.capacity() + self.settle.capacity() + self.sorted.capacity())
     }
 }
 
@@ -71,7 +67,7 @@ pub(crate) struct Sweep<'a> {
     settle: Vec<u32>,
     slides: Vec<Slide>,
     /// The sorted edge table's x values at the scanbeam top, and its order (reused buffers).
-    pub(crate) xtop: Vec<f64>,
+    pub(crate) xtop: Vec<TopX>,
     pub(crate) sorted: Vec<u32>,
     /// The intersection table's buffer, reused between scanbeams.
     pub(crate) table: Vec<Intersection>,
@@ -96,8 +92,8 @@ impl<'a> Sweep<'a> {
             mut sorted,
             mut table,
         } = buffers;
-        ael.reset(2 * bounds.minima.len());
-        beams.clear();
+        ael.reset();
+        beams.rebuild(&bounds.vertices);
         out.reset(if trapezoids { 0 } else { bounds.vertices.len() });
         traps.clear();
         maxima.clear();
@@ -138,17 +134,13 @@ impl<'a> Sweep<'a> {
         loop {
             self.top_of_scanbeam(y);
             self.insert_local_minima(y);
-            let next_lmt = self.bounds.minima.get(self.next_minimum).map(|m| self.bounds.minimum_y(m));
-            let next = match (self.beams.next_above(y), next_lmt) {
-                (Some(a), Some(b)) => a.min(b),
-                (a, b) => match a.or(b) {
-                    Some(v) => v,
-                    None => break,
-                },
-            };
+            // The minima's heights are among the scanlines.
+            let Some(next) = self.beams.next_above(y) else { break };
+            self.ael.scanline_done();
             self.process_intersections(y, next);
             y = next;
         }
+        self.beams.release_if_large();
     }
 
     // ---- edges ----
@@ -156,9 +148,7 @@ impl<'a> Sweep<'a> {
     /// Makes the active edge for the bound leaving vertex `from` towards `to`.
     fn new_edge(&mut self, from: u32, to: u32, kind: u8, forward: bool) -> u32 {
         let (bot, top) = (self.bounds.pt(from), self.bounds.pt(to));
-        let id = self.ael.create(bot, top, kind, forward, to);
-        self.beams.mark(top.y);
-        id
+        self.ael.create(bot, top, kind, forward, to)
     }
 
     /// The other bound's edge ending at vertex `v`, opposite in direction to `id`.
@@ -234,8 +224,6 @@ impl<'a> Sweep<'a> {
     /// Edges reaching scanline `y`: intermediate vertices hand over to successor edges, local
     /// maxima end pairs of bounds, horizontals make edges slide.
     fn top_of_scanbeam(&mut self, y: f64) {
-        let (mut maxima, mut settle, mut slides) =
-            (std::mem::take(&mut self.maxima), std::mem::take(&mut self.settle), std::mem::take(&mut self.slides));
         for pos in 0..self.ael.len() {
             let id = self.ael.at(pos);
             let e = self.ael.get_mut(id);
@@ -248,9 +236,10 @@ impl<'a> Sweep<'a> {
             let u = self.bounds.along(t, forward);
             let (tp, up) = (self.bounds.pt(t), self.bounds.pt(u));
             if up.y > y {
-                settle.push(self.succeed(pos, t, u));
+                let s = self.succeed(pos, t, u);
+                self.settle.push(s);
             } else if up.y < y {
-                maxima.push(id);
+                self.maxima.push(id);
             } else {
                 let w = self.bounds.along(u, forward);
                 if self.bounds.pt(w).y > y {
@@ -258,14 +247,16 @@ impl<'a> Sweep<'a> {
                     let e = self.ael.get_mut(s);
                     e.curr_x = tp.x;
                     e.moving = true;
-                    slides.push(Slide { edge: s, from_x: tp.x, to_x: up.x, max_vertex: NONE });
+                    self.slides.push(Slide { edge: s, from_x: tp.x, to_x: up.x, max_vertex: NONE });
                 } else if forward {
                     self.ael.get_mut(id).moving = true;
-                    slides.push(Slide { edge: id, from_x: tp.x, to_x: up.x, max_vertex: u });
+                    self.slides.push(Slide { edge: id, from_x: tp.x, to_x: up.x, max_vertex: u });
                 }
             }
         }
-        for &id in &maxima {
+        // The lists are read by index: the events below never add to them.
+        for i in 0..self.maxima.len() {
+            let id = self.maxima[i];
             if !self.ael.get(id).alive {
                 continue;
             }
@@ -275,12 +266,14 @@ impl<'a> Sweep<'a> {
                 self.meet(id, partner, tp, tp.x, tp.x, tp.y);
             }
         }
-        for &id in &settle {
+        for i in 0..self.settle.len() {
+            let id = self.settle[i];
             if self.ael.get(id).alive {
                 self.settle(id);
             }
         }
-        for &s in &slides {
+        for i in 0..self.slides.len() {
+            let s = self.slides[i];
             if s.max_vertex == NONE {
                 self.slide(s, y);
                 self.ael.get_mut(s.edge).moving = false;
@@ -298,10 +291,9 @@ impl<'a> Sweep<'a> {
             }
             self.ael.get_mut(s.edge).moving = false;
         }
-        maxima.clear();
-        settle.clear();
-        slides.clear();
-        (self.maxima, self.settle, self.slides) = (maxima, settle, slides);
+        self.maxima.clear();
+        self.settle.clear();
+        self.slides.clear();
     }
 
     /// Moves the edge at `pos` on to its bound's next edge `from -> to` (an intermediate vertex
@@ -318,12 +310,10 @@ impl<'a> Sweep<'a> {
         }
         let (bot, next_top) = (self.bounds.pt(from), self.bounds.pt(to));
         let e = self.ael.get_mut(id);
-        e.bot = bot;
-        e.top = next_top;
+        e.set_ends(bot, next_top);
         e.top_vertex = to;
         e.curr_x = top.x;
         e.next_y = f64::NAN;
-        self.beams.mark(next_top.y);
         id
     }
 
@@ -357,7 +347,8 @@ impl<'a> Sweep<'a> {
     }
 
     /// Orders a new edge starting at its bottom among edges through the same point by
-    /// direction above it: exact, with crossings at that point.
+    /// direction above it: exact, with crossings at that point. Called on the current scanline,
+    /// where every active edge's `curr_x` is its x there.
     fn settle(&mut self, id: u32) {
         let (p, top) = (self.ael.get(id).bot, self.ael.get(id).top);
         let n = self.ael.len();
@@ -367,7 +358,7 @@ impl<'a> Sweep<'a> {
                 break;
             }
             let k = self.ael.get(self.ael.at(pos + 1));
-            if k.moving || k.ends_by(p.y) || k.side_of(p) != Orientation::Collinear {
+            if k.moving || k.ends_by(p.y) || k.clearly_off_scanline(p) || k.side_of(p) != Orientation::Collinear {
                 break;
             }
             if orient(p, top, k.top) != Orientation::CounterClockwise {
@@ -381,7 +372,7 @@ impl<'a> Sweep<'a> {
                 break;
             }
             let k = self.ael.get(self.ael.at(pos - 1));
-            if k.moving || k.ends_by(p.y) || k.side_of(p) != Orientation::Collinear {
+            if k.moving || k.ends_by(p.y) || k.clearly_off_scanline(p) || k.side_of(p) != Orientation::Collinear {
                 break;
             }
             if orient(p, top, k.top) != Orientation::Clockwise {
@@ -495,14 +486,14 @@ impl<'a> Sweep<'a> {
                 }
                 // Through p exactly; or on the same line as `id`, or within rounding of p, when p
                 // is a rounded crossing that several edges share (the cheap test first).
-                if p.y < e.bot.y
-                    || p.y > e.top.y
-                    || !e.maybe_near(p, 1e-9)
-                    || !e.near(p, 1e-9)
-                    || (e.side_of(p) != Orientation::Collinear
-                        && !self.coincident(id, k)
-                        && !(rounded && e.near(p, ROUNDING)))
-                {
+                if p.y < e.bot.y || p.y > e.top.y || !e.maybe_near(p, 1e-9) {
+                    break;
+                }
+                let (offset, scale) = e.offset_and_scale(p);
+                // Within rounding of a rounded point first: it spares the exact test, which on a
+                // point that close to the line mostly takes the slow, adaptive path.
+                let (near, within_rounding) = (offset <= 1e-9 * scale, rounded && offset <= ROUNDING * scale);
+                if !near || (!within_rounding && e.side_of(p) != Orientation::Collinear && !self.coincident(id, k)) {
                     break;
                 }
                 if e.outrec != NONE && p != e.bot && p != e.top {
