@@ -62,7 +62,7 @@
 //!   alone, as its union under non-zero (the region the oracle reads from it), at most
 //!   `repair::MAX_PASSES` times. Known limit: a larger output broken that way between rings that
 //!   share no point is not found, nor are two edges overlapping with no end in common where the
-//!   full check does not run (`fuzz/known-issues/vatti-self-overlap/`); the region is right.
+//!   full check does not run (five inputs in `fuzz/known-issues/vatti-*/`); the region is right.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
