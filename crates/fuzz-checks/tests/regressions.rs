@@ -229,11 +229,11 @@ fn vatti_xor_needing_five_repair_sweeps_at_5e5() {
 
 /// Known issues, not fixed, found by a 10-minute run of the `vatti` target after the fixes above:
 /// `fuzz/known-issues/vatti-self-overlap/` holds 2 clips of rings with vertices on y = x near
-/// 1e141 whose union has a ring running along part of that line twice (the first fails the same
-/// way before the fixes; the clean-up splits only horizontal edges at the vertices inside them,
+/// 1e141 whose union has a ring running along part of that line twice (the clean-up splits only horizontal edges at the vertices inside them,
 /// and these outputs are far from the full check's gate); `fuzz/known-issues/vatti-same-way/`
 /// holds 3 whose rings still run the same way along part of an edge (at 1e15, near (5e5, 4e6) and
-/// near 1e-7) after 16 repair sweeps too; not yet diagnosed. The regions are right (the next test).
+/// near 1e-7) after 16 repair sweeps too; not yet diagnosed. All 5 fail the same way before the
+/// fixes above. The regions are right (the next test).
 #[test]
 #[ignore = "vatti: rings overlapping along part of a non-horizontal edge (issue 15, known issues)"]
 fn vatti_known_issues_self_overlap_and_same_way() {
