@@ -48,8 +48,9 @@ pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> Clean
 }
 
 /// Rebuilds the touched rings (horizontal edges split at the vertices inside them) into simple
-/// rings, pushed onto `out` (after the untouched ones). True when two of their edges run the
-/// same way between two points, or a clockwise one is held by no other ring of `out`.
+/// rings, pushed onto `out` (after the untouched ones). True when two of their edges leave or
+/// arrive at one point in the same direction, or a clockwise one is held by no other ring of
+/// `out`.
 fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
@@ -70,14 +71,16 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
     // The directed edges between them.
     let mut edges: Vec<(u32, u32)> = Vec::with_capacity(visits.len());
     let mut first = 0;
-    for &end in &ring_ends {
-        for k in first..end {
-            let (from, to) = (visits[k], visits[if k + 1 == end { first } else { k + 1 }]);
+    for end in &mut ring_ends {
+        for k in first..*end {
+            let (from, to) = (visits[k], visits[if k + 1 == *end { first } else { k + 1 }]);
             if from != to {
                 edges.push((from, to));
             }
         }
-        first = end;
+        first = *end;
+        // From here on, where the ring's edges end in `edges`.
+        *end = edges.len();
     }
     drop(visits);
     // Edges by start point (compressed rows, in edge order).
@@ -85,7 +88,12 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
     for &(a, _) in &edges {
         row[a as usize + 1] += 1;
     }
+    // Points left by more than one edge, found while the counts are at hand.
+    let mut shared: Vec<u32> = Vec::with_capacity(pts.len() / 2);
     for v in 0..pts.len() {
+        if row[v + 1] > 1 {
+            shared.push(v as u32);
+        }
         row[v + 1] += row[v];
     }
     let mut outgoing = vec![0u32; edges.len()];
@@ -95,7 +103,7 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>) -> bool {
         fill[a as usize] += 1;
     }
     drop(fill);
-    let same_way_edges = has_same_way_edges(&row, &outgoing, &edges);
+    let same_way_edges = has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends);
     // Opposite edges cancel in pairs (they bound nothing): each edge from the lower id, in edge
     // order, with the first edge back not yet cancelled. Cancelled edges count as used.
     let mut used = vec![false; edges.len()];
@@ -166,19 +174,60 @@ fn held(rings: &[Ring], hole: usize) -> bool {
     false
 }
 
-/// True when two edges run from one point to the same other point. `outgoing[row[v]..row[v + 1]]`
-/// are the edges leaving point `v`; most points have one. Kept out of line: it is cheap and
-/// `rebuild`'s walk is the hot part.
+/// True when two edges leave one point, or arrive at one point, in the same direction: they
+/// overlap along the shorter one, running the same way (two rings' insides overlap there, or a
+/// hole pokes out of its outer). Ends are compared exactly, so this also catches overlaps of
+/// edges that are not horizontal, which the clean-up does not split. `shared` are the points
+/// left by two edges or more, `outgoing[row[v]..row[v + 1]]` the edges leaving point `v`, and
+/// `ring_ends[r]` where ring `r`'s edges end in `edges`: an edge is arrived at by the one before
+/// it in its ring. Kept out of line: `rebuild`'s walk is the hot part.
 #[inline(never)]
-fn has_same_way_edges(row: &[u32], outgoing: &[u32], edges: &[(u32, u32)]) -> bool {
-    row.windows(2).any(|r| {
-        let leaving = &outgoing[r[0] as usize..r[1] as usize];
-        leaving.len() > 1
-            && leaving
-                .iter()
-                .enumerate()
-                .any(|(k, &i)| leaving[k + 1..].iter().any(|&j| edges[j as usize].1 == edges[i as usize].1))
+fn has_same_way_edges(
+    pts: &[Point],
+    shared: &[u32],
+    row: &[u32],
+    outgoing: &[u32],
+    edges: &[(u32, u32)],
+    ring_ends: &[usize],
+) -> bool {
+    // Which edges start a ring, one bit each, and one past the last edge.
+    let mut ring_start = vec![0u64; edges.len() / 64 + 1];
+    let mut first = 0;
+    for &end in ring_ends {
+        if end > first {
+            ring_start[first / 64] |= 1 << (first % 64);
+        }
+        first = end;
+    }
+    ring_start[edges.len() / 64] |= 1 << (edges.len() % 64);
+    let arriving_from = |i: usize| {
+        if ring_start[i / 64] & (1 << (i % 64)) == 0 {
+            return edges[i - 1].0;
+        }
+        // A ring's first edge is arrived at by its last: the edge before the next ring's start.
+        let (mut word, mut bits, mut at) = (i / 64, ring_start[i / 64] >> (i % 64) >> 1, i + 1);
+        while bits == 0 {
+            word += 1;
+            (bits, at) = (ring_start[word], word * 64);
+        }
+        edges[at + bits.trailing_zeros() as usize - 1].0
+    };
+    shared.iter().any(|&v| {
+        let leaving = &outgoing[row[v as usize] as usize..row[v as usize + 1] as usize];
+        let pv = pts[v as usize];
+        leaving.iter().enumerate().any(|(k, &i)| {
+            let (to_i, from_i) = (edges[i as usize].1, arriving_from(i as usize));
+            leaving[k + 1..].iter().any(|&j| {
+                same_way(pts, pv, to_i, edges[j as usize].1) || same_way(pts, pv, from_i, arriving_from(j as usize))
+            })
+        })
     })
+}
+
+/// True when points `a` and `b` (ids in `pts`, neither at `v`) lie on one ray from `v`. Exact.
+#[inline(always)]
+fn same_way(pts: &[Point], v: Point, a: u32, b: u32) -> bool {
+    a == b || sector(v, pts[a as usize], pts[b as usize]) == 3
 }
 
 /// Of the edges leaving `v`, the first met turning clockwise from the direction back to `u`.
@@ -311,6 +360,27 @@ mod tests {
         let left = ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
         let right = ring(&[(1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0)]);
         let clean = super::conventional_rings(&RawRings::from_rings(vec![left, right]), &mut Touches::default());
+        assert!(!clean.broken_form);
+    }
+
+    #[test]
+    fn rings_leaving_or_arriving_at_a_point_the_same_way_are_reported() {
+        // A square and a triangle inside it, both leaving (2,0) upwards, to different ends:
+        // the square's (2,2) and the triangle's (2,1). Vertical edges are not split.
+        let square = ring(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)]);
+        let leaving = ring(&[(2.0, 0.0), (2.0, 1.0), (1.5, 0.5)]);
+        let clean =
+            super::conventional_rings(&RawRings::from_rings(vec![square.clone(), leaving]), &mut Touches::default());
+        assert!(clean.broken_form);
+        // A clockwise triangle arriving at (2,2) along the square's right edge from (2,1): a
+        // hole poking out of its outer.
+        let arriving = ring(&[(2.0, 1.0), (2.0, 2.0), (2.5, 1.5)]);
+        let clean =
+            super::conventional_rings(&RawRings::from_rings(vec![square.clone(), arriving]), &mut Touches::default());
+        assert!(clean.broken_form);
+        // Touching at (0,0) in other directions is a valid form.
+        let beside = ring(&[(0.0, 0.0), (-1.0, 0.0), (-1.0, -1.0)]);
+        let clean = super::conventional_rings(&RawRings::from_rings(vec![square, beside]), &mut Touches::default());
         assert!(!clean.broken_form);
     }
 

@@ -86,14 +86,14 @@
 //!   nearly parallel edges running to points 1e50 and more times farther away, rounded crossings
 //!   can leave two rings running the same way along an edge (their insides overlapping), a
 //!   clockwise ring that no ring holds, or rings crossing or nested against their orientation.
-//!   The clean-up reports the first two among the rings it rebuilds; outputs of at most
+//!   The clean-up reports the first two among the rings it rebuilds (for the first, two edges
+//!   leaving or arriving at one point in the same direction); outputs of at most
 //!   `form_check::MAX_EDGES` edges with an edge within 4096 ulps of the inputs' largest
 //!   coordinate also get a full exact check of their form. A broken output is swept once more,
 //!   alone, as its union under non-zero (the region the oracle reads from it), at most
 //!   `repair::MAX_PASSES` times. Known limit: a larger output broken that way between rings that
-//!   share no point is not found, nor are rings running the same way along part of an edge that
-//!   is not horizontal where the full check does not run (three such inputs are kept in
-//!   `fuzz/known-issues/vatti-same-way/`); the region is right either way.
+//!   share no point is not found, nor are two edges overlapping with no end in common where the
+//!   full check does not run (five inputs in `fuzz/known-issues/vatti-*/`); the region is right.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.

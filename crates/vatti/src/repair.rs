@@ -11,8 +11,10 @@ use clip_core::{ClipError, Polygons, Ring};
 
 use crate::cleanup::CleanRings;
 
-/// Sweeps of the output at most: each one only runs when the last left overlapping rings.
-pub(crate) const MAX_PASSES: usize = 4;
+/// Sweeps of the output at most: each one only runs when the last left overlapping rings. Where
+/// dozens of rings lie an ulp or two apart each sweep can round new crossings among them, and one
+/// fuzz input's xor needed 5 sweeps; 8 leaves room above that.
+pub(crate) const MAX_PASSES: usize = 8;
 
 /// The clean rings, joined by `union_positive` (the output's union with nothing under the
 /// positive rule) while two of them run the same way along an edge. A sweep that refuses the
