@@ -24,9 +24,23 @@ use crate::results_files::bench::MemoryRecord;
 /// both rules, so it does the same operation as the others.
 const FILL: FillRule = FillRule::EvenOdd;
 
-/// A clipper whose time, extrapolated linearly from its last size, exceeds this many caps is not
-/// started at the next size: one such call could take minutes. Below that it runs, once if over the cap.
+/// A clipper whose time, extrapolated from its last sizes ([`predicted_seconds`]), exceeds this
+/// many caps is not started at the next size: one such call could take minutes. Below that it
+/// runs, once if over the cap.
 const PREDICTED_CAP_FACTOR: f64 = 15.0;
+
+/// One call's time at `size` extrapolated from the last two sizes timed (`earlier`, `last`): with
+/// the growth exponent they show, never below linear, so a clipper quadratic in its input (an
+/// O(n·m) window clipper on a large window) is not predicted to grow linearly and started on a
+/// call of many minutes. With one size timed, linear.
+fn predicted_seconds(earlier: Option<(usize, Duration)>, last: (usize, Duration), size: usize) -> f64 {
+    let (last_size, last_time) = last;
+    let exponent = earlier
+        .filter(|&(n, t)| n < last_size && t > Duration::ZERO && last_time > t)
+        .map(|(n, t)| (last_time.as_secs_f64() / t.as_secs_f64()).ln() / (last_size as f64 / n as f64).ln())
+        .map_or(1.0, |e| e.max(1.0));
+    last_time.as_secs_f64() * (size as f64 / last_size as f64).powf(exponent)
+}
 
 /// How much to measure.
 #[derive(Clone, Copy, Debug)]
@@ -67,6 +81,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
         let mut stopped: BTreeMap<&'static str, Stopped> = BTreeMap::new();
         // Last measured single-call time and size per clipper, to predict the next size.
         let mut last: BTreeMap<&'static str, (usize, Duration)> = BTreeMap::new();
+        let mut earlier: BTreeMap<&'static str, (usize, Duration)> = BTreeMap::new();
         for &size in &group.sizes {
             let cases: Vec<PolygonCase> = group
                 .indices
@@ -98,7 +113,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                         continue;
                     }
                     if let Some(&(prev_size, prev)) = last.get(c.name()) {
-                        let predicted = prev.as_secs_f64() * size as f64 / prev_size as f64;
+                        let predicted = predicted_seconds(earlier.get(c.name()).copied(), (prev_size, prev), size);
                         if prev_size < size && predicted > PREDICTED_CAP_FACTOR * settings.cap_seconds {
                             let reason = format!(
                                 "predicted {predicted:.1} s per call from {prev:.2?} at {prev_size} edges, over {PREDICTED_CAP_FACTOR}x the {} s cap",
@@ -110,7 +125,12 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                     }
                     match calibrate(c, &cases, op, fill) {
                         Ok(single) => {
-                            last.insert(c.name(), (size, single));
+                            // Ops of one size share a size: only a smaller one shows growth.
+                            if let Some(previous) = last.insert(c.name(), (size, single))
+                                && previous.0 < size
+                            {
+                                earlier.insert(c.name(), previous);
+                            }
                             let over = single.as_secs_f64() > settings.cap_seconds;
                             timed_here.push((entry, fill, single, over));
                             if over {
@@ -246,4 +266,27 @@ pub fn own_time_name(clipper: &str) -> String {
 fn read_alike(case: &PolygonCase) -> bool {
     let alike = |p: &Polygons| same_region((p, FillRule::EvenOdd), (p, FillRule::NonZero), 0.0).is_ok();
     alike(&case.subject) && alike(&case.clip)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ms(t: u64) -> Duration {
+        Duration::from_millis(t)
+    }
+
+    #[test]
+    fn prediction_follows_the_growth_it_has_seen_and_never_falls_below_linear() {
+        // One size timed: linear.
+        assert_eq!(predicted_seconds(None, (1000, ms(100)), 10_000), 1.0);
+        // Quadratic growth from 10^3 to 10^4 predicts 100x for the next tenfold step.
+        let quadratic = predicted_seconds(Some((1000, ms(5))), (10_000, ms(500)), 100_000);
+        assert!((quadratic - 50.0).abs() < 1e-6, "{quadratic}");
+        // Sub-linear growth (fixed costs) still predicts linear.
+        assert_eq!(predicted_seconds(Some((1000, ms(80))), (10_000, ms(100)), 100_000), 1.0);
+        // A time that fell, or an earlier size that is not smaller, says nothing of growth.
+        assert_eq!(predicted_seconds(Some((1000, ms(200))), (10_000, ms(100)), 100_000), 1.0);
+        assert_eq!(predicted_seconds(Some((10_000, ms(5))), (10_000, ms(100)), 100_000), 1.0);
+    }
 }
