@@ -7,7 +7,9 @@
 //! outputs of at most [`MAX_EDGES`] edges this check looks for exactly those, pair by pair, so
 //! that `repair` can join them; larger outputs are not checked (a known limit).
 
-use clip_core::{Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection};
+use clip_core::{Point, Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection};
+
+use crate::raw_rings::RawRings;
 
 /// The most output edges checked: the pair test is quadratic in the worst case.
 pub(crate) const MAX_EDGES: usize = 1024;
@@ -30,9 +32,17 @@ pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[
 /// Whether an output edge is shorter than [`ULPS_NEAR_ROUNDING`] ulps of the inputs' largest
 /// coordinate. Plain loops: this runs on every small clip.
 fn near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
+    reaches_rounding(subject, clip, rings.iter().map(|r| r.points.as_slice()))
+}
+
+/// [`near_rounding`] of the sweep's raw rings, before the clean-up (the same points).
+pub(crate) fn raw_near_rounding(subject: &Polygons, clip: &Polygons, raw: &RawRings) -> bool {
+    reaches_rounding(subject, clip, (0..raw.len()).map(|i| raw.ring(i)))
+}
+
+fn reaches_rounding<'a>(subject: &Polygons, clip: &Polygons, rings: impl Iterator<Item = &'a [Point]>) -> bool {
     let mut shortest2 = f64::INFINITY;
-    for ring in rings {
-        let p = &ring.points;
+    for p in rings.filter(|p| !p.is_empty()) {
         let mut a = p[p.len() - 1];
         for &b in p {
             let (dx, dy) = (b.x - a.x, b.y - a.y);

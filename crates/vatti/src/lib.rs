@@ -217,7 +217,10 @@ impl Vatti {
     /// The sweep's conventional rings of valid operands, repaired where rounding broke their form.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Polygons {
         let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule| {
-            Vatti::sweep(a, b, op, fill, false, |rings, touches, _| cleanup::conventional_rings(rings, touches))
+            Vatti::sweep(a, b, op, fill, false, |rings, touches, _| {
+                let check_holes = form_check::raw_near_rounding(a, b, rings);
+                cleanup::conventional_rings_checked(rings, touches, check_holes)
+            })
         };
         let mut rings = clean(subject, clip, op, fill);
         // The full check only judges the sweep's own output: the repair's sweeps are judged by the
