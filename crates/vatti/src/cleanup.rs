@@ -33,17 +33,21 @@ pub(crate) struct CleanRings {
 /// are already simple and lose only collinear vertices. `touches` is a reused work buffer.
 #[cfg(test)]
 pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> CleanRings {
-    conventional_rings_checked(raw, touches, true)
+    conventional_rings_checked(raw, touches, || true)
 }
 
-/// Clockwise rings times rings up to which the held test runs whatever `check_holes` says.
+/// Clockwise rings times rings up to which the held test runs whatever `near_rounding` says.
 const HELD_TEST_BUDGET: usize = 1 << 16;
 
-/// [`conventional_rings`], testing whether rebuilt clockwise rings are held when `check_holes`
-/// (the output is near rounding) or the test is cheap ([`HELD_TEST_BUDGET`]): it is quadratic
+/// [`conventional_rings`], testing whether rebuilt clockwise rings are held when
+/// `near_rounding()` (asked only then: it scans the inputs) or the test is cheap ([`HELD_TEST_BUDGET`]): it is quadratic
 /// in the rings, and outputs with thousands of holes far above rounding (scribble unions) took
 /// 30 times as long with it.
-pub(crate) fn conventional_rings_checked(raw: &RawRings, touches: &mut Touches, check_holes: bool) -> CleanRings {
+pub(crate) fn conventional_rings_checked(
+    raw: &RawRings,
+    touches: &mut Touches,
+    near_rounding: impl FnOnce() -> bool,
+) -> CleanRings {
     touches.find(raw);
     let touches = &*touches;
     let mut out = Vec::with_capacity(raw.len());
@@ -55,7 +59,7 @@ pub(crate) fn conventional_rings_checked(raw: &RawRings, touches: &mut Touches, 
             }
         }
     }
-    let broken_form = touches.touched.contains(&true) && rebuild(raw, touches, &mut out, check_holes);
+    let broken_form = touches.touched.contains(&true) && rebuild(raw, touches, &mut out, near_rounding);
     CleanRings { rings: out, broken_form }
 }
 
@@ -63,7 +67,7 @@ pub(crate) fn conventional_rings_checked(raw: &RawRings, touches: &mut Touches, 
 /// rings, pushed onto `out` (after the untouched ones). True when two of their edges leave or
 /// arrive at one point in the same direction, or a clockwise one is held by no other ring of
 /// `out`.
-fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>, check_holes: bool) -> bool {
+fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>, near_rounding: impl FnOnce() -> bool) -> bool {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let mut visits: Vec<u32> = Vec::new();
@@ -163,7 +167,7 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>, check_holes
             }
         });
     }
-    let check_holes = check_holes || clockwise.len() * out.len() <= HELD_TEST_BUDGET;
+    let check_holes = !clockwise.is_empty() && (clockwise.len() * out.len() <= HELD_TEST_BUDGET || near_rounding());
     same_way_edges || (check_holes && clockwise.iter().any(|&h| !held(out, h)))
 }
 

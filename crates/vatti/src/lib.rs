@@ -218,8 +218,7 @@ impl Vatti {
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Polygons {
         let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule| {
             Vatti::sweep(a, b, op, fill, false, |rings, touches, _| {
-                let check_holes = form_check::raw_near_rounding(a, b, rings);
-                cleanup::conventional_rings_checked(rings, touches, check_holes)
+                cleanup::conventional_rings_checked(rings, touches, || form_check::raw_near_rounding(a, b, rings))
             })
         };
         let mut rings = clean(subject, clip, op, fill);
