@@ -134,6 +134,12 @@ pub enum ClipError {
     },
 }
 
+/// True when `v` is finite and in the valid range (NaN fails `<=`), without branches.
+#[inline]
+fn in_range(v: f64) -> bool {
+    (v.abs() <= MAX_COORDINATE) & ((v == 0.0) | (v.abs() >= MIN_COORDINATE))
+}
+
 fn check_point(p: Point, operand: Operand, part: usize, vertex: usize) -> Result<(), ClipError> {
     if !p.is_finite() {
         return Err(ClipError::NonFinite { operand, part, vertex, x: p.x, y: p.y });
@@ -148,8 +154,13 @@ fn check_point(p: Point, operand: Operand, part: usize, vertex: usize) -> Result
 
 /// Checks one ring: finite, in range, at least three distinct points.
 pub fn validate_ring(ring: &Ring, operand: Operand, part: usize) -> Result<(), ClipError> {
-    for (vertex, &p) in ring.points.iter().enumerate() {
-        check_point(p, operand, part, vertex)?;
+    // One branch-free pass for the common case, as in `validate_segments`; a ring that fails it
+    // is walked again to name the first bad vertex.
+    let all_good = ring.points.iter().fold(true, |ok, p| ok & in_range(p.x) & in_range(p.y));
+    if !all_good {
+        for (vertex, &p) in ring.points.iter().enumerate() {
+            check_point(p, operand, part, vertex)?;
+        }
     }
     let distinct = ring.distinct_points_up_to(3);
     if distinct < 3 {
@@ -166,9 +177,8 @@ pub fn validate_polygons(polygons: &Polygons, operand: Operand) -> Result<(), Cl
 /// Checks a batch of segments: every endpoint finite and in range. Zero-length segments are
 /// valid (they clip to nothing).
 pub fn validate_segments(segments: &[Segment]) -> Result<(), ClipError> {
-    // The common case in one branch-free pass the compiler vectorises (NaN fails `<=`); only a
-    // batch that fails it is walked again to name the first bad endpoint.
-    let in_range = |v: f64| (v.abs() <= MAX_COORDINATE) & ((v == 0.0) | (v.abs() >= MIN_COORDINATE));
+    // The common case in one branch-free pass the compiler vectorises; only a batch that fails
+    // it is walked again to name the first bad endpoint.
     let all_good =
         segments.iter().fold(true, |ok, s| ok & in_range(s.a.x) & in_range(s.a.y) & in_range(s.b.x) & in_range(s.b.y));
     if all_good {

@@ -59,6 +59,22 @@ impl Ring {
     /// Number of distinct vertices, counted only up to `limit`: a scan that stops once `limit`
     /// are found, where [`Ring::distinct_points`] sorts (validation asks for at least three).
     pub fn distinct_points_up_to(&self, limit: usize) -> usize {
+        // Validation calls this for every ring of every clip: small limits count on the stack.
+        const ON_STACK: usize = 8;
+        if limit <= ON_STACK {
+            let mut seen = [Point::new(0.0, 0.0); ON_STACK];
+            let mut n = 0;
+            for &p in &self.points {
+                if n >= limit {
+                    break;
+                }
+                if !seen[..n].contains(&p) {
+                    seen[n] = p;
+                    n += 1;
+                }
+            }
+            return n;
+        }
         let mut seen: Vec<Point> = Vec::with_capacity(limit);
         for &p in &self.points {
             if seen.len() >= limit {

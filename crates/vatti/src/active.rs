@@ -275,10 +275,13 @@ impl ActiveEdges {
 
     /// Removes the two edges at `pos` and `pos + 1`.
     pub(crate) fn remove_pair(&mut self, pos: usize) {
-        for id in self.order.drain(pos..pos + 2) {
+        for id in [self.order[pos], self.order[pos + 1]] {
             self.edges[id as usize].alive = false;
             self.ended.push(id);
         }
+        let n = self.order.len();
+        self.order.copy_within(pos + 2..n, pos);
+        self.order.truncate(n - 2);
         self.renumber(pos);
     }
 

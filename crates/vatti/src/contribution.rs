@@ -34,15 +34,28 @@ use clip_core::{BoolOp, FillRule};
 /// The operation and fill rule: which winding pairs are in the result.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Rules {
-    pub op: BoolOp,
-    pub fill: FillRule,
+    fill: FillRule,
+    /// `op` as a truth table: bit `a + 2b` is `op.apply(a, b)`, so every crossing's four
+    /// membership tests do not match on the operation.
+    op_table: u8,
 }
 
 impl Rules {
+    pub(crate) fn new(op: BoolOp, fill: FillRule) -> Rules {
+        let mut op_table = 0;
+        for (a, b) in [(false, false), (true, false), (false, true), (true, true)] {
+            if op.apply(a, b) {
+                op_table |= 1 << (a as u8 | (b as u8) << 1);
+            }
+        }
+        Rules { fill, op_table }
+    }
+
     /// True when a region with winding numbers `w` (subject, clip) is in the result.
     #[inline]
     pub(crate) fn inside(&self, w: [i32; 2]) -> bool {
-        self.op.apply(self.fill.is_inside(w[0]), self.fill.is_inside(w[1]))
+        let (a, b) = (self.fill.is_inside(w[0]), self.fill.is_inside(w[1]));
+        (self.op_table >> (a as u8 | (b as u8) << 1)) & 1 != 0
     }
 }
 
@@ -94,7 +107,7 @@ mod tests {
     /// Classifies the crossing of `a` then `b` (each `(operand, winding step)`) when the region
     /// left of both winds `wl`, for even-odd intersection.
     fn intersection_crossing(wl: [i32; 2], a: (usize, i32), b: (usize, i32)) -> Crossing {
-        let r = Rules { op: BoolOp::Intersection, fill: FillRule::EvenOdd };
+        let r = Rules::new(BoolOp::Intersection, FillRule::EvenOdd);
         let mut mid = wl;
         mid[a.0] += a.1;
         let mut right = mid;
@@ -125,7 +138,7 @@ mod tests {
     // Xor under even-odd: every crossing of two edges is a pinch or a hand-over, never a start or end.
     #[test]
     fn xor_never_starts_or_ends_at_crossings() {
-        let r = Rules { op: BoolOp::Xor, fill: FillRule::EvenOdd };
+        let r = Rules::new(BoolOp::Xor, FillRule::EvenOdd);
         for wl in [[0, 0], [1, 0], [0, 1], [1, 1]] {
             for a in [(0, 1), (0, -1), (1, 1), (1, -1)] {
                 for b in [(0, 1), (0, -1), (1, 1), (1, -1)] {

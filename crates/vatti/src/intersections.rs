@@ -116,12 +116,20 @@ impl Sweep<'_> {
     /// triangle whose two bounds leave its lowest vertex 1e-16 apart in slope was swapped by a
     /// rounded x and came out clockwise.) Two edges passing `yt` keep the rounded order: a crossing
     /// within rounding of `yt` is then taken in this beam or the next, at most ulps away.
-    #[inline]
+    #[inline(always)]
     fn left_at_top(&self, i: usize, ti: TopX, k: usize, tk: TopX, yt: f64) -> bool {
         let (xi, xk) = (ti.x, tk.x);
         if (xi - xk).abs() > ROUNDING * ti.magnitude.max(tk.magnitude) {
             return xi < xk;
         }
+        self.left_at_top_near(i, xi, k, xk, yt)
+    }
+
+    /// [`Sweep::left_at_top`] for x values within rounding of each other: rare, so kept out of
+    /// line to leave the comparison loops tight.
+    #[cold]
+    #[inline(never)]
+    fn left_at_top_near(&self, i: usize, xi: f64, k: usize, xk: f64, yt: f64) -> bool {
         let (a, b) = (self.ael.get(self.ael.at(i)), self.ael.get(self.ael.at(k)));
         let left = Orientation::CounterClockwise;
         if a.bot == b.bot {

@@ -250,7 +250,7 @@ impl Vatti {
         let mut scratch = Scratch::take();
         scratch.bounds.rebuild(subject, clip);
         let buffers = std::mem::take(&mut scratch.sweep);
-        let mut sweep = Sweep::new(&scratch.bounds, Rules { op, fill }, trapezoids, buffers);
+        let mut sweep = Sweep::new(&scratch.bounds, Rules::new(op, fill), trapezoids, buffers);
         sweep.run();
         sweep.out.rings_into(&mut scratch.raw);
         let traps = sweep.traps.take().unwrap_or_default();

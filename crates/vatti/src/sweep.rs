@@ -448,8 +448,25 @@ impl<'a> Sweep<'a> {
         self.ael.get_mut(left).outrec = rec;
         self.ael.get_mut(right).outrec = rec;
         let rounded = self.rounded_crossing && !self.is_vertex_of(left, p) && !self.is_vertex_of(right, p);
-        self.node_neighbours(left, p, rounded);
-        self.node_neighbours(right, p, rounded);
+        let (lo, hi) = (self.ael.pos(left).min(self.ael.pos(right)), self.ael.pos(left).max(self.ael.pos(right)));
+        if hi != lo + 1 {
+            self.node_neighbours(left, p, rounded);
+            self.node_neighbours(right, p, rounded);
+            return;
+        }
+        // The pair is adjacent and both pass through `p`: one scan each way beyond the pair does
+        // what a scan from each edge would (each edge's scan passes its partner, which holds `p`
+        // already), with either edge's line for the coincidence test.
+        for k in (0..lo).rev() {
+            if !self.node_neighbour(left, right, k, p, rounded) {
+                break;
+            }
+        }
+        for k in hi + 1..self.ael.len() {
+            if !self.node_neighbour(left, right, k, p, rounded) {
+                break;
+            }
+        }
     }
 
     /// True when edges `a` and `b` lie on one line (exact).
@@ -470,38 +487,52 @@ impl<'a> Sweep<'a> {
     /// within rounding of an edge instead of on it: an input vertex is exact, and far from the
     /// origin the rounding allowance (ulps of the magnitude) spans whole input edges.
     fn node_neighbours(&mut self, id: u32, p: Point, rounded: bool) {
-        for rightwards in [false, true] {
-            let mut pos = self.ael.pos(id);
-            for _ in 0..self.ael.len() {
-                let next = if rightwards { pos + 1 } else { pos.wrapping_sub(1) };
-                if next >= self.ael.len() {
-                    break;
-                }
-                pos = next;
-                let k = self.ael.at(pos);
-                let e = self.ael.get(k);
-                if e.moving {
-                    // A sliding edge sits at the slide's x, not on its own line: look past it.
-                    continue;
-                }
-                // Through p exactly; or on the same line as `id`, or within rounding of p, when p
-                // is a rounded crossing that several edges share (the cheap test first).
-                if p.y < e.bot.y || p.y > e.top.y || !e.maybe_near(p, 1e-9) {
-                    break;
-                }
-                let (offset, scale) = e.offset_and_scale(p);
-                // Within rounding of a rounded point first: it spares the exact test, which on a
-                // point that close to the line mostly takes the slow, adaptive path.
-                let (near, within_rounding) = (offset <= 1e-9 * scale, rounded && offset <= ROUNDING * scale);
-                if !near || (!within_rounding && e.side_of(p) != Orientation::Collinear && !self.coincident(id, k)) {
-                    break;
-                }
-                if e.outrec != NONE && p != e.bot && p != e.top {
-                    let left = self.is_left(k);
-                    self.out.add(e.outrec, left, p);
-                }
+        let pos = self.ael.pos(id);
+        for k in (0..pos).rev() {
+            if !self.node_neighbour(id, id, k, p, rounded) {
+                break;
             }
         }
+        for k in pos + 1..self.ael.len() {
+            if !self.node_neighbour(id, id, k, p, rounded) {
+                break;
+            }
+        }
+    }
+
+    /// [`Sweep::node_neighbours`] for the edge at active position `pos`: gives it `p` if it
+    /// passes through it (lying on the line of `id` or `also` counts); false when the search
+    /// should stop there.
+    #[inline(always)]
+    fn node_neighbour(&mut self, id: u32, also: u32, pos: usize, p: Point, rounded: bool) -> bool {
+        let k = self.ael.at(pos);
+        let e = self.ael.get(k);
+        if e.moving {
+            // A sliding edge sits at the slide's x, not on its own line: look past it.
+            return true;
+        }
+        // Through p exactly; or on the same line as `id`, or within rounding of p, when p is a
+        // rounded crossing that several edges share (the cheap test first).
+        if p.y < e.bot.y || p.y > e.top.y || !e.maybe_near(p, 1e-9) {
+            return false;
+        }
+        let (offset, scale) = e.offset_and_scale(p);
+        // Within rounding of a rounded point first: it spares the exact test, which on a point
+        // that close to the line mostly takes the slow, adaptive path.
+        let (near, within_rounding) = (offset <= 1e-9 * scale, rounded && offset <= ROUNDING * scale);
+        if !near
+            || (!within_rounding
+                && e.side_of(p) != Orientation::Collinear
+                && !self.coincident(id, k)
+                && (also == id || !self.coincident(also, k)))
+        {
+            return false;
+        }
+        if e.outrec != NONE && p != e.bot && p != e.top {
+            let left = self.is_left(k);
+            self.out.add(e.outrec, left, p);
+        }
+        true
     }
 
     /// True when `id` feeds the left end of its output polygon.
