@@ -75,10 +75,13 @@ impl Bounds {
             return;
         }
         let base = self.vertices.len() as u32;
-        for (i, &pt) in points.iter().enumerate() {
-            let i = i as u32;
-            self.vertices.push(Vertex { pt, next: base + (i + 1) % n, prev: base + (i + n - 1) % n });
-        }
+        let last = base + n - 1;
+        // Links without a division per vertex: only the ends wrap.
+        self.vertices.extend(points.iter().zip(base..).map(|(&pt, v)| Vertex {
+            pt,
+            next: if v == last { base } else { v + 1 },
+            prev: if v == base { last } else { v - 1 },
+        }));
         for v in base..base + n {
             let here = self.pt(v);
             let before = self.pt(self.vertices[v as usize].prev);

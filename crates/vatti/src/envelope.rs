@@ -215,7 +215,7 @@ pub(crate) fn cut(polygons: &Polygons, b: Rect, blocks: Option<&[EdgeBlocks]>) -
     if blocks.is_none() && !polygons.rings.iter().any(|r| env.misses_some_edge(&r.points)) {
         return None;
     }
-    let mut stretches = Vec::new();
+    let mut stretches = Vec::with_capacity(polygons.rings.iter().map(|r| r.points.len()).sum());
     let mut ends = Vec::with_capacity(polygons.rings.len());
     for (k, ring) in polygons.rings.iter().enumerate() {
         match blocks {
@@ -235,7 +235,7 @@ pub(crate) fn cut(polygons: &Polygons, b: Rect, blocks: Option<&[EdgeBlocks]>) -
             rings.push(ring.clone());
             continue;
         }
-        let mut pts = Vec::new();
+        let mut pts = Vec::with_capacity(ring.points.len() + 4);
         wound += env.rebuild_ring(&ring.points, own, &mut pts, &mut path);
         if !pts.is_empty() {
             rings.push(Ring { points: pts });

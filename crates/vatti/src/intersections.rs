@@ -161,7 +161,10 @@ impl Sweep<'_> {
             let steeper = if (d1.x / d1.y).abs() <= (d2.x / d2.y).abs() { ea } else { eb };
             p = Point::new(steeper.x_at(y), y);
         }
-        let xs = [ea.x_at(yb), ea.x_at_cached(yt), eb.x_at(yb), eb.x_at_cached(yt)];
+        // At the beam's bottom every active edge's `curr_x` is its `x_at(yb)`, computed when the
+        // scanline was processed: taking it spares two divisions per crossing.
+        debug_assert!(ea.curr_x == ea.x_at(yb) && eb.curr_x == eb.x_at(yb));
+        let xs = [ea.curr_x, ea.x_at_cached(yt), eb.curr_x, eb.x_at_cached(yt)];
         let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y)
