@@ -247,17 +247,16 @@ impl Vatti {
         trapezoids: bool,
         finish: impl FnOnce(&RawRings, &mut Touches, Vec<Trapezoid>) -> T,
     ) -> T {
-        let mut scratch = Scratch::take();
-        scratch.bounds.rebuild(subject, clip);
-        let buffers = std::mem::take(&mut scratch.sweep);
-        let mut sweep = Sweep::new(&scratch.bounds, Rules::new(op, fill), trapezoids, buffers);
-        sweep.run();
-        sweep.out.rings_into(&mut scratch.raw);
-        let traps = sweep.traps.take().unwrap_or_default();
-        scratch.sweep = sweep.into_buffers();
-        let result = finish(&scratch.raw, &mut scratch.touches, traps);
-        scratch.give_back();
-        result
+        Scratch::with(|scratch| {
+            scratch.bounds.rebuild(subject, clip);
+            let buffers = std::mem::take(&mut scratch.sweep);
+            let mut sweep = Sweep::new(&scratch.bounds, Rules::new(op, fill), trapezoids, buffers);
+            sweep.run();
+            sweep.out.rings_into(&mut scratch.raw);
+            let traps = sweep.traps.take().unwrap_or_default();
+            scratch.sweep = sweep.into_buffers();
+            finish(&scratch.raw, &mut scratch.touches, traps)
+        })
     }
 }
 

@@ -1,6 +1,6 @@
 //! Buffers that one thread's clips reuse, so a small clip does not allocate its tables anew.
 
-use std::cell::Cell;
+use std::cell::RefCell;
 use std::mem::size_of;
 
 use clip_core::Point;
@@ -15,7 +15,7 @@ use crate::touches::Touches;
 const KEEP_AT_MOST: usize = 256 * 1024;
 
 thread_local! {
-    static SCRATCH: Cell<Option<Scratch>> = const { Cell::new(None) };
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
 }
 
 /// The input bounds, the sweep's tables, the raw output rings and the clean-up's touch search
@@ -29,18 +29,25 @@ pub(crate) struct Scratch {
 }
 
 impl Scratch {
-    /// This thread's kept buffers, or new empty ones (also while another clip on this thread
-    /// holds them, or while the thread is being torn down).
-    pub(crate) fn take() -> Scratch {
-        SCRATCH.try_with(Cell::take).ok().flatten().unwrap_or_default()
-    }
-
-    /// Keeps the buffers for this thread's next clip, unless they are large.
-    pub(crate) fn give_back(self) {
-        if self.held_bytes() <= KEEP_AT_MOST {
-            // During thread teardown there is nowhere to keep them: they are dropped.
-            let _ = SCRATCH.try_with(|s| s.set(Some(self)));
+    /// Runs `f` on this thread's kept buffers, borrowed in place (they are several hundred bytes
+    /// of vector headers, which a small clip should not copy in and out), or on new empty ones
+    /// while another clip on this thread holds them or the thread is being torn down. Large
+    /// buffers are freed afterwards rather than kept.
+    pub(crate) fn with<T>(f: impl FnOnce(&mut Scratch) -> T) -> T {
+        // During thread teardown there is nothing to borrow (and `with` below would panic).
+        if SCRATCH.try_with(|_| ()).is_err() {
+            return f(&mut Scratch::default());
         }
+        SCRATCH.with(|cell| match cell.try_borrow_mut() {
+            Ok(mut scratch) => {
+                let result = f(&mut scratch);
+                if scratch.held_bytes() > KEEP_AT_MOST {
+                    *scratch = Scratch::default();
+                }
+                result
+            }
+            Err(_) => f(&mut Scratch::default()),
+        })
     }
 
     fn held_bytes(&self) -> usize {
