@@ -486,6 +486,7 @@ impl<'a> Sweep<'a> {
     /// end points and cancel in the clean-up. Only a `rounded` point (a computed crossing) may be
     /// within rounding of an edge instead of on it: an input vertex is exact, and far from the
     /// origin the rounding allowance (ulps of the magnitude) spans whole input edges.
+    #[inline]
     fn node_neighbours(&mut self, id: u32, p: Point, rounded: bool) {
         let pos = self.ael.pos(id);
         for k in (0..pos).rev() {
