@@ -424,8 +424,7 @@ impl<'a> Sweep<'a> {
                     self.end_output(a, b, p);
                     if b_is_left { self.start_output(b, a, p) } else { self.start_output(a, b, p) }
                 } else {
-                    self.add_point(a, p);
-                    self.add_point(b, p);
+                    self.add_point_both(a, b, p);
                     self.swap_outputs(a, b);
                 }
             }
@@ -448,22 +447,28 @@ impl<'a> Sweep<'a> {
         self.ael.get_mut(left).outrec = rec;
         self.ael.get_mut(right).outrec = rec;
         let rounded = self.rounded_crossing && !self.is_vertex_of(left, p) && !self.is_vertex_of(right, p);
-        let (lo, hi) = (self.ael.pos(left).min(self.ael.pos(right)), self.ael.pos(left).max(self.ael.pos(right)));
+        self.node_pair_neighbours(left, right, p, rounded);
+    }
+
+    /// [`Sweep::node_neighbours`] of both `a` and `b`, which hold `p` in their chains already.
+    /// When they are adjacent, one scan each way beyond the pair does what a scan from each edge
+    /// would (each edge's scan passes its partner, which holds `p`), with either edge's line for
+    /// the coincidence test.
+    fn node_pair_neighbours(&mut self, a: u32, b: u32, p: Point, rounded: bool) {
+        let (pa, pb) = (self.ael.pos(a), self.ael.pos(b));
+        let (lo, hi) = (pa.min(pb), pa.max(pb));
         if hi != lo + 1 {
-            self.node_neighbours(left, p, rounded);
-            self.node_neighbours(right, p, rounded);
+            self.node_neighbours(a, p, rounded);
+            self.node_neighbours(b, p, rounded);
             return;
         }
-        // The pair is adjacent and both pass through `p`: one scan each way beyond the pair does
-        // what a scan from each edge would (each edge's scan passes its partner, which holds `p`
-        // already), with either edge's line for the coincidence test.
         for k in (0..lo).rev() {
-            if !self.node_neighbour(left, right, k, p, rounded) {
+            if !self.node_neighbour(a, b, k, p, rounded) {
                 break;
             }
         }
         for k in hi + 1..self.ael.len() {
-            if !self.node_neighbour(left, right, k, p, rounded) {
+            if !self.node_neighbour(a, b, k, p, rounded) {
                 break;
             }
         }
@@ -554,6 +559,23 @@ impl<'a> Sweep<'a> {
         }
     }
 
+    /// [`Sweep::add_point`] to `a` and then to `b`, both contributing, with one neighbour
+    /// search for the pair.
+    fn add_point_both(&mut self, a: u32, b: u32, p: Point) {
+        let (ra, rb) = (self.ael.get(a).outrec, self.ael.get(b).outrec);
+        if ra == NONE || rb == NONE {
+            self.add_point(a, p);
+            self.add_point(b, p);
+            return;
+        }
+        let (a_left, b_left) = (self.is_left(a), self.is_left(b));
+        self.out.add(ra, a_left, p);
+        self.out.add(rb, b_left, p);
+        // Each edge's own search may take rounded matches when `p` is not its vertex.
+        let rounded = self.rounded_crossing && (!self.is_vertex_of(a, p) || !self.is_vertex_of(b, p));
+        self.node_pair_neighbours(a, b, p, rounded);
+    }
+
     /// `to` takes over `from`'s output chain, on the same side.
     fn hand_over(&mut self, from: u32, to: u32) {
         let rec = self.ael.get(from).outrec;
@@ -601,8 +623,7 @@ impl<'a> Sweep<'a> {
             self.add_point(a, p);
             self.out.close(ra);
         } else {
-            self.add_point(a, p);
-            self.add_point(b, p);
+            self.add_point_both(a, b, p);
             // The polygon whose right end is here comes first.
             let (x, y) = if self.is_left(a) { (rb, ra) } else { (ra, rb) };
             self.out.append(x, y);
