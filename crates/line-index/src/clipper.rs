@@ -20,6 +20,13 @@ const SHORT: f64 = 0.25;
 /// walk is cheaper than locating the start and walking again.
 const SHORT_FROM_LEAVES: usize = 4;
 
+/// A segment's line function, and one bound over the window's bounding box beyond which its
+/// rounded values have exact signs.
+struct Line {
+    side: LineSide,
+    sign_bound: f64,
+}
+
 /// What the horizontal ray found about a segment's start.
 enum Start {
     /// Not on the boundary: inside (true) or outside the window.
@@ -139,8 +146,9 @@ impl PreparedLineIndex {
             return;
         }
         crossings.clear();
-        let ray = Ray::new(a, b);
+        let ray = Ray::new(a, b, &self.bounds);
         let side = LineSide::new(a, b);
+        let line = Line { side, sign_bound: side.sign_bound(&self.bounds) };
         let frame = LineFrame::new(s);
         // An end strictly outside the bounding box is outside the window, so the crossings on the
         // segment alone give the parity at the other end: only the boxes meeting the segment are
@@ -150,7 +158,7 @@ impl PreparedLineIndex {
         // tells the parity just after it: those segments take the ray.
         let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
         if a_outside | b_outside {
-            let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            let found = self.walk::<COUNT, true, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
             // random in a batch spread over the screen).
@@ -165,7 +173,7 @@ impl PreparedLineIndex {
                 Start::OnBoundary
             };
             if let Start::Inside(inside) = start {
-                let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, true, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
                 // The crossings on the segment toggle the parity from the start's to the end's.
                 if (found + u32::from(inside)) % 2 == 1 {
                     crossings.record(Along::After, 1.0);
@@ -176,15 +184,15 @@ impl PreparedLineIndex {
             } else if self.exit_length(b, b - a) <= self.exit_length(a, a - b) {
                 // Crossings at or after the start, counted: every ring crosses the line an even
                 // number of times, so their parity is the parity of those before the start.
-                let found = self.walk::<COUNT, false, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, false, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
                 if found % 2 == 1 {
                     crossings.record(Along::Before, 0.0);
                 }
             } else {
                 // The same from the end backwards, where the line leaves the box sooner that way:
                 // crossings at or before the end, and the parity of those after it.
-                let back = Ray::new(b, a);
-                let found = self.walk::<COUNT, false, true>(&back, &side, &frame, &s.bounds(), crossings, counts);
+                let back = Ray::new(b, a, &self.bounds);
+                let found = self.walk::<COUNT, false, true>(&back, &line, &frame, &s.bounds(), crossings, counts);
                 if found % 2 == 1 {
                     crossings.record(Along::After, 1.0);
                 }
@@ -217,7 +225,7 @@ impl PreparedLineIndex {
                 | (root.max_y[i] < segment.min.y);
             mask |= u32::from(!apart) << i;
         }
-        let meets = mask & Ray::new(s.a, s.b).line_hits(root) & u32::from(root.present) != 0;
+        let meets = mask & Ray::new(s.a, s.b, &self.bounds).line_hits(root) & u32::from(root.present) != 0;
         meets | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0)
     }
 
@@ -244,7 +252,7 @@ impl PreparedLineIndex {
     fn walk<const COUNT: bool, const ON_SEGMENT: bool, const BACKWARD: bool>(
         &self,
         ray: &Ray,
-        side: &LineSide,
+        line: &Line,
         frame: &LineFrame,
         segment: &Rect,
         crossings: &mut LineCrossings,
@@ -269,7 +277,7 @@ impl PreparedLineIndex {
             },
             |range| {
                 found +=
-                    self.leaf::<ON_SEGMENT, BACKWARD>(range.start as usize, range.end as usize, side, frame, crossings)
+                    self.leaf::<ON_SEGMENT, BACKWARD>(range.start as usize, range.end as usize, line, frame, crossings)
             },
             counts,
         );
@@ -367,24 +375,23 @@ impl PreparedLineIndex {
         &self,
         first: usize,
         end: usize,
-        side: &LineSide,
+        line: &Line,
         frame: &LineFrame,
         crossings: &mut LineCrossings,
     ) -> u32 {
         let count = end + 1 - first;
         let (xs, ys, points) = (&self.xs[first..=end], &self.ys[first..=end], &self.points[first..=end]);
         let mut f = [0.0f64; LEAF_EDGES + 1];
-        // Signs as bit masks over the run's vertices: which were too close to call in f64, which
-        // are positive, which are on the line.
+        // Signs as bit masks over the run's vertices: which were too close to call in f64 (one
+        // error bound for the whole window), which are positive, which are on the line.
         let mut unsure = 0u64;
         for (k, (&x, &y)) in xs.iter().zip(ys).enumerate() {
-            let (value, bound) = side.estimate(x, y);
+            let value = line.side.value(x, y);
             f[k] = value;
-            unsure |= u64::from(value.abs() <= bound) << k;
+            unsure |= u64::from(value.abs() <= line.sign_bound) << k;
         }
-        // The exact sign for those; its magnitude is made accurate below only where a crossing is
-        // placed by it (the accurate magnitude costs an exact expansion, and vertices near the
-        // line are many on a finely sampled boundary).
+        // The exact sign for those; the magnitudes of a crossing's ends are made accurate below,
+        // and only as far as placing the crossing needs.
         let approximate = unsure;
         while unsure != 0 {
             let k = unsure.trailing_zeros() as usize;
@@ -408,6 +415,8 @@ impl PreparedLineIndex {
             let (p, q, mut fp, mut fq) = (points[k], points[k + 1], f[k], f[k + 1]);
             if (approximate >> k) & 0b11 != 0 {
                 (fp, fq) = (orient2d(frame.a, frame.b, p), orient2d(frame.a, frame.b, q));
+            } else {
+                (fp, fq) = line.side.crossing_values(p, q, fp, fq);
             }
             let (place, t) = if fp == 0.0 {
                 (frame.place(p), frame.param(p))

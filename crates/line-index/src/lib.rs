@@ -55,11 +55,17 @@
 //!
 //! # Exactness
 //!
-//! Every decision is exact. A vertex's side is the rounded line function accepted beyond the error
-//! bound of the first stage of Shewchuk's `orient2d` and the adaptive predicate otherwise
-//! ([`clip_core::LineSide`]), so it is `orient2d`'s sign. A box is skipped only when a rounded
-//! two-product expression of exact coordinates clears the same kind of error bound, so a box the
-//! ray (or segment) touches is never skipped; the horizontal ray compares coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
+//! Every decision is exact. A vertex's side is the rounded line function accepted beyond one
+//! error bound taken for the whole bounding box (Shewchuk's first bound of `orient2d` with the
+//! largest products a point of the box can give, [`clip_core::LineSide::sign_bound`]) and the
+//! exact predicate otherwise, so it is `orient2d`'s sign. A crossing's place is exact; its
+//! parameter comes from the rounded values at the edge's ends where they place it as accurately as
+//! two values above `orient2d`'s trust fraction would, or within 1e-14 of the segment
+//! ([`clip_core::LineSide::crossing_values`]), and from `orient2d`'s accurate magnitudes
+//! otherwise: short edges near the line, on a finely sampled boundary, cost no exact expansion. A
+//! box is skipped only when a rounded two-product expression of exact coordinates at its extreme
+//! corner clears the same kind of error bound, so a box the ray (or segment) touches is never
+//! skipped; the horizontal ray compares coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
 //! as on its negative side (one crossing when its neighbours lie on opposite sides, a touch
 //! otherwise); an edge along the line is boundary, so visible.
 //!

@@ -1,31 +1,47 @@
 //! Whether the ray from a segment's start through its end can meet a box: a conservative test, exact where it rejects.
 
-use clip_core::Point;
 use clip_core::predicates::ORIENT_ERROR_BOUND;
+use clip_core::{Point, Rect};
 
 use crate::edge_tree::{Node, WAYS};
 
 /// The ray `a + s (b - a)`, `s >= 0`, set up for box tests: the corner of a box where each tested
-/// quantity is largest (or smallest) depends only on the signs of `b - a`, so it is chosen once per
-/// segment, and a node's four child boxes are then tested with the same straight-line arithmetic.
+/// quantity is largest (or smallest) depends only on the signs of `b - a`, so which of a box's
+/// bounds to read is chosen once per segment, and a node's four child boxes are then tested with
+/// the same straight-line arithmetic, one corner per quantity.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Ray {
     a: Point,
     d: Point,
+    /// Error bounds of the line function and of the projection on `d` at any point of the window's
+    /// bounding box (every box tested lies in it).
+    line_error: f64,
+    ahead_error: f64,
 }
 
 impl Ray {
-    /// The ray from `a` through `b` (`a != b`).
+    /// The ray from `a` through `b` (`a != b`), for boxes inside `bounds`.
     #[inline]
-    pub fn new(a: Point, b: Point) -> Ray {
-        Ray { a, d: Point::new(b.x - a.x, b.y - a.y) }
+    pub fn new(a: Point, b: Point, bounds: &Rect) -> Ray {
+        let d = Point::new(b.x - a.x, b.y - a.y);
+        // The largest rounded |x - a.x| and |y - a.y| over the box: rounding is monotone, so no
+        // rounded product at a point of the box exceeds the one formed from these.
+        let far_x = (bounds.max.x - a.x).abs().max((bounds.min.x - a.x).abs());
+        let far_y = (bounds.max.y - a.y).abs().max((bounds.min.y - a.y).abs());
+        Ray {
+            a,
+            d,
+            line_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_y + d.y.abs() * far_x),
+            ahead_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_x + d.y.abs() * far_y),
+        }
     }
 
     /// Bit `i` set unless the ray certainly misses child box `i` of `node`: every corner strictly
     /// on one side of the line, or strictly behind the start. Each quantity is one rounded
-    /// two-product expression of exact coordinates, trusted only beyond Shewchuk's error bound for
-    /// such an expression (the bound of `orient2d`'s first stage), so a box the ray touches is never
-    /// missed. Unused slots are not masked here.
+    /// two-product expression of exact coordinates at the corner where it is extreme, trusted only
+    /// beyond Shewchuk's error bound for such an expression (the bound of `orient2d`'s first
+    /// stage, taken once for the whole bounding box), so a box the ray touches is never missed.
+    /// Unused slots are not masked here.
     #[inline(always)]
     pub fn hits(&self, node: &Node) -> u32 {
         let ahead = self.ahead(node);
@@ -36,34 +52,30 @@ impl Ray {
     /// strictly on one side of it.
     #[inline(always)]
     pub fn line_hits(&self, node: &Node) -> u32 {
-        // f(c) = l - r with l = d.x (c.y - a.y), r = d.y (c.x - a.x): its largest value over the
-        // corners takes the larger l and the smaller r, its smallest the reverse. Taken with
-        // min and max of the two candidates (the same products a choice of corner by the signs
-        // of d would pick), so the direction costs no branch.
+        // f(c) = d.x (c.y - a.y) - d.y (c.x - a.x) is largest at the corner with the larger y when
+        // d.x >= 0 and the smaller x when d.y >= 0, smallest at the opposite corner (the signs of
+        // the rounded d are the exact ones).
+        let (y_high, y_low) = if self.d.x >= 0.0 { (&node.max_y, &node.min_y) } else { (&node.min_y, &node.max_y) };
+        let (x_low, x_high) = if self.d.y >= 0.0 { (&node.min_x, &node.max_x) } else { (&node.max_x, &node.min_x) };
         let mut mask = 0;
         for i in 0..WAYS {
-            let (l1, l2) = (self.d.x * (node.max_y[i] - self.a.y), self.d.x * (node.min_y[i] - self.a.y));
-            let (r1, r2) = (self.d.y * (node.min_x[i] - self.a.x), self.d.y * (node.max_x[i] - self.a.x));
-            let (l, r) = (l1.max(l2), r1.min(r2));
-            let below = l - r < -(ORIENT_ERROR_BOUND * (l.abs() + r.abs()));
-            let (l, r) = (l1.min(l2), r1.max(r2));
-            let above = l - r > ORIENT_ERROR_BOUND * (l.abs() + r.abs());
-            mask |= u32::from(!(below | above)) << i;
+            let highest = self.d.x * (y_high[i] - self.a.y) - self.d.y * (x_low[i] - self.a.x);
+            let lowest = self.d.x * (y_low[i] - self.a.y) - self.d.y * (x_high[i] - self.a.x);
+            mask |= u32::from((highest >= -self.line_error) & (lowest <= self.line_error)) << i;
         }
         mask
     }
 
     /// Bit `i` set unless box `i` lies strictly behind the start: its corner farthest along the
-    /// ray has `d . (c - a) < 0`, beyond the same error bound.
+    /// ray has `d . (c - a) < 0`, beyond the same kind of error bound.
     #[inline(always)]
     fn ahead(&self, node: &Node) -> u32 {
-        // The corner farthest along the ray: the larger of the two products per axis.
+        let x_far = if self.d.x >= 0.0 { &node.max_x } else { &node.min_x };
+        let y_far = if self.d.y >= 0.0 { &node.max_y } else { &node.min_y };
         let mut mask = 0;
         for i in 0..WAYS {
-            let p = (self.d.x * (node.max_x[i] - self.a.x)).max(self.d.x * (node.min_x[i] - self.a.x));
-            let q = (self.d.y * (node.max_y[i] - self.a.y)).max(self.d.y * (node.min_y[i] - self.a.y));
-            let behind = p + q < -(ORIENT_ERROR_BOUND * (p.abs() + q.abs()));
-            mask |= u32::from(!behind) << i;
+            let farthest = self.d.x * (x_far[i] - self.a.x) + self.d.y * (y_far[i] - self.a.y);
+            mask |= u32::from(farthest >= -self.ahead_error) << i;
         }
         mask
     }
@@ -87,7 +99,8 @@ mod tests {
     }
 
     fn misses(ax: f64, ay: f64, bx: f64, by: f64) -> bool {
-        Ray::new(Point::new(ax, ay), Point::new(bx, by)).hits(&unit()) & 1 == 0
+        let bounds = Rect::new(0.0, 0.0, 1.0, 1.0);
+        Ray::new(Point::new(ax, ay), Point::new(bx, by), &bounds).hits(&unit()) & 1 == 0
     }
 
     #[test]
