@@ -9,7 +9,7 @@ use clip_core::{
 
 use core::ops::Range;
 
-use crate::edge_tree::{EdgeTree, LEAF_EDGES, Node, WAYS};
+use crate::edge_tree::{EdgeTree, LEAF_EDGES, MAX_X, MAX_Y, MIN_X, MIN_Y, Node, WAYS};
 use crate::ray_box::Ray;
 
 /// Segments whose `|dx| + |dy|` is below this fraction of the box's width + height locate their
@@ -219,10 +219,10 @@ impl PreparedLineIndex {
         let segment = s.bounds();
         let mut mask = 0;
         for i in 0..WAYS {
-            let apart = (root.min_x[i] > segment.max.x)
-                | (root.max_x[i] < segment.min.x)
-                | (root.min_y[i] > segment.max.y)
-                | (root.max_y[i] < segment.min.y);
+            let apart = (root.sides[MIN_X][i] > segment.max.x)
+                | (root.sides[MAX_X][i] < segment.min.x)
+                | (root.sides[MIN_Y][i] > segment.max.y)
+                | (root.sides[MAX_Y][i] < segment.min.y);
             mask |= u32::from(!apart) << i;
         }
         let meets = mask & Ray::new(s.a, s.b, &self.bounds).line_hits(root) & u32::from(root.present) != 0;
@@ -264,10 +264,10 @@ impl PreparedLineIndex {
                 if ON_SEGMENT {
                     let mut mask = 0;
                     for i in 0..WAYS {
-                        let apart = (node.min_x[i] > segment.max.x)
-                            | (node.max_x[i] < segment.min.x)
-                            | (node.min_y[i] > segment.max.y)
-                            | (node.max_y[i] < segment.min.y);
+                        let apart = (node.sides[MIN_X][i] > segment.max.x)
+                            | (node.sides[MAX_X][i] < segment.min.x)
+                            | (node.sides[MIN_Y][i] > segment.max.y)
+                            | (node.sides[MAX_Y][i] < segment.min.y);
                         mask |= u32::from(!apart) << i;
                     }
                     mask & ray.line_hits(node)
@@ -339,8 +339,8 @@ impl PreparedLineIndex {
             |node| {
                 let mut mask = 0;
                 for i in 0..WAYS {
-                    let ahead = if rightwards { node.max_x[i] >= a.x } else { node.min_x[i] <= a.x };
-                    mask |= u32::from(ahead & (node.min_y[i] <= a.y) & (a.y <= node.max_y[i])) << i;
+                    let ahead = if rightwards { node.sides[MAX_X][i] >= a.x } else { node.sides[MIN_X][i] <= a.x };
+                    mask |= u32::from(ahead & (node.sides[MIN_Y][i] <= a.y) & (a.y <= node.sides[MAX_Y][i])) << i;
                 }
                 mask
             },
