@@ -207,6 +207,14 @@ impl LineSide {
         ORIENT_ERROR_BOUND * (self.d.x.abs() * far_y + self.d.y.abs() * far_x)
     }
 
+    /// A gap `|fp - fq|` above which [`LineSide::crossing_values`] keeps the rounded pair for any
+    /// edge with both ends in `within`: its trust fraction of the largest four products a box
+    /// point can give. A loop tests it first and calls `crossing_values` only below it.
+    #[inline]
+    pub fn crossing_gap_bound(&self, within: &Rect) -> f64 {
+        2.0 * (TRUSTED_FRACTION / ORIENT_ERROR_BOUND) * self.sign_bound(within)
+    }
+
     /// The line function at the ends of an edge `p -> q` that crosses the line, `fp` and `fq`
     /// being its rounded values there ([`LineSide::value`]) with exact, opposite signs, made
     /// accurate enough to place the crossing by `fp / (fp - fq)`. That ratio's error is at most
@@ -404,6 +412,11 @@ mod tests {
             assert!(v.abs() <= bound || k.abs() > 4, "{c:?}: {v} against {bound}");
         }
         assert!(line.value(20.0, 30.0) > bound && line.value(30.0, 20.0) < -bound);
+        // Above the gap bound, crossing_values keeps any pair from the box as it is.
+        let gap = line.crossing_gap_bound(&Rect::new(20.0, 20.0, 30.0, 30.0));
+        let (p, q) = (Point::new(20.0, 30.0), Point::new(30.0, 20.0));
+        let (fp, fq) = (line.value(p.x, p.y), line.value(q.x, q.y));
+        assert!((fp - fq).abs() > gap && line.crossing_values(p, q, fp, fq) == (fp, fq));
     }
 
     #[test]

@@ -25,6 +25,9 @@ const SHORT_FROM_LEAVES: usize = 4;
 struct Line {
     side: LineSide,
     sign_bound: f64,
+    /// A gap `|fp - fq|` above which a crossing's rounded end values are kept as they are
+    /// ([`LineSide::crossing_gap_bound`]).
+    trusted_gap: f64,
 }
 
 /// What the horizontal ray found about a segment's start.
@@ -91,13 +94,17 @@ impl PreparedLineIndex {
         validate_window(window)?;
         let rings = WindowRings::new(window);
         let tree = EdgeTree::new(&rings);
-        let (xs, ys) = rings.points.iter().map(|p| (p.x, p.y)).unzip();
+        // Padded with copies of the last vertex: a leaf reads a fixed number of coordinates.
+        let last = rings.points.last().copied().unwrap_or(Point::ZERO);
+        let padded = rings.points.iter().chain(core::iter::repeat_n(&last, LEAF_EDGES));
+        let (xs, ys) = padded.map(|p| (p.x, p.y)).unzip();
         Ok(PreparedLineIndex { points: rings.points, xs, ys, bounds: window.bounds(), tree })
     }
 
     /// Bytes held by the prepared window (vertices, their coordinate arrays and the tree).
     pub fn memory_bytes(&self) -> usize {
-        self.points.len() * (size_of::<Point>() + 2 * size_of::<f64>())
+        self.points.len() * size_of::<Point>()
+            + (self.xs.len() + self.ys.len()) * size_of::<f64>()
             + self.tree.nodes.len() * size_of::<Node>()
             + self.tree.leaves.len() * size_of::<Range<u32>>()
     }
@@ -148,7 +155,11 @@ impl PreparedLineIndex {
         crossings.clear();
         let ray = Ray::new(a, b, &self.bounds);
         let side = LineSide::new(a, b);
-        let line = Line { side, sign_bound: side.sign_bound(&self.bounds) };
+        let line = Line {
+            side,
+            sign_bound: side.sign_bound(&self.bounds),
+            trusted_gap: side.crossing_gap_bound(&self.bounds),
+        };
         let frame = LineFrame::new(s);
         // An end strictly outside the bounding box is outside the window, so the crossings on the
         // segment alone give the parity at the other end: only the boxes meeting the segment are
@@ -275,9 +286,18 @@ impl PreparedLineIndex {
                     ray.hits(node)
                 }
             },
-            |range| {
-                found +=
-                    self.leaf::<ON_SEGMENT, BACKWARD>(range.start as usize, range.end as usize, line, frame, crossings)
+            |range, node, i| {
+                // A leaf whose box lies strictly between the segment's ends (across its line) has
+                // every crossing inside the segment: they need no placing.
+                let inside = ray.within_span(node, i);
+                found += self.leaf::<ON_SEGMENT, BACKWARD>(
+                    range.start as usize,
+                    range.end as usize,
+                    inside,
+                    line,
+                    frame,
+                    crossings,
+                )
             },
             counts,
         );
@@ -285,19 +305,20 @@ impl PreparedLineIndex {
     }
 
     /// Visits the tree from the root: `hits` tells which children of a node to enter, `leaf` is
-    /// called with the edges of each leaf entered.
+    /// called with the edges of each leaf entered, its parent and its slot there.
     #[inline(always)]
     fn visit<const COUNT: bool>(
         &self,
         hits: impl Fn(&Node) -> u32,
-        mut leaf: impl FnMut(&Range<u32>),
+        mut leaf: impl FnMut(&Range<u32>, &Node, usize),
         counts: &mut IndexCounts,
     ) {
         let nodes = &self.tree.nodes;
         if let [leaf_edges] = &self.tree.leaves[..] {
             // One leaf (up to 16 edges): the root holds it alone, no stack.
-            if hits(&nodes[0]) & u32::from(nodes[0].present) != 0 {
-                leaf(leaf_edges);
+            let root = &nodes[0];
+            if hits(root) & u32::from(root.present) != 0 {
+                leaf(leaf_edges, root, root.present.trailing_zeros() as usize);
             }
             return;
         }
@@ -319,7 +340,7 @@ impl PreparedLineIndex {
                     if COUNT {
                         counts.leaves_scanned += 1;
                     }
-                    leaf(&self.tree.leaves[node.child[i] as usize]);
+                    leaf(&self.tree.leaves[node.child[i] as usize], node, i);
                 } else {
                     stack[top] = node.child[i];
                     top += 1;
@@ -344,7 +365,7 @@ impl PreparedLineIndex {
                 }
                 mask
             },
-            |range| {
+            |range, _, _| {
                 for k in range.start as usize..range.end as usize {
                     let (p, q) = (self.points[k], self.points[k + 1]);
                     if p == a {
@@ -375,33 +396,38 @@ impl PreparedLineIndex {
         &self,
         first: usize,
         end: usize,
+        inside: bool,
         line: &Line,
         frame: &LineFrame,
         crossings: &mut LineCrossings,
     ) -> u32 {
         let count = end + 1 - first;
-        let (xs, ys, points) = (&self.xs[first..=end], &self.ys[first..=end], &self.points[first..=end]);
+        // A fixed number of vertices (the arrays are padded past the last ring), so the loop is
+        // unrolled and vectorised; the bits past the leaf's own are masked off.
+        let (xs, ys) = (&self.xs[first..first + LEAF_EDGES + 1], &self.ys[first..first + LEAF_EDGES + 1]);
+        let points = &self.points[first..=end];
         let mut f = [0.0f64; LEAF_EDGES + 1];
-        // Signs as bit masks over the run's vertices: which were too close to call in f64 (one
-        // error bound for the whole window), which are positive, which are on the line.
-        let mut unsure = 0u64;
+        // Signs as bit masks over the run's vertices: which are positive, and which were too close
+        // to call in f64 (one error bound for the whole window).
+        let (mut positive, mut unsure) = (0u64, 0u64);
         for (k, (&x, &y)) in xs.iter().zip(ys).enumerate() {
             let value = line.side.value(x, y);
             f[k] = value;
+            positive |= u64::from(value > line.sign_bound) << k;
             unsure |= u64::from(value.abs() <= line.sign_bound) << k;
         }
+        let own = (1u64 << count) - 1;
+        let (mut positive, mut unsure) = (positive & own, unsure & own);
         // The exact sign for those; the magnitudes of a crossing's ends are made accurate below,
         // and only as far as placing the crossing needs.
         let approximate = unsure;
+        let mut zero = 0u64;
         while unsure != 0 {
             let k = unsure.trailing_zeros() as usize;
             f[k] = orient_sign(frame.a, frame.b, points[k]);
+            positive |= u64::from(f[k] > 0.0) << k;
+            zero |= u64::from(f[k] == 0.0) << k;
             unsure &= unsure - 1;
-        }
-        let (mut positive, mut zero) = (0u64, 0u64);
-        for (k, &v) in f[..count].iter().enumerate() {
-            positive |= u64::from(v > 0.0) << k;
-            zero |= u64::from(v == 0.0) << k;
         }
         // Edge k runs from vertex k to k + 1: it crosses where their signs differ, and lies on the
         // line where both are zero.
@@ -415,13 +441,15 @@ impl PreparedLineIndex {
             let (p, q, mut fp, mut fq) = (points[k], points[k + 1], f[k], f[k + 1]);
             if (approximate >> k) & 0b11 != 0 {
                 (fp, fq) = (orient2d(frame.a, frame.b, p), orient2d(frame.a, frame.b, q));
-            } else {
+            } else if (fp - fq).abs() <= line.trusted_gap {
                 (fp, fq) = line.side.crossing_values(p, q, fp, fq);
             }
             let (place, t) = if fp == 0.0 {
                 (frame.place(p), frame.param(p))
             } else if fq == 0.0 {
                 (frame.place(q), frame.param(q))
+            } else if inside {
+                (Along::Inside, frame.crossing_param(p, q, fp, fq))
             } else {
                 frame.edge_crossing(p, q, fp, fq)
             };

@@ -36,9 +36,12 @@
 //!    the **segment** are walked, and the crossings on it give the other end's parity;
 //! 2. otherwise the tree is walked along the **ray** from `a` through `b` (the line from the start
 //!    on): a child is skipped when its box lies wholly on one side of the line or behind `a`;
-//! 3. in each leaf reached, Liu's rule: the exact sign of the line function at each vertex, a
-//!    crossing for each edge whose end signs differ, placed exactly before, at, inside or after
-//!    the segment's ends ([`clip_core::LineFrame::edge_crossing`]); edges on the line are boundary;
+//! 3. in each leaf reached, Liu's rule: the exact sign of the line function at each vertex (a
+//!    fixed-length, vectorised pass over the leaf's coordinates), a crossing for each edge whose
+//!    end signs differ, placed exactly before, at, inside or after the segment's ends
+//!    ([`clip_core::LineFrame::edge_crossing`]); edges on the line are boundary. A leaf whose box
+//!    lies strictly between the perpendiculars to the segment at its ends (decided exactly at the
+//!    box's extreme corners) has all its crossings inside the segment, and skips that placing;
 //! 4. the crossings go to [`clip_core::LineCrossings`], shared with Liu and the virtual-box clipper,
 //!    which sorts them and reads the pieces off by parity. Crossings before the start are not
 //!    looked for: every ring crosses a line an even number of times, so their parity is that of

@@ -12,11 +12,15 @@ use crate::edge_tree::{MAX_X, MIN_X, MIN_Y, Node, WAYS};
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Ray {
     a: Point,
+    /// The segment's other end (exact), for [`Ray::within_span`].
+    b: Point,
     d: Point,
     /// Error bounds of the line function and of the projection on `d` at any point of the window's
     /// bounding box (every box tested lies in it).
     line_error: f64,
     ahead_error: f64,
+    /// The error bound of the projection on `d` measured from `b`.
+    before_end_error: f64,
     /// Rows of a node's sides at the corners where the line function is highest (`y_high`,
     /// `x_low`) and lowest, and where the projection on `d` is largest (`x_far`, `y_far`): from the
     /// signs of `d`, which are the exact ones.
@@ -35,13 +39,17 @@ impl Ray {
         // rounded product at a point of the box exceeds the one formed from these.
         let far_x = (bounds.max.x - a.x).abs().max((bounds.min.x - a.x).abs());
         let far_y = (bounds.max.y - a.y).abs().max((bounds.min.y - a.y).abs());
+        let far_x_b = (bounds.max.x - b.x).abs().max((bounds.min.x - b.x).abs());
+        let far_y_b = (bounds.max.y - b.y).abs().max((bounds.min.y - b.y).abs());
         // Chosen by arithmetic: a branch here mispredicts on half of a batch of random segments.
         let (x_up, y_up) = (usize::from(d.x >= 0.0), usize::from(d.y >= 0.0));
         Ray {
             a,
+            b,
             d,
             line_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_y + d.y.abs() * far_x),
             ahead_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_x + d.y.abs() * far_y),
+            before_end_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_x_b + d.y.abs() * far_y_b),
             y_high: MIN_Y + 2 * x_up,
             x_low: MAX_X - 2 * y_up,
             x_far: MIN_X + 2 * x_up,
@@ -93,6 +101,19 @@ impl Ray {
         }
         mask
     }
+
+    /// True when child box `i` of `node` lies strictly between the perpendiculars to the segment
+    /// at its ends: every point `c` of it has `d . (c - a) > 0` and `d . (c - b) < 0`, each decided
+    /// at the box's extreme corner beyond the error bound, so exactly. Every crossing of the line
+    /// with an edge in that box is then inside the segment.
+    #[inline(always)]
+    pub fn within_span(&self, node: &Node, i: usize) -> bool {
+        let (x_far, y_far) = (node.sides[self.x_far & 3][i], node.sides[self.y_far & 3][i]);
+        let (x_near, y_near) = (node.sides[(self.x_far + 2) & 3][i], node.sides[(self.y_far + 2) & 3][i]);
+        let nearest = self.d.x * (x_near - self.a.x) + self.d.y * (y_near - self.a.y);
+        let farthest = self.d.x * (x_far - self.b.x) + self.d.y * (y_far - self.b.y);
+        (nearest > self.ahead_error) & (farthest < -self.before_end_error)
+    }
 }
 
 #[cfg(test)]
@@ -107,6 +128,26 @@ mod tests {
     fn misses(ax: f64, ay: f64, bx: f64, by: f64) -> bool {
         let bounds = Rect::new(0.0, 0.0, 1.0, 1.0);
         Ray::new(Point::new(ax, ay), Point::new(bx, by), &bounds).hits(&unit()) & 1 == 0
+    }
+
+    #[test]
+    fn boxes_within_the_span_only_when_strictly_between_the_ends() {
+        let bounds = Rect::new(0.0, 0.0, 1.0, 1.0);
+        let within = |ax: f64, ay: f64, bx: f64, by: f64| {
+            Ray::new(Point::new(ax, ay), Point::new(bx, by), &bounds).within_span(&unit(), 3)
+        };
+        // Across the box, either way and slanted: strictly between the ends.
+        assert!(within(-1.0, 0.5, 2.0, 0.5));
+        assert!(within(2.0, 0.5, -1.0, 0.5));
+        assert!(within(-1.0, -2.0, 2.0, 3.0));
+        // An end on the box's side, at its corner, or inside it: not strictly between.
+        assert!(!within(0.0, 0.5, 2.0, 0.5));
+        assert!(!within(-1.0, 0.5, 1.0, 0.5));
+        assert!(!within(-1.0, -1.0, 1.0, 1.0));
+        assert!(!within(0.5, 0.5, 2.0, 0.5));
+        // The perpendicular at the start through the corner (0, 0) exactly, and just past it.
+        assert!(!within(-1.0, 1.0, 1.0, 3.0));
+        assert!(within(-1.0, 0.9, 1.0, 2.9));
     }
 
     #[test]
