@@ -76,12 +76,12 @@ pub struct IndexCounts {
     pub leaves_scanned: usize,
 }
 
-/// A window prepared for [`LineIndex`]: the vertices ring after ring (each ring closed by a
-/// repeat of its first vertex), their x and y apart for the vertex loop, the bounding box and the
-/// edge tree.
+/// A window prepared for [`LineIndex`]: the vertices' x and y apart, ring after ring (each ring
+/// closed by a repeat of its first vertex), the bounding box and the edge tree. The coordinates
+/// are held once: against a large window the vertices are most of the memory a batch reads, and
+/// a window evicted by other work is read back from memory at that cost.
 #[derive(Clone, Debug)]
 pub struct PreparedLineIndex {
-    points: Vec<Point>,
     xs: Vec<f64>,
     ys: Vec<f64>,
     bounds: Rect,
@@ -98,13 +98,18 @@ impl PreparedLineIndex {
         let last = rings.points.last().copied().unwrap_or(Point::ZERO);
         let padded = rings.points.iter().chain(core::iter::repeat_n(&last, LEAF_EDGES));
         let (xs, ys) = padded.map(|p| (p.x, p.y)).unzip();
-        Ok(PreparedLineIndex { points: rings.points, xs, ys, bounds: window.bounds(), tree })
+        Ok(PreparedLineIndex { xs, ys, bounds: window.bounds(), tree })
     }
 
-    /// Bytes held by the prepared window (vertices, their coordinate arrays and the tree).
+    /// Vertex `k`.
+    #[inline(always)]
+    fn point(&self, k: usize) -> Point {
+        Point::new(self.xs[k], self.ys[k])
+    }
+
+    /// Bytes held by the prepared window (the vertices' coordinate arrays and the tree).
     pub fn memory_bytes(&self) -> usize {
-        self.points.len() * size_of::<Point>()
-            + (self.xs.len() + self.ys.len()) * size_of::<f64>()
+        (self.xs.len() + self.ys.len()) * size_of::<f64>()
             + self.tree.nodes.len() * size_of::<Node>()
             + self.tree.leaves.len() * size_of::<Range<u32>>()
     }
@@ -367,7 +372,7 @@ impl PreparedLineIndex {
             },
             |range, _, _| {
                 for k in range.start as usize..range.end as usize {
-                    let (p, q) = (self.points[k], self.points[k + 1]);
+                    let (p, q) = (self.point(k), self.point(k + 1));
                     if p == a {
                         on_boundary = true;
                     } else if (p.y > a.y) != (q.y > a.y) {
@@ -405,7 +410,7 @@ impl PreparedLineIndex {
         // A fixed number of vertices (the arrays are padded past the last ring), so the loop is
         // unrolled and vectorised; the bits past the leaf's own are masked off.
         let (xs, ys) = (&self.xs[first..first + LEAF_EDGES + 1], &self.ys[first..first + LEAF_EDGES + 1]);
-        let points = &self.points[first..=end];
+        let point = |k: usize| Point::new(xs[k], ys[k]);
         let mut f = [0.0f64; LEAF_EDGES + 1];
         // Signs as bit masks over the run's vertices: which are positive, and which were too close
         // to call in f64 (one error bound for the whole window).
@@ -424,7 +429,7 @@ impl PreparedLineIndex {
         let mut zero = 0u64;
         while unsure != 0 {
             let k = unsure.trailing_zeros() as usize;
-            f[k] = orient_sign(frame.a, frame.b, points[k]);
+            f[k] = orient_sign(frame.a, frame.b, point(k));
             positive |= u64::from(f[k] > 0.0) << k;
             zero |= u64::from(f[k] == 0.0) << k;
             unsure &= unsure - 1;
@@ -438,7 +443,7 @@ impl PreparedLineIndex {
         while crossed != 0 {
             let k = crossed.trailing_zeros() as usize;
             crossed &= crossed - 1;
-            let (p, q, mut fp, mut fq) = (points[k], points[k + 1], f[k], f[k + 1]);
+            let (p, q, mut fp, mut fq) = (point(k), point(k + 1), f[k], f[k + 1]);
             if (approximate >> k) & 0b11 != 0 {
                 (fp, fq) = (orient2d(frame.a, frame.b, p), orient2d(frame.a, frame.b, q));
             } else if (fp - fq).abs() <= line.trusted_gap {
@@ -464,7 +469,7 @@ impl PreparedLineIndex {
         while along != 0 {
             let k = along.trailing_zeros() as usize;
             along &= along - 1;
-            let (p, q) = (points[k], points[k + 1]);
+            let (p, q) = (point(k), point(k + 1));
             crossings.along((frame.place(p), frame.param(p)), (frame.place(q), frame.param(q)));
         }
         found

@@ -76,10 +76,12 @@
 //!
 //! - **Preparation**: O(n) time for n window edges (one pass to lay out the vertices, one to build
 //!   the tree top-down over the runs); no sorting.
-//! - **Memory**: 32 bytes per vertex (the points and their coordinate arrays), one node of 152
-//!   bytes per about three leaves and 8 bytes per leaf: about 38 bytes per edge, 368 KiB at
+//! - **Memory**: 16 bytes per vertex (its x and y, held once, in two arrays), one node of 152
+//!   bytes per about three leaves and 8 bytes per leaf: about 22 bytes per edge, 212 KiB at
 //!   10^4 edges (measured by `reproduce beyond-paper`). [`PreparedLineIndex::memory_bytes`]
-//!   reports it.
+//!   reports it. The size matters beside other work: a window evicted from the caches is read
+//!   back at that cost, which was a third of the time per segment at 10^4 edges in
+//!   `reproduce beyond-paper` while the vertices were also held as points (38 bytes per edge).
 //! - **Per segment**: the boxes the ray meets at each level of the tree, about O(k log(n / k))
 //!   for k crossings on a boundary a line meets a bounded number of times (smooth or lobed
 //!   windows, holes), plus 17 vertex signs per leaf reached. Against windows of one leaf (up to
