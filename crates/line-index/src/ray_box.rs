@@ -80,13 +80,14 @@ impl Ray {
         // bounds checks.
         let (y_high, y_low) = (&node.sides[self.y_high & 3], &node.sides[(self.y_high + 2) & 3]);
         let (x_low, x_high) = (&node.sides[self.x_low & 3], &node.sides[(self.x_low + 2) & 3]);
-        let mut mask = 0;
-        for i in 0..WAYS {
+        // Child by child in lanes (the children side by side vectorise), the bits packed after.
+        let mut keep = [0u32; WAYS];
+        for (i, keep) in keep.iter_mut().enumerate() {
             let highest = self.d.x * (y_high[i] - self.a.y) - self.d.y * (x_low[i] - self.a.x);
             let lowest = self.d.x * (y_low[i] - self.a.y) - self.d.y * (x_high[i] - self.a.x);
-            mask |= u32::from((highest >= -self.line_error) & (lowest <= self.line_error)) << i;
+            *keep = u32::from((highest >= -self.line_error) & (lowest <= self.line_error));
         }
-        mask
+        keep[0] | (keep[1] << 1) | (keep[2] << 2) | (keep[3] << 3)
     }
 
     /// Bit `i` set unless box `i` lies strictly behind the start: its corner farthest along the
