@@ -232,16 +232,7 @@ impl PreparedLineIndex {
     #[inline(always)]
     fn may_show(&self, s: Segment) -> bool {
         let root = &self.tree.nodes[0];
-        let segment = s.bounds();
-        let mut mask = 0;
-        for i in 0..WAYS {
-            let apart = (root.sides[MIN_X][i] > segment.max.x)
-                | (root.sides[MAX_X][i] < segment.min.x)
-                | (root.sides[MIN_Y][i] > segment.max.y)
-                | (root.sides[MAX_Y][i] < segment.min.y);
-            mask |= u32::from(!apart) << i;
-        }
-        let meets = mask & Ray::new(s.a, s.b, &self.bounds).line_hits(root) & u32::from(root.present) != 0;
+        let meets = Ray::new(s.a, s.b, &self.bounds).segment_hits(root, &s.bounds()) & u32::from(root.present) != 0;
         meets | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0)
     }
 
@@ -277,19 +268,7 @@ impl PreparedLineIndex {
         let mut found = 0;
         self.visit::<COUNT>(
             |node| {
-                if ON_SEGMENT {
-                    let mut mask = 0;
-                    for i in 0..WAYS {
-                        let apart = (node.sides[MIN_X][i] > segment.max.x)
-                            | (node.sides[MAX_X][i] < segment.min.x)
-                            | (node.sides[MIN_Y][i] > segment.max.y)
-                            | (node.sides[MAX_Y][i] < segment.min.y);
-                        mask |= u32::from(!apart) << i;
-                    }
-                    mask & ray.line_hits(node)
-                } else {
-                    ray.hits(node)
-                }
+                if ON_SEGMENT { ray.segment_hits(node, segment) } else { ray.hits(node) }
             },
             |range, node, i| {
                 // A leaf whose box lies strictly between the segment's ends (across its line) has
