@@ -1,4 +1,4 @@
-//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead, `--large` the indexed clipper on lines-large case 3, `--counts` the indexed clipper's stage counts instead of times.
+//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead, `--large` the indexed clipper on lines-large case 3, `--counts` the indexed clipper's stage counts instead of times, `--cold` evicts the caches before every timed batch (as the other clippers of `reproduce beyond-paper` do between two batches of one clipper).
 
 use std::time::Instant;
 
@@ -62,8 +62,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         return Ok(());
     }
-    for _ in 0..rounds {
+    // Larger than the last-level cache: writing it evicts the windows and the segments.
+    let mut evict = if args.iter().any(|a| a == "--cold") { vec![0u8; 64 << 20] } else { Vec::new() };
+    for round in 0..rounds {
         for (_, _, prepared, times) in &mut runs {
+            evict.iter_mut().for_each(|b| *b = b.wrapping_add(round as u8));
+            std::hint::black_box(&evict);
             out.clear();
             let start = Instant::now();
             prepared.clip_batch(&segments, &mut out)?;
