@@ -87,11 +87,18 @@ impl LineFrame {
         if gb == 0.0 {
             (Along::AtEnd, 1.0)
         } else if (gb > 0.0) == ahead_positive {
-            let (tp, tq) = (self.param(p), self.param(q));
-            (Along::Inside, (tp + (tq - tp) * (fp / (fp - fq))).clamp(0.0, 1.0))
+            (Along::Inside, self.crossing_param(p, q, fp, fq))
         } else {
             (Along::After, 1.0)
         }
+    }
+
+    /// The parameter of [`Self::edge_crossing`]'s crossing, for a caller that knows it lies inside
+    /// the segment: the ends' parameters interpolated by `fp / (fp - fq)`, clamped to `[0, 1]`.
+    #[inline]
+    pub fn crossing_param(&self, p: Point, q: Point, fp: f64, fq: f64) -> f64 {
+        let (tp, tq) = (self.param(p), self.param(q));
+        (tp + (tq - tp) * (fp / (fp - fq))).clamp(0.0, 1.0)
     }
 
     /// As [`Self::edge_crossing`] when the line function at the ends is not at hand (only the side

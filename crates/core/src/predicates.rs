@@ -136,6 +136,11 @@ fn two_product(a: f64, b: f64) -> (f64, f64) {
     (x, a.mul_add(b, -x))
 }
 
+/// The largest error [`LineSide::crossing_values`] lets into a crossing's parameter (of the
+/// segment's length) from rounded line-function values, well below the 1e-12 within which the
+/// line clippers merge crossings ([`crate::PARAMETER_SNAP`]).
+pub const CROSSING_PARAMETER_ERROR: f64 = 1e-14;
+
 /// Shewchuk's first error bound of `orient2d` (`ccwerrboundA = (3 + 16ε)ε`, ε = 2^-53): a
 /// determinant computed in plain f64 whose magnitude exceeds this times the sum of its two
 /// products' magnitudes has the right sign.
@@ -182,6 +187,56 @@ impl LineSide {
         let r = self.d.y * (v.x - self.a.x);
         let f = l - r;
         if f.abs() > TRUSTED_FRACTION * (l.abs() + r.abs()) { f } else { orient2d(self.a, self.b, v) }
+    }
+
+    /// The rounded `f(v)`, for loops that test it against [`LineSide::sign_bound`].
+    #[inline(always)]
+    pub fn value(&self, vx: f64, vy: f64) -> f64 {
+        self.d.x * (vy - self.a.y) - self.d.y * (vx - self.a.x)
+    }
+
+    /// One error bound for every point of `within`: a [`LineSide::value`] at such a point whose
+    /// magnitude exceeds it has the exact sign. Shewchuk's first bound of `orient2d` taken with the
+    /// largest products any point of the box can give (rounding is monotone, so the rounded
+    /// products at a point never exceed the rounded products at the box's farthest sides), so a
+    /// per-point loop pays one comparison instead of forming the bound at each point.
+    #[inline]
+    pub fn sign_bound(&self, within: &Rect) -> f64 {
+        let far_x = (within.max.x - self.a.x).abs().max((within.min.x - self.a.x).abs());
+        let far_y = (within.max.y - self.a.y).abs().max((within.min.y - self.a.y).abs());
+        ORIENT_ERROR_BOUND * (self.d.x.abs() * far_y + self.d.y.abs() * far_x)
+    }
+
+    /// A gap `|fp - fq|` above which [`LineSide::crossing_values`] keeps the rounded pair for any
+    /// edge with both ends in `within`: its trust fraction of the largest four products a box
+    /// point can give. A loop tests it first and calls `crossing_values` only below it.
+    #[inline]
+    pub fn crossing_gap_bound(&self, within: &Rect) -> f64 {
+        2.0 * (TRUSTED_FRACTION / ORIENT_ERROR_BOUND) * self.sign_bound(within)
+    }
+
+    /// The line function at the ends of an edge `p -> q` that crosses the line, `fp` and `fq`
+    /// being its rounded values there ([`LineSide::value`]) with exact, opposite signs, made
+    /// accurate enough to place the crossing by `fp / (fp - fq)`. That ratio's error is at most
+    /// the two values' error bounds over `|fp| + |fq|`, and the crossing's parameter moves by it
+    /// times the edge's span of parameters. The rounded pair is kept when either the ratio is as
+    /// accurate as two values above [`orient2d`]'s trust fraction would make it, or the parameter's
+    /// error is below [`CROSSING_PARAMETER_ERROR`]; [`orient2d`]'s accurate pair is taken
+    /// otherwise. So a short edge whose ends lie close to the line (a finely sampled boundary,
+    /// seen from afar) costs no exact expansion unless it runs nearly along the line.
+    #[inline]
+    pub fn crossing_values(&self, p: Point, q: Point, fp: f64, fq: f64) -> (f64, f64) {
+        let terms = |v: Point| (self.d.x * (v.y - self.a.y)).abs() + (self.d.y * (v.x - self.a.x)).abs();
+        let (terms, gap) = (terms(p) + terms(q), (fp - fq).abs());
+        // |t_q - t_p| times |d|^2, and the values' error bound.
+        let span = (self.d.x * (q.x - p.x) + self.d.y * (q.y - p.y)).abs();
+        let error = ORIENT_ERROR_BOUND * terms;
+        let len2 = self.d.x * self.d.x + self.d.y * self.d.y;
+        if gap > TRUSTED_FRACTION * terms || span * error <= CROSSING_PARAMETER_ERROR * gap * len2 {
+            (fp, fq)
+        } else {
+            (orient2d(self.a, self.b, p), orient2d(self.a, self.b, q))
+        }
     }
 }
 
@@ -339,5 +394,48 @@ mod tests {
             let c = Point::new(24.0, 24.0 + f64::from(k) * 2f64.powi(-48));
             assert_eq!(orient2d_inline(a, b, c), orient2d(a, b, c), "{c:?}");
         }
+    }
+
+    #[test]
+    fn sign_bound_keeps_only_exact_signs_over_its_box() {
+        // The same near-line points, inside a box around them: a value beyond the bound has the
+        // exact sign, and points within an ulp of the line are never beyond it.
+        let (a, b) = (Point::new(0.5, 0.5), Point::new(12.0, 12.0));
+        let line = LineSide::new(a, b);
+        let bound = line.sign_bound(&Rect::new(20.0, 20.0, 30.0, 30.0));
+        for k in -40_i32..40 {
+            let c = Point::new(24.0, 24.0 + f64::from(k) * 2f64.powi(-48));
+            let v = line.value(c.x, c.y);
+            if v.abs() > bound {
+                assert_eq!(v.signum(), orient2d(a, b, c).signum(), "{c:?}");
+            }
+            assert!(v.abs() <= bound || k.abs() > 4, "{c:?}: {v} against {bound}");
+        }
+        assert!(line.value(20.0, 30.0) > bound && line.value(30.0, 20.0) < -bound);
+        // Above the gap bound, crossing_values keeps any pair from the box as it is.
+        let gap = line.crossing_gap_bound(&Rect::new(20.0, 20.0, 30.0, 30.0));
+        let (p, q) = (Point::new(20.0, 30.0), Point::new(30.0, 20.0));
+        let (fp, fq) = (line.value(p.x, p.y), line.value(q.x, q.y));
+        assert!((fp - fq).abs() > gap && line.crossing_values(p, q, fp, fq) == (fp, fq));
+    }
+
+    #[test]
+    fn crossing_values_place_crossings_of_edges_near_the_line() {
+        // A long diagonal line and a short edge across it near its start, its ends about 1e-10 of
+        // the products from the line: neither value is trusted alone, yet the parameter they give
+        // is within the promised error of the one from exact magnitudes.
+        let (a, b) = (Point::new(-1000.0, -1000.0), Point::new(1000.0, 1000.0));
+        let line = LineSide::new(a, b);
+        let (p, q) = (Point::new(3.0, 3.0 + 1e-7), Point::new(3.001, 3.001 - 3e-7));
+        let (fp, fq) = (line.value(p.x, p.y), line.value(q.x, q.y));
+        let (gp, gq) = line.crossing_values(p, q, fp, fq);
+        let (ep, eq) = (orient2d(a, b, p), orient2d(a, b, q));
+        assert!(fp.abs() < 1e-4 * 4e6 && fq.abs() < 1e-4 * 4e6);
+        let span = 0.001 / 2000.0;
+        assert!(span * (gp / (gp - gq) - ep / (ep - eq)).abs() < CROSSING_PARAMETER_ERROR);
+        // An edge running along the line within rounding: the exact magnitudes are taken.
+        let (p, q) = (Point::new(3.0, 3.0 + 1e-13), Point::new(300.0, 300.0 - 1e-13));
+        let (gp, gq) = line.crossing_values(p, q, line.value(p.x, p.y), line.value(q.x, q.y));
+        assert_eq!((gp, gq), (orient2d(a, b, p), orient2d(a, b, q)));
     }
 }

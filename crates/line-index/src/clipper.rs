@@ -9,7 +9,7 @@ use clip_core::{
 
 use core::ops::Range;
 
-use crate::edge_tree::{EdgeTree, LEAF_EDGES, Node, WAYS};
+use crate::edge_tree::{EdgeTree, LEAF_EDGES, MAX_X, MAX_Y, MIN_X, MIN_Y, Node, WAYS};
 use crate::ray_box::Ray;
 
 /// Segments whose `|dx| + |dy|` is below this fraction of the box's width + height locate their
@@ -19,6 +19,16 @@ const SHORT: f64 = 0.25;
 /// Windows of at most this many leaves clip every segment along its ray: with so few edges, one
 /// walk is cheaper than locating the start and walking again.
 const SHORT_FROM_LEAVES: usize = 4;
+
+/// A segment's line function, and one bound over the window's bounding box beyond which its
+/// rounded values have exact signs.
+struct Line {
+    side: LineSide,
+    sign_bound: f64,
+    /// A gap `|fp - fq|` above which a crossing's rounded end values are kept as they are
+    /// ([`LineSide::crossing_gap_bound`]).
+    trusted_gap: f64,
+}
 
 /// What the horizontal ray found about a segment's start.
 enum Start {
@@ -66,12 +76,12 @@ pub struct IndexCounts {
     pub leaves_scanned: usize,
 }
 
-/// A window prepared for [`LineIndex`]: the vertices ring after ring (each ring closed by a
-/// repeat of its first vertex), their x and y apart for the vertex loop, the bounding box and the
-/// edge tree.
+/// A window prepared for [`LineIndex`]: the vertices' x and y apart, ring after ring (each ring
+/// closed by a repeat of its first vertex), the bounding box and the edge tree. The coordinates
+/// are held once: against a large window the vertices are most of the memory a batch reads, and
+/// a window evicted by other work is read back from memory at that cost.
 #[derive(Clone, Debug)]
 pub struct PreparedLineIndex {
-    points: Vec<Point>,
     xs: Vec<f64>,
     ys: Vec<f64>,
     bounds: Rect,
@@ -84,13 +94,30 @@ impl PreparedLineIndex {
         validate_window(window)?;
         let rings = WindowRings::new(window);
         let tree = EdgeTree::new(&rings);
-        let (xs, ys) = rings.points.iter().map(|p| (p.x, p.y)).unzip();
-        Ok(PreparedLineIndex { points: rings.points, xs, ys, bounds: window.bounds(), tree })
+        // Padded with copies of the last vertex: a leaf reads a fixed number of coordinates.
+        let last = rings.points.last().copied().unwrap_or(Point::ZERO);
+        let padded = rings.points.iter().chain(core::iter::repeat_n(&last, LEAF_EDGES));
+        let (xs, ys) = padded.map(|p| (p.x, p.y)).unzip();
+        Ok(PreparedLineIndex { xs, ys, bounds: window.bounds(), tree })
     }
 
-    /// Bytes held by the prepared window (vertices, their coordinate arrays and the tree).
+    /// Reads one value per cache line of the vertices and the tree, in order.
+    fn touch(&self) {
+        const PER_LINE: usize = 64 / size_of::<f64>();
+        let sum = |v: &[f64]| v.iter().step_by(PER_LINE).fold(0.0, |s, &x| s + x);
+        let nodes: f64 = self.tree.nodes.iter().map(|n| n.sides[MIN_X][0] + n.sides[MAX_Y][3]).sum();
+        core::hint::black_box(sum(&self.xs) + sum(&self.ys) + nodes);
+    }
+
+    /// Vertex `k`.
+    #[inline(always)]
+    fn point(&self, k: usize) -> Point {
+        Point::new(self.xs[k], self.ys[k])
+    }
+
+    /// Bytes held by the prepared window (the vertices' coordinate arrays and the tree).
     pub fn memory_bytes(&self) -> usize {
-        self.points.len() * (size_of::<Point>() + 2 * size_of::<f64>())
+        (self.xs.len() + self.ys.len()) * size_of::<f64>()
             + self.tree.nodes.len() * size_of::<Node>()
             + self.tree.leaves.len() * size_of::<Range<u32>>()
     }
@@ -139,8 +166,13 @@ impl PreparedLineIndex {
             return;
         }
         crossings.clear();
-        let ray = Ray::new(a, b);
+        let ray = Ray::new(a, b, &self.bounds);
         let side = LineSide::new(a, b);
+        let line = Line {
+            side,
+            sign_bound: side.sign_bound(&self.bounds),
+            trusted_gap: side.crossing_gap_bound(&self.bounds),
+        };
         let frame = LineFrame::new(s);
         // An end strictly outside the bounding box is outside the window, so the crossings on the
         // segment alone give the parity at the other end: only the boxes meeting the segment are
@@ -150,7 +182,7 @@ impl PreparedLineIndex {
         // tells the parity just after it: those segments take the ray.
         let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
         if a_outside | b_outside {
-            let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+            let found = self.walk::<COUNT, true, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
             // random in a batch spread over the screen).
@@ -165,7 +197,7 @@ impl PreparedLineIndex {
                 Start::OnBoundary
             };
             if let Start::Inside(inside) = start {
-                let found = self.walk::<COUNT, true, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, true, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
                 // The crossings on the segment toggle the parity from the start's to the end's.
                 if (found + u32::from(inside)) % 2 == 1 {
                     crossings.record(Along::After, 1.0);
@@ -176,15 +208,15 @@ impl PreparedLineIndex {
             } else if self.exit_length(b, b - a) <= self.exit_length(a, a - b) {
                 // Crossings at or after the start, counted: every ring crosses the line an even
                 // number of times, so their parity is the parity of those before the start.
-                let found = self.walk::<COUNT, false, false>(&ray, &side, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, false, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
                 if found % 2 == 1 {
                     crossings.record(Along::Before, 0.0);
                 }
             } else {
                 // The same from the end backwards, where the line leaves the box sooner that way:
                 // crossings at or before the end, and the parity of those after it.
-                let back = Ray::new(b, a);
-                let found = self.walk::<COUNT, false, true>(&back, &side, &frame, &s.bounds(), crossings, counts);
+                let back = Ray::new(b, a, &self.bounds);
+                let found = self.walk::<COUNT, false, true>(&back, &line, &frame, &s.bounds(), crossings, counts);
                 if found % 2 == 1 {
                     crossings.record(Along::After, 1.0);
                 }
@@ -208,16 +240,7 @@ impl PreparedLineIndex {
     #[inline(always)]
     fn may_show(&self, s: Segment) -> bool {
         let root = &self.tree.nodes[0];
-        let segment = s.bounds();
-        let mut mask = 0;
-        for i in 0..WAYS {
-            let apart = (root.min_x[i] > segment.max.x)
-                | (root.max_x[i] < segment.min.x)
-                | (root.min_y[i] > segment.max.y)
-                | (root.max_y[i] < segment.min.y);
-            mask |= u32::from(!apart) << i;
-        }
-        let meets = mask & Ray::new(s.a, s.b).line_hits(root) & u32::from(root.present) != 0;
+        let meets = Ray::new(s.a, s.b, &self.bounds).segment_hits(root, &s.bounds()) & u32::from(root.present) != 0;
         meets | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0)
     }
 
@@ -244,7 +267,7 @@ impl PreparedLineIndex {
     fn walk<const COUNT: bool, const ON_SEGMENT: bool, const BACKWARD: bool>(
         &self,
         ray: &Ray,
-        side: &LineSide,
+        line: &Line,
         frame: &LineFrame,
         segment: &Rect,
         crossings: &mut LineCrossings,
@@ -253,23 +276,20 @@ impl PreparedLineIndex {
         let mut found = 0;
         self.visit::<COUNT>(
             |node| {
-                if ON_SEGMENT {
-                    let mut mask = 0;
-                    for i in 0..WAYS {
-                        let apart = (node.min_x[i] > segment.max.x)
-                            | (node.max_x[i] < segment.min.x)
-                            | (node.min_y[i] > segment.max.y)
-                            | (node.max_y[i] < segment.min.y);
-                        mask |= u32::from(!apart) << i;
-                    }
-                    mask & ray.line_hits(node)
-                } else {
-                    ray.hits(node)
-                }
+                if ON_SEGMENT { ray.segment_hits(node, segment) } else { ray.hits(node) }
             },
-            |range| {
-                found +=
-                    self.leaf::<ON_SEGMENT, BACKWARD>(range.start as usize, range.end as usize, side, frame, crossings)
+            |range, node, i| {
+                // A leaf whose box lies strictly between the segment's ends (across its line) has
+                // every crossing inside the segment: they need no placing.
+                let inside = ray.within_span(node, i);
+                found += self.leaf::<ON_SEGMENT, BACKWARD>(
+                    range.start as usize,
+                    range.end as usize,
+                    inside,
+                    line,
+                    frame,
+                    crossings,
+                )
             },
             counts,
         );
@@ -277,19 +297,20 @@ impl PreparedLineIndex {
     }
 
     /// Visits the tree from the root: `hits` tells which children of a node to enter, `leaf` is
-    /// called with the edges of each leaf entered.
+    /// called with the edges of each leaf entered, its parent and its slot there.
     #[inline(always)]
     fn visit<const COUNT: bool>(
         &self,
         hits: impl Fn(&Node) -> u32,
-        mut leaf: impl FnMut(&Range<u32>),
+        mut leaf: impl FnMut(&Range<u32>, &Node, usize),
         counts: &mut IndexCounts,
     ) {
         let nodes = &self.tree.nodes;
         if let [leaf_edges] = &self.tree.leaves[..] {
             // One leaf (up to 16 edges): the root holds it alone, no stack.
-            if hits(&nodes[0]) & u32::from(nodes[0].present) != 0 {
-                leaf(leaf_edges);
+            let root = &nodes[0];
+            if hits(root) & u32::from(root.present) != 0 {
+                leaf(leaf_edges, root, root.present.trailing_zeros() as usize);
             }
             return;
         }
@@ -311,7 +332,7 @@ impl PreparedLineIndex {
                     if COUNT {
                         counts.leaves_scanned += 1;
                     }
-                    leaf(&self.tree.leaves[node.child[i] as usize]);
+                    leaf(&self.tree.leaves[node.child[i] as usize], node, i);
                 } else {
                     stack[top] = node.child[i];
                     top += 1;
@@ -331,14 +352,14 @@ impl PreparedLineIndex {
             |node| {
                 let mut mask = 0;
                 for i in 0..WAYS {
-                    let ahead = if rightwards { node.max_x[i] >= a.x } else { node.min_x[i] <= a.x };
-                    mask |= u32::from(ahead & (node.min_y[i] <= a.y) & (a.y <= node.max_y[i])) << i;
+                    let ahead = if rightwards { node.sides[MAX_X][i] >= a.x } else { node.sides[MIN_X][i] <= a.x };
+                    mask |= u32::from(ahead & (node.sides[MIN_Y][i] <= a.y) & (a.y <= node.sides[MAX_Y][i])) << i;
                 }
                 mask
             },
-            |range| {
+            |range, _, _| {
                 for k in range.start as usize..range.end as usize {
-                    let (p, q) = (self.points[k], self.points[k + 1]);
+                    let (p, q) = (self.point(k), self.point(k + 1));
                     if p == a {
                         on_boundary = true;
                     } else if (p.y > a.y) != (q.y > a.y) {
@@ -367,34 +388,38 @@ impl PreparedLineIndex {
         &self,
         first: usize,
         end: usize,
-        side: &LineSide,
+        inside: bool,
+        line: &Line,
         frame: &LineFrame,
         crossings: &mut LineCrossings,
     ) -> u32 {
         let count = end + 1 - first;
-        let (xs, ys, points) = (&self.xs[first..=end], &self.ys[first..=end], &self.points[first..=end]);
+        // A fixed number of vertices (the arrays are padded past the last ring), so the loop is
+        // unrolled and vectorised; the bits past the leaf's own are masked off.
+        let (xs, ys) = (&self.xs[first..first + LEAF_EDGES + 1], &self.ys[first..first + LEAF_EDGES + 1]);
+        let point = |k: usize| Point::new(xs[k], ys[k]);
         let mut f = [0.0f64; LEAF_EDGES + 1];
-        // Signs as bit masks over the run's vertices: which were too close to call in f64, which
-        // are positive, which are on the line.
-        let mut unsure = 0u64;
+        // Signs as bit masks over the run's vertices: which are positive, and which were too close
+        // to call in f64 (one error bound for the whole window).
+        let (mut positive, mut unsure) = (0u64, 0u64);
         for (k, (&x, &y)) in xs.iter().zip(ys).enumerate() {
-            let (value, bound) = side.estimate(x, y);
+            let value = line.side.value(x, y);
             f[k] = value;
-            unsure |= u64::from(value.abs() <= bound) << k;
+            positive |= u64::from(value > line.sign_bound) << k;
+            unsure |= u64::from(value.abs() <= line.sign_bound) << k;
         }
-        // The exact sign for those; its magnitude is made accurate below only where a crossing is
-        // placed by it (the accurate magnitude costs an exact expansion, and vertices near the
-        // line are many on a finely sampled boundary).
+        let own = (1u64 << count) - 1;
+        let (mut positive, mut unsure) = (positive & own, unsure & own);
+        // The exact sign for those; the magnitudes of a crossing's ends are made accurate below,
+        // and only as far as placing the crossing needs.
         let approximate = unsure;
+        let mut zero = 0u64;
         while unsure != 0 {
             let k = unsure.trailing_zeros() as usize;
-            f[k] = orient_sign(frame.a, frame.b, points[k]);
+            f[k] = orient_sign(frame.a, frame.b, point(k));
+            positive |= u64::from(f[k] > 0.0) << k;
+            zero |= u64::from(f[k] == 0.0) << k;
             unsure &= unsure - 1;
-        }
-        let (mut positive, mut zero) = (0u64, 0u64);
-        for (k, &v) in f[..count].iter().enumerate() {
-            positive |= u64::from(v > 0.0) << k;
-            zero |= u64::from(v == 0.0) << k;
         }
         // Edge k runs from vertex k to k + 1: it crosses where their signs differ, and lies on the
         // line where both are zero.
@@ -405,14 +430,18 @@ impl PreparedLineIndex {
         while crossed != 0 {
             let k = crossed.trailing_zeros() as usize;
             crossed &= crossed - 1;
-            let (p, q, mut fp, mut fq) = (points[k], points[k + 1], f[k], f[k + 1]);
+            let (p, q, mut fp, mut fq) = (point(k), point(k + 1), f[k], f[k + 1]);
             if (approximate >> k) & 0b11 != 0 {
                 (fp, fq) = (orient2d(frame.a, frame.b, p), orient2d(frame.a, frame.b, q));
+            } else if (fp - fq).abs() <= line.trusted_gap {
+                (fp, fq) = line.side.crossing_values(p, q, fp, fq);
             }
             let (place, t) = if fp == 0.0 {
                 (frame.place(p), frame.param(p))
             } else if fq == 0.0 {
                 (frame.place(q), frame.param(q))
+            } else if inside {
+                (Along::Inside, frame.crossing_param(p, q, fp, fq))
             } else {
                 frame.edge_crossing(p, q, fp, fq)
             };
@@ -427,7 +456,7 @@ impl PreparedLineIndex {
         while along != 0 {
             let k = along.trailing_zeros() as usize;
             along &= along - 1;
-            let (p, q) = (points[k], points[k + 1]);
+            let (p, q) = (point(k), point(k + 1));
             crossings.along((frame.place(p), frame.param(p)), (frame.place(q), frame.param(q)));
         }
         found
@@ -446,6 +475,12 @@ impl PreparedWindow for PreparedLineIndex {
         // Then the root's child boxes, also over the batch: a segment with an end outside the
         // bounding box that meets none of them lies wholly outside.
         retain_indices(&mut kept, |i| self.may_show(segments[i]));
+        // A batch that walks the tree more often than it has leaves reaches most of the window:
+        // read it in order first, one load per cache line, at streaming speed, rather than by
+        // a dependent miss per node and leaf when other work has evicted it.
+        if kept.len() >= self.tree.leaves.len() {
+            self.touch();
+        }
         for &index in &kept {
             self.clip_one::<false>(index, segments[index], out, &mut crossings, &mut counts);
         }

@@ -6,7 +6,8 @@ use clip_core::{Point, WindowRings};
 
 /// Window edges per leaf: a leaf is a run of at most this many consecutive edges of one ring.
 /// Measured on `lines-large` and the beyond-the-paper windows (instructions and time per
-/// segment): 16 is within a few percent of 8 and 32, and needs fewer nodes than 8.
+/// segment): 16 is within a few percent of 8 and 32, and needs fewer nodes than 8. Measured again
+/// with the branch-free box tests (wang_ns): 8 and 32 are 5-15% slower on wang-t4 at 50 edges.
 pub(crate) const LEAF_EDGES: usize = 16;
 
 /// Children per node.
@@ -15,15 +16,21 @@ pub(crate) const WAYS: usize = 4;
 /// A child slot that holds nothing: its box is empty, so every test misses it.
 const NONE: u32 = u32::MAX;
 
+/// Rows of [`Node::sides`]: a box's least x, least y, greatest x and greatest y. A row's index
+/// can be computed (a box test picks the rows of the corner it needs from the ray's direction,
+/// without a branch).
+pub(crate) const MIN_X: usize = 0;
+pub(crate) const MIN_Y: usize = 1;
+pub(crate) const MAX_X: usize = 2;
+pub(crate) const MAX_Y: usize = 3;
+
 /// One node: the boxes of up to four children side by side (each coordinate in its own array,
 /// so the four tests are independent and vectorise), and what each child is.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Node {
-    /// Per child: min x, min y, max x, max y (exact vertex coordinates; empty for unused slots).
-    pub min_x: [f64; WAYS],
-    pub min_y: [f64; WAYS],
-    pub max_x: [f64; WAYS],
-    pub max_y: [f64; WAYS],
+    /// Per row ([`MIN_X`], [`MIN_Y`], [`MAX_X`], [`MAX_Y`]), per child: that side of the child's
+    /// box (exact vertex coordinates; an empty box for unused slots).
+    pub sides: [[f64; WAYS]; 4],
     /// Per child: the node index of an inner child, or the leaf index of a leaf child.
     pub child: [u32; WAYS],
     /// Bit `i` set when child `i` is a leaf.
@@ -85,10 +92,7 @@ impl EdgeTree {
 fn build(leaf_ids: &[u32], boxes: &[[f64; 4]], nodes: &mut Vec<Node>) -> (u32, [f64; 4]) {
     let at = nodes.len();
     nodes.push(Node {
-        min_x: [f64::INFINITY; WAYS],
-        min_y: [f64::INFINITY; WAYS],
-        max_x: [f64::NEG_INFINITY; WAYS],
-        max_y: [f64::NEG_INFINITY; WAYS],
+        sides: [[f64::INFINITY; WAYS], [f64::INFINITY; WAYS], [f64::NEG_INFINITY; WAYS], [f64::NEG_INFINITY; WAYS]],
         child: [NONE; WAYS],
         leaves: 0,
         present: 0,
@@ -107,7 +111,8 @@ fn build(leaf_ids: &[u32], boxes: &[[f64; 4]], nodes: &mut Vec<Node>) -> (u32, [
             (id, b, false)
         };
         let node = &mut nodes[at];
-        (node.min_x[part], node.min_y[part], node.max_x[part], node.max_y[part]) = (b[0], b[1], b[2], b[3]);
+        (node.sides[MIN_X][part], node.sides[MIN_Y][part], node.sides[MAX_X][part], node.sides[MAX_Y][part]) =
+            (b[0], b[1], b[2], b[3]);
         node.child[part] = child;
         node.leaves |= u8::from(leaf) << part;
         node.present |= 1 << part;
@@ -147,7 +152,7 @@ mod tests {
         while let Some((n, outer)) = stack.pop() {
             let node = &tree.nodes[n];
             for i in (0..WAYS).filter(|&i| node.present & (1 << i) != 0) {
-                let b = [node.min_x[i], node.min_y[i], node.max_x[i], node.max_y[i]];
+                let b = [node.sides[MIN_X][i], node.sides[MIN_Y][i], node.sides[MAX_X][i], node.sides[MAX_Y][i]];
                 assert!(b[0] >= outer[0] && b[1] >= outer[1] && b[2] <= outer[2] && b[3] <= outer[3]);
                 if node.leaves & (1 << i) != 0 {
                     let r = &tree.leaves[node.child[i] as usize];

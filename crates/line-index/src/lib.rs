@@ -30,15 +30,21 @@
 //! screen, and a per-segment early out mispredicts on a large share of it): zero-length segments
 //! and those the window's bounding box rejects (both ends beyond one side, Cohen-Sutherland) are
 //! dropped, then those with an end outside the bounding box that meet none of the root's child
-//! boxes (they lie wholly outside). Per segment `a -> b` left:
+//! boxes (they lie wholly outside). When more segments are left than the tree has leaves, the
+//! batch will reach most of the window, so the vertices and nodes are first read in order, one
+//! load per cache line: a window evicted by other work then comes back at streaming speed instead
+//! of by a dependent miss per node and leaf (see `PERFORMANCE.md`). Per segment `a -> b` left:
 //!
 //! 1. an end strictly outside the bounding box is outside the window, so only the boxes meeting
 //!    the **segment** are walked, and the crossings on it give the other end's parity;
 //! 2. otherwise the tree is walked along the **ray** from `a` through `b` (the line from the start
 //!    on): a child is skipped when its box lies wholly on one side of the line or behind `a`;
-//! 3. in each leaf reached, Liu's rule: the exact sign of the line function at each vertex, a
-//!    crossing for each edge whose end signs differ, placed exactly before, at, inside or after
-//!    the segment's ends ([`clip_core::LineFrame::edge_crossing`]); edges on the line are boundary;
+//! 3. in each leaf reached, Liu's rule: the exact sign of the line function at each vertex (a
+//!    fixed-length, vectorised pass over the leaf's coordinates), a crossing for each edge whose
+//!    end signs differ, placed exactly before, at, inside or after the segment's ends
+//!    ([`clip_core::LineFrame::edge_crossing`]); edges on the line are boundary. A leaf whose box
+//!    lies strictly between the perpendiculars to the segment at its ends (decided exactly at the
+//!    box's extreme corners) has all its crossings inside the segment, and skips that placing;
 //! 4. the crossings go to [`clip_core::LineCrossings`], shared with Liu and the virtual-box clipper,
 //!    which sorts them and reads the pieces off by parity. Crossings before the start are not
 //!    looked for: every ring crosses a line an even number of times, so their parity is that of
@@ -55,11 +61,17 @@
 //!
 //! # Exactness
 //!
-//! Every decision is exact. A vertex's side is the rounded line function accepted beyond the error
-//! bound of the first stage of Shewchuk's `orient2d` and the adaptive predicate otherwise
-//! ([`clip_core::LineSide`]), so it is `orient2d`'s sign. A box is skipped only when a rounded
-//! two-product expression of exact coordinates clears the same kind of error bound, so a box the
-//! ray (or segment) touches is never skipped; the horizontal ray compares coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
+//! Every decision is exact. A vertex's side is the rounded line function accepted beyond one
+//! error bound taken for the whole bounding box (Shewchuk's first bound of `orient2d` with the
+//! largest products a point of the box can give, [`clip_core::LineSide::sign_bound`]) and the
+//! exact predicate otherwise, so it is `orient2d`'s sign. A crossing's place is exact; its
+//! parameter comes from the rounded values at the edge's ends where they place it as accurately as
+//! two values above `orient2d`'s trust fraction would, or within 1e-14 of the segment
+//! ([`clip_core::LineSide::crossing_values`]), and from `orient2d`'s accurate magnitudes
+//! otherwise: short edges near the line, on a finely sampled boundary, cost no exact expansion. A
+//! box is skipped only when a rounded two-product expression of exact coordinates at its extreme
+//! corner clears the same kind of error bound, so a box the ray (or segment) touches is never
+//! skipped; the horizontal ray compares coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
 //! as on its negative side (one crossing when its neighbours lie on opposite sides, a touch
 //! otherwise); an edge along the line is boundary, so visible.
 //!
@@ -67,10 +79,12 @@
 //!
 //! - **Preparation**: O(n) time for n window edges (one pass to lay out the vertices, one to build
 //!   the tree top-down over the runs); no sorting.
-//! - **Memory**: 32 bytes per vertex (the points and their coordinate arrays), one node of 152
-//!   bytes per about three leaves and 8 bytes per leaf: about 38 bytes per edge, 368 KiB at
+//! - **Memory**: 16 bytes per vertex (its x and y, held once, in two arrays), one node of 152
+//!   bytes per about three leaves and 8 bytes per leaf: about 22 bytes per edge, 212 KiB at
 //!   10^4 edges (measured by `reproduce beyond-paper`). [`PreparedLineIndex::memory_bytes`]
-//!   reports it.
+//!   reports it. The size matters beside other work: a window evicted from the caches is read
+//!   back at that cost, which was a third of the time per segment at 10^4 edges in
+//!   `reproduce beyond-paper` while the vertices were also held as points (38 bytes per edge).
 //! - **Per segment**: the boxes the ray meets at each level of the tree, about O(k log(n / k))
 //!   for k crossings on a boundary a line meets a bounded number of times (smooth or lobed
 //!   windows, holes), plus 17 vertex signs per leaf reached. Against windows of one leaf (up to

@@ -1,71 +1,139 @@
 //! Whether the ray from a segment's start through its end can meet a box: a conservative test, exact where it rejects.
 
-use clip_core::Point;
 use clip_core::predicates::ORIENT_ERROR_BOUND;
+use clip_core::{Point, Rect};
 
-use crate::edge_tree::{Node, WAYS};
+use crate::edge_tree::{MAX_X, MIN_X, MIN_Y, Node, WAYS};
 
 /// The ray `a + s (b - a)`, `s >= 0`, set up for box tests: the corner of a box where each tested
-/// quantity is largest (or smallest) depends only on the signs of `b - a`, so it is chosen once per
-/// segment, and a node's four child boxes are then tested with the same straight-line arithmetic.
+/// quantity is largest (or smallest) depends only on the signs of `b - a`, so which of a box's
+/// bounds to read is chosen once per segment, and a node's four child boxes are then tested with
+/// the same straight-line arithmetic, one corner per quantity.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Ray {
     a: Point,
+    /// The segment's other end (exact), for [`Ray::within_span`].
+    b: Point,
     d: Point,
+    /// Error bounds of the line function and of the projection on `d` at any point of the window's
+    /// bounding box (every box tested lies in it).
+    line_error: f64,
+    ahead_error: f64,
+    /// The error bound of the projection on `d` measured from `b`.
+    before_end_error: f64,
+    /// Rows of a node's sides at the corners where the line function is highest (`y_high`,
+    /// `x_low`) and lowest, and where the projection on `d` is largest (`x_far`, `y_far`): from the
+    /// signs of `d`, which are the exact ones.
+    y_high: usize,
+    x_low: usize,
+    x_far: usize,
+    y_far: usize,
 }
 
 impl Ray {
-    /// The ray from `a` through `b` (`a != b`).
+    /// The ray from `a` through `b` (`a != b`), for boxes inside `bounds`.
     #[inline]
-    pub fn new(a: Point, b: Point) -> Ray {
-        Ray { a, d: Point::new(b.x - a.x, b.y - a.y) }
+    pub fn new(a: Point, b: Point, bounds: &Rect) -> Ray {
+        let d = Point::new(b.x - a.x, b.y - a.y);
+        // The largest rounded |x - a.x| and |y - a.y| over the box: rounding is monotone, so no
+        // rounded product at a point of the box exceeds the one formed from these.
+        let far_x = (bounds.max.x - a.x).abs().max((bounds.min.x - a.x).abs());
+        let far_y = (bounds.max.y - a.y).abs().max((bounds.min.y - a.y).abs());
+        let far_x_b = (bounds.max.x - b.x).abs().max((bounds.min.x - b.x).abs());
+        let far_y_b = (bounds.max.y - b.y).abs().max((bounds.min.y - b.y).abs());
+        // Chosen by arithmetic: a branch here mispredicts on half of a batch of random segments.
+        let (x_up, y_up) = (usize::from(d.x >= 0.0), usize::from(d.y >= 0.0));
+        Ray {
+            a,
+            b,
+            d,
+            line_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_y + d.y.abs() * far_x),
+            ahead_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_x + d.y.abs() * far_y),
+            before_end_error: ORIENT_ERROR_BOUND * (d.x.abs() * far_x_b + d.y.abs() * far_y_b),
+            y_high: MIN_Y + 2 * x_up,
+            x_low: MAX_X - 2 * y_up,
+            x_far: MIN_X + 2 * x_up,
+            y_far: MIN_Y + 2 * y_up,
+        }
     }
 
     /// Bit `i` set unless the ray certainly misses child box `i` of `node`: every corner strictly
     /// on one side of the line, or strictly behind the start. Each quantity is one rounded
-    /// two-product expression of exact coordinates, trusted only beyond Shewchuk's error bound for
-    /// such an expression (the bound of `orient2d`'s first stage), so a box the ray touches is never
-    /// missed. Unused slots are not masked here.
+    /// two-product expression of exact coordinates at the corner where it is extreme, trusted only
+    /// beyond Shewchuk's error bound for such an expression (the bound of `orient2d`'s first
+    /// stage, taken once for the whole bounding box), so a box the ray touches is never missed.
+    /// Unused slots are not masked here.
     #[inline(always)]
     pub fn hits(&self, node: &Node) -> u32 {
         let ahead = self.ahead(node);
         self.line_hits(node) & ahead
     }
 
+    /// As [`Ray::line_hits`], and also clear for a box apart from `segment` (the segment's own
+    /// box): the boxes the closed segment can meet. Both tests child by child in lanes, one mask.
+    #[inline(always)]
+    pub fn segment_hits(&self, node: &Node, segment: &Rect) -> u32 {
+        let (y_high, y_low) = (&node.sides[self.y_high & 3], &node.sides[(self.y_high + 2) & 3]);
+        let (x_low, x_high) = (&node.sides[self.x_low & 3], &node.sides[(self.x_low + 2) & 3]);
+        let [min_x, min_y, max_x, max_y] = &node.sides;
+        let mut keep = [0u32; WAYS];
+        for (i, keep) in keep.iter_mut().enumerate() {
+            let highest = self.d.x * (y_high[i] - self.a.y) - self.d.y * (x_low[i] - self.a.x);
+            let lowest = self.d.x * (y_low[i] - self.a.y) - self.d.y * (x_high[i] - self.a.x);
+            let overlaps = (min_x[i] <= segment.max.x)
+                & (max_x[i] >= segment.min.x)
+                & (min_y[i] <= segment.max.y)
+                & (max_y[i] >= segment.min.y);
+            *keep = u32::from((highest >= -self.line_error) & (lowest <= self.line_error) & overlaps);
+        }
+        keep[0] | (keep[1] << 1) | (keep[2] << 2) | (keep[3] << 3)
+    }
+
     /// As [`Ray::hits`] for the whole line: bit `i` set unless every corner of box `i` lies
     /// strictly on one side of it.
     #[inline(always)]
     pub fn line_hits(&self, node: &Node) -> u32 {
-        // f(c) = l - r with l = d.x (c.y - a.y), r = d.y (c.x - a.x): its largest value over the
-        // corners takes the larger l and the smaller r, its smallest the reverse. Taken with
-        // min and max of the two candidates (the same products a choice of corner by the signs
-        // of d would pick), so the direction costs no branch.
+        // f(c) = d.x (c.y - a.y) - d.y (c.x - a.x) is largest at the corner with the larger y when
+        // d.x >= 0 and the smaller x when d.y >= 0, smallest at the opposite corner (the signs of
+        // the rounded d are the exact ones).
+        // The opposite row of a side is two rows on (mod 4); `& 3` lets the compiler drop the
+        // bounds checks.
+        let (y_high, y_low) = (&node.sides[self.y_high & 3], &node.sides[(self.y_high + 2) & 3]);
+        let (x_low, x_high) = (&node.sides[self.x_low & 3], &node.sides[(self.x_low + 2) & 3]);
+        // Child by child in lanes (the children side by side vectorise), the bits packed after.
+        let mut keep = [0u32; WAYS];
+        for (i, keep) in keep.iter_mut().enumerate() {
+            let highest = self.d.x * (y_high[i] - self.a.y) - self.d.y * (x_low[i] - self.a.x);
+            let lowest = self.d.x * (y_low[i] - self.a.y) - self.d.y * (x_high[i] - self.a.x);
+            *keep = u32::from((highest >= -self.line_error) & (lowest <= self.line_error));
+        }
+        keep[0] | (keep[1] << 1) | (keep[2] << 2) | (keep[3] << 3)
+    }
+
+    /// Bit `i` set unless box `i` lies strictly behind the start: its corner farthest along the
+    /// ray has `d . (c - a) < 0`, beyond the same kind of error bound.
+    #[inline(always)]
+    fn ahead(&self, node: &Node) -> u32 {
+        let (x_far, y_far) = (&node.sides[self.x_far & 3], &node.sides[self.y_far & 3]);
         let mut mask = 0;
         for i in 0..WAYS {
-            let (l1, l2) = (self.d.x * (node.max_y[i] - self.a.y), self.d.x * (node.min_y[i] - self.a.y));
-            let (r1, r2) = (self.d.y * (node.min_x[i] - self.a.x), self.d.y * (node.max_x[i] - self.a.x));
-            let (l, r) = (l1.max(l2), r1.min(r2));
-            let below = l - r < -(ORIENT_ERROR_BOUND * (l.abs() + r.abs()));
-            let (l, r) = (l1.min(l2), r1.max(r2));
-            let above = l - r > ORIENT_ERROR_BOUND * (l.abs() + r.abs());
-            mask |= u32::from(!(below | above)) << i;
+            let farthest = self.d.x * (x_far[i] - self.a.x) + self.d.y * (y_far[i] - self.a.y);
+            mask |= u32::from(farthest >= -self.ahead_error) << i;
         }
         mask
     }
 
-    /// Bit `i` set unless box `i` lies strictly behind the start: its corner farthest along the
-    /// ray has `d . (c - a) < 0`, beyond the same error bound.
+    /// True when child box `i` of `node` lies strictly between the perpendiculars to the segment
+    /// at its ends: every point `c` of it has `d . (c - a) > 0` and `d . (c - b) < 0`, each decided
+    /// at the box's extreme corner beyond the error bound, so exactly. Every crossing of the line
+    /// with an edge in that box is then inside the segment.
     #[inline(always)]
-    fn ahead(&self, node: &Node) -> u32 {
-        // The corner farthest along the ray: the larger of the two products per axis.
-        let mut mask = 0;
-        for i in 0..WAYS {
-            let p = (self.d.x * (node.max_x[i] - self.a.x)).max(self.d.x * (node.min_x[i] - self.a.x));
-            let q = (self.d.y * (node.max_y[i] - self.a.y)).max(self.d.y * (node.min_y[i] - self.a.y));
-            let behind = p + q < -(ORIENT_ERROR_BOUND * (p.abs() + q.abs()));
-            mask |= u32::from(!behind) << i;
-        }
-        mask
+    pub fn within_span(&self, node: &Node, i: usize) -> bool {
+        let (x_far, y_far) = (node.sides[self.x_far & 3][i], node.sides[self.y_far & 3][i]);
+        let (x_near, y_near) = (node.sides[(self.x_far + 2) & 3][i], node.sides[(self.y_far + 2) & 3][i]);
+        let nearest = self.d.x * (x_near - self.a.x) + self.d.y * (y_near - self.a.y);
+        let farthest = self.d.x * (x_far - self.b.x) + self.d.y * (y_far - self.b.y);
+        (nearest > self.ahead_error) & (farthest < -self.before_end_error)
     }
 }
 
@@ -75,19 +143,32 @@ mod tests {
 
     /// A node whose only child is the unit box.
     fn unit() -> Node {
-        Node {
-            min_x: [0.0; WAYS],
-            min_y: [0.0; WAYS],
-            max_x: [1.0; WAYS],
-            max_y: [1.0; WAYS],
-            child: [0; WAYS],
-            leaves: 1,
-            present: 1,
-        }
+        Node { sides: [[0.0; WAYS], [0.0; WAYS], [1.0; WAYS], [1.0; WAYS]], child: [0; WAYS], leaves: 1, present: 1 }
     }
 
     fn misses(ax: f64, ay: f64, bx: f64, by: f64) -> bool {
-        Ray::new(Point::new(ax, ay), Point::new(bx, by)).hits(&unit()) & 1 == 0
+        let bounds = Rect::new(0.0, 0.0, 1.0, 1.0);
+        Ray::new(Point::new(ax, ay), Point::new(bx, by), &bounds).hits(&unit()) & 1 == 0
+    }
+
+    #[test]
+    fn boxes_within_the_span_only_when_strictly_between_the_ends() {
+        let bounds = Rect::new(0.0, 0.0, 1.0, 1.0);
+        let within = |ax: f64, ay: f64, bx: f64, by: f64| {
+            Ray::new(Point::new(ax, ay), Point::new(bx, by), &bounds).within_span(&unit(), 3)
+        };
+        // Across the box, either way and slanted: strictly between the ends.
+        assert!(within(-1.0, 0.5, 2.0, 0.5));
+        assert!(within(2.0, 0.5, -1.0, 0.5));
+        assert!(within(-1.0, -2.0, 2.0, 3.0));
+        // An end on the box's side, at its corner, or inside it: not strictly between.
+        assert!(!within(0.0, 0.5, 2.0, 0.5));
+        assert!(!within(-1.0, 0.5, 1.0, 0.5));
+        assert!(!within(-1.0, -1.0, 1.0, 1.0));
+        assert!(!within(0.5, 0.5, 2.0, 0.5));
+        // The perpendicular at the start through the corner (0, 0) exactly, and just past it.
+        assert!(!within(-1.0, 1.0, 1.0, 3.0));
+        assert!(within(-1.0, 0.9, 1.0, 2.9));
     }
 
     #[test]

@@ -242,6 +242,11 @@ pub struct StageSum {
     pub total: f64,
     /// Each stage's title and share x (Liu - New2).
     pub parts: Vec<(String, f64)>,
+    /// Σ share x ns over the stages, New2's and Liu's: each clipper's time per segment of the
+    /// batch as it would be with the batch sorted by New2's stage.
+    pub sorted: (f64, f64),
+    /// Σ share x (Liu - New2) over the 45° box and the virtual box: what New2's two boxes save.
+    pub boxes: f64,
 }
 
 /// Per window, for the segments New2 settles at each stage: their share, New2's and Liu's ns per
@@ -264,12 +269,17 @@ pub fn stage_times_table(records: &[StageTimeRecord]) -> (String, Vec<StageSum>)
         let mut cells = vec![edges.to_string(), label.clone()];
         let mut total = 0.0;
         let mut parts = Vec::new();
+        let (mut sorted, mut boxes) = ((0.0, 0.0), 0.0);
         for (stage, title) in STAGE_COLUMNS {
             match (find(stage, "virtual-box"), find(stage, "liu")) {
                 (Some(n), Some(l)) => {
                     let share = n.segments as f64 / n.of as f64;
                     let part = share * (l.ns_per_segment - n.ns_per_segment);
                     total += part;
+                    sorted = (sorted.0 + share * n.ns_per_segment, sorted.1 + share * l.ns_per_segment);
+                    if stage == "rotated-box" || stage == "virtual-box" {
+                        boxes += part;
+                    }
                     parts.push((title.to_owned(), part));
                     cells.push(format!(
                         "{}%, {} / {}",
@@ -283,20 +293,23 @@ pub fn stage_times_table(records: &[StageTimeRecord]) -> (String, Vec<StageSum>)
         }
         cells.push(format!("**{}**", num(total, 1)));
         body.push(cells);
-        sums.push(StageSum { label, edges, total, parts });
+        sums.push(StageSum { label, edges, total, parts, sorted, boxes });
     }
     (table(&head, &body), sums)
 }
 
-/// What the stage timings say, computed from them.
+/// What the stage timings say, computed from them: per window, where New2 gains and loses
+/// against Liu on the batch sorted by stage, what the mixed order of the real batch costs each
+/// clipper, and whether New2's boxes could pay for that.
 pub fn stage_reading(sums: &[StageSum], rows: &[Row]) -> String {
     let mut text = String::new();
-    for StageSum { label, edges, total, parts } in sums {
-        // The same window's whole-batch medians, in ns per segment (batches of 10000).
+    for StageSum { label, edges, total, parts, sorted, boxes } in sums {
+        // The same window's whole-batch medians, Liu's and New2's, in ns per segment (batches of
+        // 10000).
         let whole = rows
             .iter()
             .find(|r| r.shape == "concave" && r.edges == *edges && SIZE_ROWS_NAMES[r.size_row].1 == label.as_str())
-            .map(|r| (r.ms[0] - r.ms[2]) * 1e6 / 10_000.0);
+            .map(|r| (r.ms[0] * 1e6 / 10_000.0, r.ms[2] * 1e6 / 10_000.0));
         let (gain, loss): (Vec<_>, Vec<_>) = parts.iter().partition(|(_, v)| *v >= 0.0);
         let list = |v: &[&(String, f64)]| {
             v.iter().map(|(t, ns)| format!("{t} {}", num(ns.abs(), 1))).collect::<Vec<_>>().join(", ")
@@ -308,15 +321,45 @@ pub fn stage_reading(sums: &[StageSum], rows: &[Row]) -> String {
             if gain.is_empty() { "no stage".to_owned() } else { list(&gain) },
             if loss.is_empty() { "no stage".to_owned() } else { list(&loss) },
         ));
-        if let Some(whole) = whole {
+        if let Some((liu, new2)) = whole {
+            let saved = liu - new2;
+            // What the mixed order costs each clipper over its stage sum, and New2's excess.
+            let (order_new2, order_liu) = (new2 - sorted.0, liu - sorted.1);
+            let excess = order_new2 - order_liu;
             text.push_str(&format!(
                 "  In the mixed batch of the table above New2 {} {} ns per segment; the {} ns between the two is what the \
                  order of the batch costs: sorted by stage, every early out is predicted, while in the mixed batch the \
                  stage a segment stops at is random, and each of New2's extra early outs (45° box, virtual box, code \
                  sum) can be a mispredicted branch.\n",
-                if whole >= 0.0 { "saves" } else { "loses" },
-                num(whole.abs(), 1),
-                num((total - whole).abs(), 1)
+                if saved >= 0.0 { "saves" } else { "loses" },
+                num(saved.abs(), 1),
+                num((total - saved).abs(), 1)
+            ));
+            text.push_str(&format!(
+                "  Split by clipper: New2's stages sum to {} ns per segment against its {} in the mixed batch ({} ns \
+                 for the order), Liu's to {} against {} ({} ns). New2's two boxes save {} ns per segment of the batch; \
+                 {}\n",
+                num(sorted.0, 1),
+                num(new2, 1),
+                num(order_new2, 1),
+                num(sorted.1, 1),
+                num(liu, 1),
+                num(order_liu, 1),
+                num(*boxes, 1),
+                if *boxes > excess {
+                    format!(
+                        "that is more than the {} ns more that the mixed order costs New2 than Liu, so the boxes pay \
+                         for themselves here.",
+                        num(excess, 1)
+                    )
+                } else {
+                    format!(
+                        "even were New2's code-sum and intersected segments no dearer than Liu's, that is less than \
+                         the {} ns more that the mixed order costs New2 than Liu: at this size New2 cannot be faster \
+                         than Liu on a random batch unless that order cost falls below what its boxes save.",
+                        num(excess, 1)
+                    )
+                }
             ));
         }
     }
@@ -502,6 +545,46 @@ mod tests {
             iterations: 1,
             time_ns: ms * 1e6,
         }
+    }
+
+    #[test]
+    fn stage_reading_splits_the_order_cost_and_weighs_the_boxes_against_it() {
+        let record = |stage: &str, clipper: &str, segments: usize, ns: f64| StageTimeRecord {
+            size_row: "W1".into(),
+            edges: 6,
+            stage: stage.into(),
+            segments,
+            of: 100,
+            clipper: clipper.into(),
+            ns_per_segment: ns,
+        };
+        // Half the batch rejected by the MEB (2 ns each), a quarter by the 45° box (New2 4 ns,
+        // Liu 20), a quarter intersected (New2 50, Liu 40): sorted sums New2 1 + 1 + 12.5 = 14.5,
+        // Liu 1 + 5 + 10 = 16; the boxes save 0.25 x 16 = 4 ns.
+        let records = vec![
+            record("meb", "virtual-box", 50, 2.0),
+            record("meb", "liu", 50, 2.0),
+            record("rotated-box", "virtual-box", 25, 4.0),
+            record("rotated-box", "liu", 25, 20.0),
+            record("intersected", "virtual-box", 25, 50.0),
+            record("intersected", "liu", 25, 40.0),
+        ];
+        let (_, sums) = stage_times_table(&records);
+        assert_eq!((sums[0].sorted, sums[0].boxes), ((14.5, 16.0), 4.0));
+        let row = |new2_ms: f64| Row {
+            shape: "concave".into(),
+            edges: 6,
+            size_row: 0,
+            w1_w2: (2.7, 41.0),
+            ms: [0.18, f64::NAN, new2_ms, f64::NAN, f64::NAN, f64::NAN],
+            repetitions: [1; 6],
+        };
+        // Mixed batch: Liu 18 ns (order 2), New2 21.5 (order 7): the excess 5 exceeds the boxes' 4.
+        let text = stage_reading(&sums, &[row(0.215)]);
+        assert!(text.contains("New2's stages sum to 14.5 ns per segment against its 21.5"), "{text}");
+        assert!(text.contains("the 5.0 ns more that the mixed order costs New2 than Liu: at this size New2 cannot"));
+        // New2 at 19 ns (order 4.5): the excess 2.5 is below the boxes' 4.
+        assert!(stage_reading(&sums, &[row(0.19)]).contains("so the boxes pay for themselves here"));
     }
 
     #[test]
