@@ -30,11 +30,15 @@ impl Sweep<'_> {
                 break;
             }
             let x = self.ael.get(k).curr_x.clamp(lo, hi);
+            // k's x on the scanline is computed: edges through the exact crossing lie within
+            // rounding of it, and take it too.
+            self.rounded_crossing = true;
             if rightwards {
                 self.cross(pos, Point::new(x, y));
             } else {
                 self.cross(pos - 1, Point::new(x, y));
             }
+            self.rounded_crossing = false;
         }
         self.ael.get_mut(s.edge).curr_x = s.to_x;
     }

@@ -494,6 +494,7 @@ impl<'a> Sweep<'a> {
                 // point that close to the line mostly takes the slow, adaptive path.
                 let (near, within_rounding) = (offset <= 1e-9 * scale, rounded && offset <= ROUNDING * scale);
                 if !near || (!within_rounding && e.side_of(p) != Orientation::Collinear && !self.coincident(id, k)) {
+                    self.out.near_miss |= near && !rounded;
                     break;
                 }
                 if e.outrec != NONE && p != e.bot && p != e.top {
