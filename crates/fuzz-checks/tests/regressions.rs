@@ -227,55 +227,57 @@ fn vatti_xor_needing_five_repair_sweeps_at_5e5() {
     regression("vatti", "xor-needing-five-repair-sweeps-at-5e5");
 }
 
-/// Known issues, not fixed, found by a 10-minute run of the `vatti` target after the fixes above:
-/// `fuzz/known-issues/vatti-self-overlap/` holds 2 clips of rings with vertices on y = x near
-/// 1e141 whose union has a ring running along part of that line twice (the clean-up splits only horizontal edges at the vertices inside them,
-/// and these outputs are far from the full check's gate); `fuzz/known-issues/vatti-same-way/`
-/// holds 3 whose rings still run the same way along part of an edge (at 1e15, near (5e5, 4e6) and
-/// near 1e-7) after 16 repair sweeps too; not yet diagnosed. All 5 fail the same way before the
-/// fixes above. The regions are right (the next test).
+/// Rings with vertices on y = x near 1e141 and an edge from (5e5, 4e6) to (5e140, 5e140), which
+/// passes 1.4e6 (far below an ulp there) above the exact vertices (3e140, 3e140) and
+/// (3.75e140, 3.75e140): the union's hole ran up y = x between crossings rounded onto it, through
+/// both vertices, and later down from one to the other, overlapping itself. The sweep rightly kept
+/// the vertices out of that edge's chain (they are not on it), and the clean-up split only
+/// horizontal edges at the vertices inside them. The sweep now reports such a near miss, and the
+/// clean-up then splits every edge at the vertices on it, so the two runs cancel.
 #[test]
-#[ignore = "vatti: rings overlapping along part of a non-horizontal edge (issue 15, known issues)"]
-fn vatti_known_issues_self_overlap_and_same_way() {
-    let mut failing = Vec::new();
-    for path in known_issues() {
-        if let Err(why) = clip_fuzz_checks::vatti::check_bytes(&fs::read(&path).expect("readable input")) {
-            failing.push(format!("{}: {why}", path.display()));
-        }
-    }
-    assert!(failing.is_empty(), "{}", failing.join("\n"));
+fn vatti_union_retracing_y_equals_x_at_1e141() {
+    regression("vatti", "union-retracing-y-equals-x-at-1e141");
 }
 
-/// The known issues above break the output's form only: every operation's result covers the
-/// exact region within the oracle's tolerance.
+/// Spikes from (5e5, 4e6) to points on y = x near 1e141: the union's first output was broken and
+/// the repair's sweep rounded crossings onto y = x, leaving a ring that runs down it across
+/// exact vertices it ran up through before (a self-overlap the repair's own clean-up did not
+/// see). Fixed by the same split after a near miss.
 #[test]
-fn vatti_known_issues_keep_their_regions() {
-    use clip_core::{BoolOp, FillRule, PolygonClipper};
-    use clip_oracle::polygon::{REGION_TOLERANCE, region_area, tolerance};
-    let paths = known_issues();
-    assert!(!paths.is_empty(), "no known issue found");
-    for path in paths {
-        let case = clip_fuzz_checks::vatti::decode(&fs::read(&path).expect("readable input")).expect("a case");
-        let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
-        for op in BoolOp::ALL {
-            let out = clip_vatti::Vatti.clip(&case.subject, &case.clip, op, case.fill).expect("valid input");
-            let layers = [(&case.subject, case.fill), (&case.clip, case.fill), (&out, FillRule::NonZero)];
-            let xor = region_area(&layers, |inside| op.apply(inside[0], inside[1]) != inside[2]);
-            assert!(xor <= tol, "{} {op}: region off by {xor:e} (tolerance {tol:e})", path.display());
-        }
-    }
+fn vatti_repair_retracing_y_equals_x_at_1e141() {
+    regression("vatti", "repair-retracing-y-equals-x-at-1e141");
 }
 
-/// The inputs in vatti's known issues' folders (pictures left out).
-fn known_issues() -> Vec<std::path::PathBuf> {
-    let mut paths = Vec::new();
-    for folder in ["vatti-self-overlap", "vatti-same-way"] {
-        let entries = fs::read_dir(fuzz_dir().join("known-issues").join(folder)).expect("the known issues' folder");
-        paths.extend(
-            entries.map(|e| e.expect("readable folder").path()).filter(|p| p.extension().is_none_or(|e| e != "svg")),
-        );
-    }
-    paths
+/// At 1e15 (an ulp is 0.125) the union had two rings running the same way up
+/// x = -999999999999999.9 between exact input vertices and rounded crossings: one ring's edge
+/// passed through the other's vertices, so they shared no end and the clean-up did not compare
+/// them. Fixed by the split after a near miss, which makes the shared stretch an edge of both and
+/// lets the repair join them.
+#[test]
+fn vatti_rounded_vertical_through_exact_vertices_at_1e15() {
+    regression("vatti", "rounded-vertical-through-exact-vertices-at-1e15");
+}
+
+/// Near 1e-7 with a clip vertex at -2.8e18 on y = x: the xor's repair left a triangle a few ulps
+/// wide whose vertices on y = x lie inside another ring's edge from (0, 0) to (-2.8e18, -2.8e18),
+/// both running the same way. Fixed twice over: crossings found while an edge slides along a
+/// horizontal are now rounded crossings (edges within rounding of them take the point), and the
+/// split after a near miss.
+#[test]
+fn vatti_triangle_inside_a_slanted_edge_at_1e_7() {
+    regression("vatti", "triangle-inside-a-slanted-edge-at-1e-7");
+}
+
+/// Near (5e5, 4e6) with clip edges to 1e21 that are nearly horizontal: every repair sweep rounded
+/// their crossings at new x on y = 3999999.999999947, and the clean-up called each result broken
+/// because two edges ran one way and one back along a stretch (a valid form: it bounds the
+/// stretch once). After 8 sweeps the last, really broken output was returned. Edges now count as
+/// running the same way only once opposite edges cancelled; the stricter reading (two one way
+/// and one back, near rounding) judges the sweep's own output only, where a fuzz input's xor
+/// (`fuzz/crashes/vatti/crash-2d517e83...`) needs it.
+#[test]
+fn vatti_repair_never_settling_near_horizontal_edges_at_5e5() {
+    regression("vatti", "repair-never-settling-near-horizontal-edges-at-5e5");
 }
 
 /// At 1e15 (an ulp is 0.125) a triangle touching a clip ring at a vertex that ring visits twice,
