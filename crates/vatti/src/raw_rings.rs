@@ -69,6 +69,7 @@ impl RawRings {
 
     /// Closes the ring whose points begin at index `start`: the seam's repeats go, and a ring of
     /// fewer than three points is dropped.
+    #[inline]
     pub(crate) fn end_ring(&mut self, start: usize) {
         while self.points.len() > start + 1 && self.points[start] == self.points[self.points.len() - 1] {
             self.points.pop();
