@@ -13,7 +13,8 @@
 //! an edge can pass exactly through a vertex that is not on the input edge (points on y = x near
 //! 1e141 inside an edge rounded onto that line): a ring then overlaps itself or another along
 //! part of the edge. Without a near miss a vertex on an output edge is on its input edge, and the
-//! sweep put it into the edge's chain.
+//! sweep put it into the edge's chain. The split looks at every point in an edge's height range,
+//! so it is skipped where that would exceed `SLANTED_SCAN_BUDGET` points in all.
 
 use clip_core::Point;
 use clip_core::predicates::{Orientation, orient};
@@ -193,6 +194,26 @@ impl Touches {
     }
 }
 
+/// Points that splitting slanted edges may look at, in all, beyond which it is skipped (a known
+/// limit: outputs of thousands of long edges with a near miss keep slanted overlaps unsplit).
+const SLANTED_SCAN_BUDGET: usize = 1 << 22;
+
+/// How many points the slanted edges' height ranges hold, in all (`by_y`: the points by y).
+fn slanted_scan_length(raw: &RawRings, by_y: &[(f64, f64, u32)]) -> usize {
+    let mut total = 0usize;
+    for ri in 0..raw.len() {
+        let r = raw.ring(ri);
+        for i in 0..r.len() {
+            let (a, b) = (r[i], r[(i + 1) % r.len()]);
+            if a.y != b.y {
+                let (bottom, top) = (a.y.min(b.y), a.y.max(b.y));
+                total += by_y.partition_point(|&(y, _, _)| y < top) - by_y.partition_point(|&(y, _, _)| y <= bottom);
+            }
+        }
+    }
+    total
+}
+
 /// Every horizontal edge (every edge, with `every_edge`) with vertices strictly inside it, in
 /// ring and edge order; its ring and the vertices' rings are marked touched. A vertex is inside a
 /// slanted edge when it lies on the edge's line (exact) between its ends.
@@ -206,6 +227,9 @@ fn split_edges(raw: &RawRings, ring: &[u32], touched: &mut [bool], ids: &[u32], 
     }
     let mut by_y: Vec<(f64, f64, u32)> = raw.points.iter().enumerate().map(|(k, p)| (p.y, p.x, k as u32)).collect();
     by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    // Slanted edges look at every point in their height range: quadratic at worst (long edges
+    // over many points), so they are split only while that stays within the budget.
+    let every_edge = every_edge && slanted_scan_length(raw, &by_y) <= SLANTED_SCAN_BUDGET;
     let mut splits = Vec::new();
     let mut inside = Vec::new();
     for ri in 0..raw.len() {
