@@ -227,16 +227,85 @@ fn vatti_xor_needing_five_repair_sweeps_at_5e5() {
     regression("vatti", "xor-needing-five-repair-sweeps-at-5e5");
 }
 
-/// Known issues, not fixed, found by a 10-minute run of the `vatti` target after the fixes above:
-/// `fuzz/known-issues/vatti-self-overlap/` holds 2 clips of rings with vertices on y = x near
-/// 1e141 whose union has a ring running along part of that line twice (the clean-up splits only horizontal edges at the vertices inside them,
-/// and these outputs are far from the full check's gate); `fuzz/known-issues/vatti-same-way/`
-/// holds 3 whose rings still run the same way along part of an edge (at 1e15, near (5e5, 4e6) and
-/// near 1e-7) after 16 repair sweeps too; not yet diagnosed. All 5 fail the same way before the
-/// fixes above. The regions are right (the next test).
+/// Rings with vertices on y = x near 1e141 and an edge from (5e5, 4e6) to (5e140, 5e140), which
+/// passes 1.4e6 (far below an ulp there) above the exact vertices (3e140, 3e140) and
+/// (3.75e140, 3.75e140): the union's hole ran up y = x between crossings rounded onto it, through
+/// both vertices, and later down from one to the other, overlapping itself. The sweep rightly kept
+/// the vertices out of that edge's chain (they are not on it), and the clean-up split only
+/// horizontal edges at the vertices inside them. The sweep now reports such a near miss, and the
+/// clean-up then splits every edge at the vertices on it, so the two runs cancel.
 #[test]
-#[ignore = "vatti: rings overlapping along part of a non-horizontal edge (issue 15, known issues)"]
-fn vatti_known_issues_self_overlap_and_same_way() {
+fn vatti_union_retracing_y_equals_x_at_1e141() {
+    regression("vatti", "union-retracing-y-equals-x-at-1e141");
+}
+
+/// Spikes from (5e5, 4e6) to points on y = x near 1e141: the union's first output was broken and
+/// the repair's sweep rounded crossings onto y = x, leaving a ring that runs down it across
+/// exact vertices it ran up through before (a self-overlap the repair's own clean-up did not
+/// see). Fixed by the same split after a near miss.
+#[test]
+fn vatti_repair_retracing_y_equals_x_at_1e141() {
+    regression("vatti", "repair-retracing-y-equals-x-at-1e141");
+}
+
+/// At 1e15 (an ulp is 0.125) the union had two rings running the same way up
+/// x = -999999999999999.9 between exact input vertices and rounded crossings: one ring's edge
+/// passed through the other's vertices, so they shared no end and the clean-up did not compare
+/// them. Fixed by the split after a near miss, which makes the shared stretch an edge of both and
+/// lets the repair join them.
+#[test]
+fn vatti_rounded_vertical_through_exact_vertices_at_1e15() {
+    regression("vatti", "rounded-vertical-through-exact-vertices-at-1e15");
+}
+
+/// Near 1e-7 with a clip vertex at -2.8e18 on y = x: the xor's repair left a triangle a few ulps
+/// wide whose vertices on y = x lie inside another ring's edge from (0, 0) to (-2.8e18, -2.8e18),
+/// both running the same way. Fixed twice over: crossings found while an edge slides along a
+/// horizontal are now rounded crossings (edges within rounding of them take the point), and the
+/// split after a near miss.
+#[test]
+fn vatti_triangle_inside_a_slanted_edge_at_1e_7() {
+    regression("vatti", "triangle-inside-a-slanted-edge-at-1e-7");
+}
+
+/// Near (5e5, 4e6) with clip edges to 1e21 that are nearly horizontal: every repair sweep rounded
+/// their crossings at new x on y = 3999999.999999947, and the clean-up called each result broken
+/// because two edges ran one way and one back along a stretch (a valid form: it bounds the
+/// stretch once). After 8 sweeps the last, really broken output was returned. Edges now count as
+/// running the same way only once opposite edges cancelled; the stricter reading (two one way
+/// and one back, near rounding) judges the sweep's own output only, where a fuzz input's xor
+/// (`fuzz/crashes/vatti/crash-2d517e83...`) needs it.
+#[test]
+fn vatti_repair_never_settling_near_horizontal_edges_at_5e5() {
+    regression("vatti", "repair-never-settling-near-horizontal-edges-at-5e5");
+}
+
+/// Rings near 1e-89 under even-odd: the union's first output had two rings running the same way
+/// along an edge, but a rounded crossing at 1.4e-104 lay below `clip_core::MIN_COORDINATE`, so
+/// the repair's sweep refused the output and it was returned broken. Such coordinates now become
+/// 0 before the repair (rings left without area go), a move far below the rounding of the rest.
+#[test]
+fn vatti_union_repair_refused_below_min_coordinate_at_1e_89() {
+    regression("vatti", "union-repair-refused-below-min-coordinate-at-1e-89");
+}
+
+/// The same refusal in an xor near 1e-89 (a crossing rounded to 2.4e-103), fixed the same way.
+#[test]
+fn vatti_xor_repair_refused_below_min_coordinate_at_1e_89() {
+    regression("vatti", "xor-repair-refused-below-min-coordinate-at-1e-89");
+}
+
+/// Known issue, not fixed, found by a 10-minute run of the `vatti` target after the fixes above
+/// (`fuzz/known-issues/vatti-same-way/`): near (0.1, 0.7) the union leaves a sliver ring along
+/// y = x + 0.6 and the outer ring both running up the edge (0.1, 0.7)-(0.1, 0.7000000000000003);
+/// the sliver's edge crosses the outer's horizontal y = 0.7 3e-16 left of (0.1, 0.7), and every
+/// repair sweep returns the same two rings: the sweep does not make that crossing (probably the
+/// edge's x on that scanline, computed from its far end at -2.9 with an error of an ulp of 3,
+/// lands on the horizontal's end; not yet confirmed in the sweep, which another branch works on).
+/// The region is right (the next test).
+#[test]
+#[ignore = "vatti: a sliver's crossing with a horizontal's end rounded away (issue 15, known issues)"]
+fn vatti_known_issues_same_way() {
     let mut failing = Vec::new();
     for path in known_issues() {
         if let Err(why) = clip_fuzz_checks::vatti::check_bytes(&fs::read(&path).expect("readable input")) {
@@ -246,8 +315,8 @@ fn vatti_known_issues_self_overlap_and_same_way() {
     assert!(failing.is_empty(), "{}", failing.join("\n"));
 }
 
-/// The known issues above break the output's form only: every operation's result covers the
-/// exact region within the oracle's tolerance.
+/// The known issue above breaks the output's form only: every operation's result covers the exact
+/// region within the oracle's tolerance.
 #[test]
 fn vatti_known_issues_keep_their_regions() {
     use clip_core::{BoolOp, FillRule, PolygonClipper};
@@ -266,16 +335,11 @@ fn vatti_known_issues_keep_their_regions() {
     }
 }
 
-/// The inputs in vatti's known issues' folders (pictures left out).
+/// The inputs in vatti's known issues' folder (pictures left out).
 fn known_issues() -> Vec<std::path::PathBuf> {
-    let mut paths = Vec::new();
-    for folder in ["vatti-self-overlap", "vatti-same-way"] {
-        let entries = fs::read_dir(fuzz_dir().join("known-issues").join(folder)).expect("the known issues' folder");
-        paths.extend(
-            entries.map(|e| e.expect("readable folder").path()).filter(|p| p.extension().is_none_or(|e| e != "svg")),
-        );
-    }
-    paths
+    let entries =
+        fs::read_dir(fuzz_dir().join("known-issues").join("vatti-same-way")).expect("the known issues' folder");
+    entries.map(|e| e.expect("readable folder").path()).filter(|p| p.extension().is_none_or(|e| e != "svg")).collect()
 }
 
 /// At 1e15 (an ulp is 0.125) a triangle touching a clip ring at a vertex that ring visits twice,

@@ -4,14 +4,15 @@
 //! the result pinches at a point a ring may visit that point twice, two rings may share an edge
 //! in opposite directions (zero-width gaps and slivers between coincident edges), and horizontal
 //! output edges may overlap. Here such rings are taken apart into directed edges, split where a
-//! vertex lies inside a horizontal edge, opposite edges cancel, and rings are walked again,
+//! vertex lies inside a horizontal edge (inside any edge, when the sweep reported a near miss:
+//! see `touches`), opposite edges cancel, and rings are walked again,
 //! leaving each vertex by the outgoing edge that bounds the same corner of the region as the
 //! incoming one (the first one clockwise from the way back), then split wherever they still
 //! visit a vertex twice. So every ring is simple; rings touch only at vertices; outers come out
 //! counter-clockwise and holes clockwise. Collinear vertices are dropped last.
 
 use clip_core::predicates::{Orientation, orient};
-use clip_core::{Point, Ring, ring_winding};
+use clip_core::{Point, Rect, Ring, ring_winding};
 
 use crate::raw_rings::RawRings;
 use crate::simplify::simplify_ring;
@@ -33,7 +34,7 @@ pub(crate) struct CleanRings {
 /// are already simple and lose only collinear vertices. `touches` is a reused work buffer.
 #[cfg(test)]
 pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> CleanRings {
-    conventional_rings_checked(raw, touches, || true)
+    conventional_rings_checked(raw, touches, true, || true)
 }
 
 /// Clockwise rings times rings up to which the held test runs whatever `near_rounding` says.
@@ -43,9 +44,13 @@ const HELD_TEST_BUDGET: usize = 1 << 16;
 /// `near_rounding()` (asked only then: it scans the inputs) or the test is cheap ([`HELD_TEST_BUDGET`]): it is quadratic
 /// in the rings, and outputs with thousands of holes far above rounding (scribble unions) took
 /// 30 times as long with it.
+///
+/// With `strict`, edges retraced near rounding also count as broken (see [`SameWay::Retraced`]):
+/// for the sweep's own output only, so that the repair's sweeps, judged by the plain form, end.
 pub(crate) fn conventional_rings_checked(
     raw: &RawRings,
     touches: &mut Touches,
+    strict: bool,
     near_rounding: impl FnOnce() -> bool,
 ) -> CleanRings {
     touches.find(raw);
@@ -59,7 +64,7 @@ pub(crate) fn conventional_rings_checked(
             }
         }
     }
-    let broken_form = touches.touched.contains(&true) && rebuild(raw, touches, &mut out, near_rounding);
+    let broken_form = touches.touched.contains(&true) && rebuild(raw, touches, &mut out, strict, near_rounding);
     CleanRings { rings: out, broken_form }
 }
 
@@ -67,7 +72,13 @@ pub(crate) fn conventional_rings_checked(
 /// rings, pushed onto `out` (after the untouched ones). True when two of their edges leave or
 /// arrive at one point in the same direction, or a clockwise one is held by no other ring of
 /// `out`.
-fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>, near_rounding: impl FnOnce() -> bool) -> bool {
+fn rebuild(
+    rings: &RawRings,
+    touches: &Touches,
+    out: &mut Vec<Ring>,
+    strict: bool,
+    near_rounding: impl FnOnce() -> bool,
+) -> bool {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let mut visits: Vec<u32> = Vec::new();
@@ -119,7 +130,6 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>, near_roundi
         fill[a as usize] += 1;
     }
     drop(fill);
-    let same_way_edges = has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends);
     // Opposite edges cancel in pairs (they bound nothing): each edge from the lower id, in edge
     // order, with the first edge back not yet cancelled. Cancelled edges count as used.
     let mut used = vec![false; edges.len()];
@@ -134,6 +144,7 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>, near_roundi
             used[j as usize] = true;
         }
     }
+    let same_way = has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends, &used);
     let mut slot = vec![usize::MAX; pts.len()];
     let mut walk: Vec<u32> = Vec::new();
     let mut clockwise: Vec<usize> = Vec::new();
@@ -167,15 +178,28 @@ fn rebuild(rings: &RawRings, touches: &Touches, out: &mut Vec<Ring>, near_roundi
             }
         });
     }
+    // Asked once at most: it scans the inputs.
+    let (mut near_rounding, mut near) = (Some(near_rounding), None);
+    let mut near_rounding = || *near.get_or_insert_with(|| near_rounding.take().is_some_and(|f| f()));
+    // Retraced edges are a valid form where nothing is rounded, but near rounding the walk over
+    // them can leave rings crossing at a shared point (a fuzz input's xor): the repair decides.
+    if same_way == SameWay::Remaining || (strict && same_way == SameWay::Retraced && near_rounding()) {
+        return true;
+    }
     let check_holes = !clockwise.is_empty() && (clockwise.len() * out.len() <= HELD_TEST_BUDGET || near_rounding());
-    same_way_edges || (check_holes && clockwise.iter().any(|&h| !held(out, h)))
+    if !check_holes {
+        return false;
+    }
+    // Each ring's box once: `held` looks at every ring for each hole.
+    let boxes: Vec<Rect> = out.iter().map(Ring::bounds).collect();
+    clockwise.iter().any(|&h| !held(out, &boxes, h))
 }
 
 /// True when a point of `rings[hole]` off every other ring (a vertex, else an edge's midpoint)
 /// has a winding number of 1 or more in them: the hole lies inside an outer. False when every
 /// such point lies on another ring (the repair's sweep then decides). Exact for the point
-/// tested; only the clean-up's rare clockwise rings come here.
-fn held(rings: &[Ring], hole: usize) -> bool {
+/// tested; only the clean-up's rare clockwise rings come here. `boxes` are the rings' bounds.
+fn held(rings: &[Ring], boxes: &[Rect], hole: usize) -> bool {
     let points = &rings[hole].points;
     // Holes pinched to their outer at every vertex are common (scribble unions): their edges'
     // midpoints still tell, where testing vertices alone sent valid outputs to the repair.
@@ -186,7 +210,7 @@ fn held(rings: &[Ring], hole: usize) -> bool {
     'point: for p in points.iter().copied().chain(midpoints) {
         let mut winding = 0;
         for (k, r) in rings.iter().enumerate() {
-            if k == hole || !r.bounds().contains(p) {
+            if k == hole || !boxes[k].contains(p) {
                 continue;
             }
             match ring_winding(p, r) {
@@ -199,11 +223,23 @@ fn held(rings: &[Ring], hole: usize) -> bool {
     false
 }
 
-/// True when two edges leave one point, or arrive at one point, in the same direction: they
-/// overlap along the shorter one, running the same way (two rings' insides overlap there, or a
-/// hole pokes out of its outer). Ends are compared exactly, so this also catches overlaps of
-/// edges that are not horizontal, which the clean-up does not split. `shared` are the points
-/// left by two edges or more, `outgoing[row[v]..row[v + 1]]` the edges leaving point `v`, and
+/// Edges in the same direction at one point, as [`has_same_way_edges`] finds them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum SameWay {
+    None,
+    /// Only where an edge back cancelled one of them: two edges one way and one back along a
+    /// stretch bound it once (a hole retracing its outer's edge, common in grid unions).
+    Retraced,
+    /// Two left after opposite edges cancelled: the insides overlap.
+    Remaining,
+}
+
+/// Whether two edges leave one point, or arrive at one point, in the same direction
+/// ([`SameWay`]; `cancelled` are the edges opposite edges cancelled): they overlap along the
+/// shorter one, running the same way (two rings' insides overlap there, or a hole pokes out of
+/// its outer). Ends are compared exactly, so this also catches overlaps of slanted edges that
+/// were not split. `shared` are the points left by
+/// two edges or more, `outgoing[row[v]..row[v + 1]]` the edges leaving point `v`, and
 /// `ring_ends[r]` where ring `r`'s edges end in `edges`: an edge is arrived at by the one before
 /// it in its ring. Kept out of line: `rebuild`'s walk is the hot part.
 #[inline(never)]
@@ -214,7 +250,8 @@ fn has_same_way_edges(
     outgoing: &[u32],
     edges: &[(u32, u32)],
     ring_ends: &[usize],
-) -> bool {
+    cancelled: &[bool],
+) -> SameWay {
     // Which edges start a ring, one bit each, and one past the last edge.
     let mut ring_start = vec![0u64; edges.len() / 64 + 1];
     let mut first = 0;
@@ -225,9 +262,10 @@ fn has_same_way_edges(
         first = end;
     }
     ring_start[edges.len() / 64] |= 1 << (edges.len() % 64);
-    let arriving_from = |i: usize| {
+    // The edge arriving where edge `i` leaves: the one before it in its ring.
+    let arriving = |i: usize| {
         if ring_start[i / 64] & (1 << (i % 64)) == 0 {
-            return edges[i - 1].0;
+            return i - 1;
         }
         // A ring's first edge is arrived at by its last: the edge before the next ring's start.
         let (mut word, mut bits, mut at) = (i / 64, ring_start[i / 64] >> (i % 64) >> 1, i + 1);
@@ -235,18 +273,30 @@ fn has_same_way_edges(
             word += 1;
             (bits, at) = (ring_start[word], word * 64);
         }
-        edges[at + bits.trailing_zeros() as usize - 1].0
+        at + bits.trailing_zeros() as usize - 1
     };
-    shared.iter().any(|&v| {
+    let mut found = SameWay::None;
+    for &v in shared {
         let leaving = &outgoing[row[v as usize] as usize..row[v as usize + 1] as usize];
         let pv = pts[v as usize];
-        leaving.iter().enumerate().any(|(k, &i)| {
-            let (to_i, from_i) = (edges[i as usize].1, arriving_from(i as usize));
-            leaving[k + 1..].iter().any(|&j| {
-                same_way(pts, pv, to_i, edges[j as usize].1) || same_way(pts, pv, from_i, arriving_from(j as usize))
-            })
-        })
-    })
+        for (k, &i) in leaving.iter().enumerate() {
+            let (i, before_i) = (i as usize, arriving(i as usize));
+            for &j in &leaving[k + 1..] {
+                let (j, before_j) = (j as usize, arriving(j as usize));
+                for (a, b, to_a, to_b) in
+                    [(i, j, edges[i].1, edges[j].1), (before_i, before_j, edges[before_i].0, edges[before_j].0)]
+                {
+                    if same_way(pts, pv, to_a, to_b) {
+                        if !cancelled[a] && !cancelled[b] {
+                            return SameWay::Remaining;
+                        }
+                        found = SameWay::Retraced;
+                    }
+                }
+            }
+        }
+    }
+    found
 }
 
 /// True when points `a` and `b` (ids in `pts`, neither at `v`) lie on one ray from `v`. Exact.
@@ -422,6 +472,39 @@ mod tests {
         let inside = ring(&[(2.0, 2.0), (1.0, 0.5), (0.5, 1.0)]);
         let clean = super::conventional_rings(&RawRings::from_rings(vec![square, inside]), &mut Touches::default());
         assert!(!clean.broken_form);
+    }
+
+    #[test]
+    fn a_hole_retracing_its_outers_edge_is_reported_only_near_rounding_and_strict() {
+        // The outer runs up x = 4 through (4,1), (4,2), (4,3); the hole runs down it from (4,3) to
+        // (4,1) and back up from (4,2) to (4,3): along (4,2)-(4,3) two edges go up, one down.
+        let outer = ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 1.0), (4.0, 2.0), (4.0, 3.0), (4.0, 4.0), (0.0, 4.0)]);
+        let hole =
+            ring(&[(4.0, 3.0), (4.0, 2.0), (4.0, 1.0), (3.0, 1.5), (4.0, 2.0), (4.0, 3.0), (3.0, 3.0), (3.5, 3.5)]);
+        let raw = RawRings::from_rings(vec![outer, hole]);
+        let clean = |strict: bool, near: bool| {
+            super::conventional_rings_checked(&raw, &mut Touches::default(), strict, || near)
+        };
+        let plain = clean(false, true);
+        assert!(!plain.broken_form);
+        assert_eq!(areas(&plain.rings), vec![-0.25, 15.5]);
+        assert!(!clean(true, false).broken_form);
+        assert!(clean(true, true).broken_form);
+    }
+
+    #[test]
+    fn after_a_near_miss_slanted_edges_split_and_opposite_overlaps_cancel() {
+        // One ring runs up y = x from (0,0) to (4,4) and later down it from (3,3) to (1,1): no
+        // point repeats and no horizontal edge holds a vertex, so only the sweep's near miss
+        // (rounded edges through exact points) has the clean-up look at slanted edges.
+        let points = ring(&[(0.0, 0.0), (4.0, 4.0), (1.0, 4.0), (3.0, 3.0), (1.0, 1.0), (0.0, 2.0)]);
+        let mut raw = RawRings::from_rings(vec![points]);
+        let clean = super::conventional_rings(&raw, &mut Touches::default());
+        assert_eq!(clean.rings.len(), 1, "untouched without a near miss");
+        raw.near_miss = true;
+        let clean = super::conventional_rings(&raw, &mut Touches::default());
+        assert!(!clean.broken_form);
+        assert_eq!(areas(&clean.rings), vec![1.0, 1.5]);
     }
 
     #[test]

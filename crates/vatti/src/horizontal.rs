@@ -29,12 +29,17 @@ impl Sweep<'_> {
             if !self.passes(k, end, top, rightwards) {
                 break;
             }
-            let x = self.ael.get(k).curr_x.clamp(lo, hi);
+            let ek = self.ael.get(k);
+            let p = Point::new(ek.curr_x.clamp(lo, hi), y);
+            // k's x on the scanline is computed unless p is one of its ends: other edges through
+            // the exact crossing lie within rounding of it, and take it too.
+            self.rounded_crossing = p.x == ek.curr_x && p != ek.bot && p != ek.top;
             if rightwards {
-                self.cross(pos, Point::new(x, y));
+                self.cross(pos, p);
             } else {
-                self.cross(pos - 1, Point::new(x, y));
+                self.cross(pos - 1, p);
             }
+            self.rounded_crossing = false;
         }
         self.ael.get_mut(s.edge).curr_x = s.to_x;
     }

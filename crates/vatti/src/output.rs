@@ -38,6 +38,10 @@ pub(crate) struct OutRec {
 pub(crate) struct OutputBuilder {
     pts: Vec<OutPt>,
     recs: Vec<OutRec>,
+    /// True when a point went into no chain of an edge it lies near but not on (the sweep's
+    /// `node_neighbours`): rounded output edges along that edge may then pass through the point
+    /// exactly, so the clean-up splits every edge at the points on it, not only horizontals.
+    pub near_miss: bool,
 }
 
 impl OutputBuilder {
@@ -46,6 +50,7 @@ impl OutputBuilder {
         self.pts.clear();
         self.recs.clear();
         self.pts.reserve(n);
+        self.near_miss = false;
     }
 
     /// Bytes the buffers hold (their capacity).
@@ -123,6 +128,7 @@ impl OutputBuilder {
     /// points' emission order, into `raw` (emptied first, its buffers kept).
     pub(crate) fn rings_into(&self, raw: &mut RawRings) {
         raw.clear();
+        raw.near_miss = self.near_miss;
         raw.points.reserve(self.pts.len());
         raw.emitted.reserve(self.pts.len());
         for r in &self.recs {

@@ -13,6 +13,9 @@ pub(crate) struct RawRings {
     /// Per point, a distinct emission stamp: the sweep emits points by non-decreasing y except
     /// where crossings at nearly one height are taken out of order.
     pub emitted: Vec<u32>,
+    /// The sweep's [`crate::output::OutputBuilder::near_miss`]: every edge is split at the
+    /// points on it.
+    pub near_miss: bool,
 }
 
 impl RawRings {
@@ -21,6 +24,7 @@ impl RawRings {
         self.points.clear();
         self.ends.clear();
         self.emitted.clear();
+        self.near_miss = false;
     }
 
     /// Number of rings.
@@ -65,6 +69,7 @@ impl RawRings {
 
     /// Closes the ring whose points begin at index `start`: the seam's repeats go, and a ring of
     /// fewer than three points is dropped.
+    #[inline]
     pub(crate) fn end_ring(&mut self, start: usize) {
         while self.points.len() > start + 1 && self.points[start] == self.points[self.points.len() - 1] {
             self.points.pop();

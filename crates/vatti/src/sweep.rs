@@ -532,6 +532,7 @@ impl<'a> Sweep<'a> {
                 && !self.coincident(id, k)
                 && (also == id || !self.coincident(also, k)))
         {
+            self.out.near_miss |= near && !rounded;
             return false;
         }
         if e.outrec != NONE && p != e.bot && p != e.top {

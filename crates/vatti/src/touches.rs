@@ -6,8 +6,18 @@
 //! in y, equal points are emitted within one run of equal y, and so are a horizontal edge's ends
 //! and every vertex inside it: only those short runs are compared, with no global sort. Where
 //! crossings at nearly one height were taken out of y order, every point is sorted instead.
+//!
+//! Slanted edges are split at the vertices on them only when the sweep reported a near miss
+//! (`RawRings::near_miss`: an exact point within 1e-9 of an edge it is not on). Output edges run
+//! between rounded points, off their input edge's line by rounding, and far from the origin such
+//! an edge can pass exactly through a vertex that is not on the input edge (points on y = x near
+//! 1e141 inside an edge rounded onto that line): a ring then overlaps itself or another along
+//! part of the edge. Without a near miss a vertex on an output edge is on its input edge, and the
+//! sweep put it into the edge's chain. The split looks at every point in an edge's height range,
+//! so it is skipped where that would exceed `SLANTED_SCAN_BUDGET` points in all.
 
 use clip_core::Point;
+use clip_core::predicates::{Orientation, orient};
 
 use crate::bounds::NONE;
 use crate::raw_rings::RawRings;
@@ -44,6 +54,9 @@ impl Touches {
     pub(crate) fn find(&mut self, raw: &RawRings) {
         if !self.by_emission_order(raw) {
             self.by_sorting(raw);
+        }
+        if raw.near_miss {
+            self.splits = split_edges(raw, &self.ring, &mut self.touched, &self.ids, true);
         }
     }
 
@@ -177,47 +190,85 @@ impl Touches {
             }
         }
         drop(keyed);
-        t.splits = split_horizontals(raw, ring, &mut t.touched, &t.ids);
+        t.splits = split_edges(raw, ring, &mut t.touched, &t.ids, false);
     }
 }
 
-/// Every horizontal edge with vertices strictly inside it, in ring and edge order; its ring and
-/// the vertices' rings are marked touched.
-fn split_horizontals(raw: &RawRings, ring: &[u32], touched: &mut [bool], ids: &[u32]) -> Vec<SplitEdge> {
+/// Points that splitting slanted edges may look at, in all, beyond which it is skipped (a known
+/// limit: outputs of thousands of long edges with a near miss keep slanted overlaps unsplit).
+const SLANTED_SCAN_BUDGET: usize = 1 << 22;
+
+/// How many points the slanted edges' height ranges hold, in all (`by_y`: the points by y).
+fn slanted_scan_length(raw: &RawRings, by_y: &[(f64, f64, u32)]) -> usize {
+    let mut total = 0usize;
+    for ri in 0..raw.len() {
+        let r = raw.ring(ri);
+        for i in 0..r.len() {
+            let (a, b) = (r[i], r[(i + 1) % r.len()]);
+            if a.y != b.y {
+                let (bottom, top) = (a.y.min(b.y), a.y.max(b.y));
+                total += by_y.partition_point(|&(y, _, _)| y < top) - by_y.partition_point(|&(y, _, _)| y <= bottom);
+            }
+        }
+    }
+    total
+}
+
+/// Every horizontal edge (every edge, with `every_edge`) with vertices strictly inside it, in
+/// ring and edge order; its ring and the vertices' rings are marked touched. A vertex is inside a
+/// slanted edge when it lies on the edge's line (exact) between its ends.
+fn split_edges(raw: &RawRings, ring: &[u32], touched: &mut [bool], ids: &[u32], every_edge: bool) -> Vec<SplitEdge> {
     let has_horizontal = (0..raw.len()).any(|i| {
         let r = raw.ring(i);
         (0..r.len()).any(|k| r[k].y == r[(k + 1) % r.len()].y)
     });
-    if !has_horizontal {
+    if !has_horizontal && !every_edge {
         return Vec::new();
     }
     let mut by_y: Vec<(f64, f64, u32)> = raw.points.iter().enumerate().map(|(k, p)| (p.y, p.x, k as u32)).collect();
     by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    // Slanted edges look at every point in their height range: quadratic at worst (long edges
+    // over many points), so they are split only while that stays within the budget.
+    let every_edge = every_edge && slanted_scan_length(raw, &by_y) <= SLANTED_SCAN_BUDGET;
     let mut splits = Vec::new();
+    let mut inside = Vec::new();
     for ri in 0..raw.len() {
         let r = raw.ring(ri);
         let n = r.len();
         for i in 0..n {
             let (a, b) = (r[i], r[(i + 1) % n]);
-            if a.y != b.y {
-                continue;
-            }
             let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
-            let start = by_y.partition_point(|&(y, x, _)| y < a.y || (y == a.y && x <= lo));
-            let mut inside = Vec::new();
-            for &(_, _, k) in by_y[start..].iter().take_while(|&&(y, x, _)| y == a.y && x < hi) {
-                touched[ring[k as usize] as usize] = true;
-                inside.push(ids[k as usize]);
+            inside.clear();
+            if a.y == b.y {
+                let start = by_y.partition_point(|&(y, x, _)| y < a.y || (y == a.y && x <= lo));
+                for &(_, _, k) in by_y[start..].iter().take_while(|&&(y, x, _)| y == a.y && x < hi) {
+                    inside.push(k);
+                }
+                if a.x > b.x {
+                    inside.reverse();
+                }
+            } else if every_edge {
+                let (bottom, top) = (a.y.min(b.y), a.y.max(b.y));
+                let start = by_y.partition_point(|&(y, _, _)| y <= bottom);
+                for &(_, x, k) in by_y[start..].iter().take_while(|&&(y, _, _)| y < top) {
+                    if lo <= x && x <= hi && orient(a, b, raw.points[k as usize]) == Orientation::Collinear {
+                        inside.push(k);
+                    }
+                }
+                if a.y > b.y {
+                    inside.reverse();
+                }
             }
             if inside.is_empty() {
                 continue;
             }
             touched[ri] = true;
-            inside.dedup();
-            if a.x > b.x {
-                inside.reverse();
+            for &k in &inside {
+                touched[ring[k as usize] as usize] = true;
             }
-            splits.push(SplitEdge { ring: ri, edge: i, inside });
+            let mut points: Vec<u32> = inside.iter().map(|&k| ids[k as usize]).collect();
+            points.dedup();
+            splits.push(SplitEdge { ring: ri, edge: i, inside: points });
         }
     }
     splits
@@ -266,6 +317,26 @@ mod tests {
         let t = both(vec![bow, corner]);
         assert_eq!(t.touched, vec![true, true]);
         assert!(t.splits.is_empty());
+    }
+
+    #[test]
+    fn after_a_near_miss_every_edge_splits_at_the_vertices_on_it() {
+        // A triangle's vertex (2,2) lies exactly inside the other ring's slanted edge (0,0)-(4,4).
+        let slanted = ring(&[(0.0, 0.0), (4.0, 4.0), (0.0, 4.0)]);
+        let touching = ring(&[(2.0, 2.0), (3.0, 1.0), (3.0, 2.0)]);
+        let mut raw = RawRings::from_rings(vec![slanted, touching]);
+        let mut t = Touches::default();
+        t.find(&raw);
+        assert_eq!(t.touched, vec![false, false]);
+        raw.near_miss = true;
+        t.find(&raw);
+        assert_eq!(t.touched, vec![true, true]);
+        let inside: Vec<(usize, usize, Vec<Point>)> = t
+            .splits
+            .iter()
+            .map(|s| (s.ring, s.edge, s.inside.iter().map(|&i| t.distinct[i as usize]).collect()))
+            .collect();
+        assert_eq!(inside, vec![(0, 0, vec![Point::new(2.0, 2.0)])]);
     }
 
     #[test]
