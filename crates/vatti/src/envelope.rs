@@ -41,6 +41,18 @@ impl Envelope {
         (c.x > b.min.x && c.x < b.max.x && c.y > b.min.y && c.y < b.max.y).then_some(Envelope { b, c })
     }
 
+    /// The box.
+    #[inline]
+    pub(crate) fn rect(&self) -> Rect {
+        self.b
+    }
+
+    /// The point strictly inside the box that windings are measured at.
+    #[inline]
+    pub(crate) fn center(&self) -> Point {
+        self.c
+    }
+
     /// True when box `r` has no point in common with the closed box.
     #[inline]
     pub(crate) fn misses(&self, r: &Rect) -> bool {
@@ -122,7 +134,7 @@ impl Envelope {
     }
 
     /// The corners passed going counter-clockwise along the border from `from` to `to`.
-    fn corners_between(&self, from: Point, to: Point, out: &mut Vec<Point>) {
+    pub(crate) fn corners_between(&self, from: Point, to: Point, out: &mut Vec<Point>) {
         let ((mut k, kp), (sq, kq)) = (self.place(from), self.place(to));
         if k == sq && kq >= kp {
             return;
@@ -188,7 +200,7 @@ impl Envelope {
     }
 
     /// `count` loops of the border, counter-clockwise when positive.
-    fn border_loops(&self, count: i32, rings: &mut Vec<Ring>) {
+    pub(crate) fn border_loops(&self, count: i32, rings: &mut Vec<Ring>) {
         let ccw: Vec<Point> = (0..4).map(|k| self.corner(k)).collect();
         let ring = if count > 0 { Ring::new(ccw) } else { Ring::new(ccw).reversed() };
         rings.extend(std::iter::repeat_n(ring, count.unsigned_abs() as usize));
@@ -197,7 +209,7 @@ impl Envelope {
 
 /// Sunday's signed crossing of edge `a -> b` with the rightward ray from `c` (exact).
 #[inline]
-fn sunday(a: Point, b: Point, c: Point) -> i32 {
+pub(crate) fn sunday(a: Point, b: Point, c: Point) -> i32 {
     if a.y <= c.y {
         i32::from(b.y > c.y && orient(a, b, c) == Orientation::CounterClockwise)
     } else if b.y <= c.y && orient(a, b, c) == Orientation::Clockwise {
@@ -249,7 +261,7 @@ pub(crate) fn cut(polygons: &Polygons, b: Rect, blocks: Option<&[EdgeBlocks]>) -
 /// clear of the operand whose box it is (on that operand's edges, rounded crossings a few ulps
 /// off them would make slivers in the output); `None` when the grown corners leave the valid
 /// coordinate range.
-fn grown(b: Rect) -> Option<Rect> {
+pub(crate) fn grown(b: Rect) -> Option<Rect> {
     let m = 0.125 * b.extent();
     let g = Rect::new(b.min.x - m, b.min.y - m, b.max.x + m, b.max.y + m);
     let valid = |v: f64| v.abs() <= MAX_COORDINATE && (v == 0.0 || v.abs() >= MIN_COORDINATE);

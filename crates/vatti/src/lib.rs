@@ -49,8 +49,11 @@
 //! - **Prepared clip** ([`Vatti::prepare`], [`PreparedClip`], `Send + Sync`): the clip is
 //!   validated once and its rings get boxes over runs of edges (`edge_blocks`), so for ∩ and −
 //!   each subject's sweep takes only the clip edges near it, found without visiting the others.
-//!   The clip's local minima are not kept between calls: the sweep's tables are built from the
-//!   cut operands, which are small. [`VattiPrepared`] puts it behind [`PolygonClipper`]
+//!   For ∪ and ⊕ the clip's region under the fill rule is resolved once into conventional rings
+//!   (`far_splice`): each subject sweeps only their part inside its grown box, and their chains
+//!   outside it, which the result keeps as they are, are spliced back exactly (a degenerate
+//!   meeting with the box's border falls back to the whole sweep). The clip's local minima are
+//!   not kept between calls: the sweep's tables are built from the cut operands, which are small. [`VattiPrepared`] puts it behind [`PolygonClipper`]
 //!   (`vatti-prepared` in the harness), keeping each thread's last prepared clip.
 //!
 //! [`Vatti::clip_unfiltered`] keeps the plain sweep reachable; the tests compare every path with
@@ -127,6 +130,7 @@ mod cleanup;
 mod contribution;
 mod edge_blocks;
 mod envelope;
+mod far_splice;
 mod form_check;
 mod horizontal;
 mod intersections;

@@ -99,6 +99,20 @@ fn spiky_stars_cut_to_a_box_inside_them_match_the_plain_sweep() {
 }
 
 #[test]
+fn many_subjects_cases_match_the_plain_sweep_on_every_path() {
+    // Small subjects over a 1000-edge clip: the prepared clip splices ∪ and ⊕ into its resolved
+    // region, cutting it at the subject's box.
+    for index in 0..48 {
+        let case = clip_testkit::workload::polygon_case("many-subjects", 5, index, clip_core::WindowKind::Any).unwrap();
+        for op in BoolOp::ALL {
+            for fill in FillRule::ALL {
+                check_all_paths(&case.subject, &case.clip, op, fill).unwrap();
+            }
+        }
+    }
+}
+
+#[test]
 fn a_prepared_clip_refuses_bad_subjects_and_clips() {
     let good = Polygons::from(Rect::new(0.0, 0.0, 1.0, 1.0));
     let bad = Polygons::from(Ring::new(vec![Point::new(0.0, 0.0), Point::new(f64::NAN, 1.0), Point::new(1.0, 0.0)]));
