@@ -202,8 +202,7 @@ impl Vatti {
             let a = if inside { rect_path::cut_to_rectangle(subject, r) } else { Polygons::default() };
             return (Cow::Owned(a), Cow::Owned(Polygons::default()), BoolOp::Union);
         }
-        let (a, b) = envelope::prefilter(subject, clip, clip_bounds, clip_blocks, op);
-        (a, b, op)
+        envelope::prefilter(subject, clip, clip_bounds, clip_blocks, op, fill)
     }
 
     /// Validates both operands and reduces them ([`Vatti::reduced`]).
