@@ -22,6 +22,13 @@ use clip_core::{BoolOp, FillRule, MIN_COORDINATE, Point, Polygons, Rect, Ring};
 use crate::Vatti;
 use crate::edge_blocks::EdgeBlocks;
 use crate::envelope::{Envelope, Stretch, grown, sunday};
+use crate::simplify::simplify_ring;
+use crate::star_shaped::certified_simple;
+
+/// The fewest edges a ring needs, and how many times the other operand's vertices, before
+/// [`splice_big_ring`] tries to certify it: below that the whole sweep is cheap.
+const BIG_RING_EDGES: usize = 64;
+const BIG_RING_FACTOR: usize = 4;
 
 /// An operand in conventional form (outers counter-clockwise, holes clockwise, nothing crossing),
 /// with edge blocks over its rings when it was prepared.
@@ -96,6 +103,42 @@ pub(crate) fn splice(
         Vatti::sweep_polygons(near, &local, op, fill)
     };
     join(&env, far.rings, &cut.chains, &cut.far_rings, cut.far_winding, &swept)
+}
+
+/// `subject op clip` for ∪, ⊕ and − when the subject (or, with `clip_far`, for ∪ and ⊕ the clip)
+/// is one big ring certified simple ([`certified_simple`]), which is then its own conventional
+/// form: spliced around the other operand, so the big ring is never swept. `None` when that does
+/// not apply. Both operands must be valid.
+pub(crate) fn splice_big_ring(
+    subject: &Polygons,
+    clip: &Polygons,
+    clip_far: bool,
+    op: BoolOp,
+    fill: FillRule,
+) -> Option<Polygons> {
+    let try_far = |far: &Polygons, near: &Polygons, far_is_subject: bool| {
+        let [ring] = far.rings.as_slice() else { return None };
+        let n = ring.points.len();
+        if n < BIG_RING_EDGES || n < BIG_RING_FACTOR * near.vertex_count() {
+            return None;
+        }
+        let simple = Ring { points: simplify_ring(&ring.points) };
+        let ccw = simple.signed_area() > 0.0;
+        let far = if ccw { simple } else { simple.reversed() };
+        // A ring the fill rule leaves empty is rare: the whole sweep takes it.
+        if far.points.len() < 3 || !fill.is_inside(if ccw { 1 } else { -1 }) || !certified_simple(&far.points) {
+            return None;
+        }
+        let far = Polygons::new(vec![far]);
+        splice(near, Far { rings: &far, blocks: None }, far_is_subject, op, fill)
+    };
+    match op {
+        BoolOp::Intersection => None,
+        BoolOp::Difference => try_far(subject, clip, true),
+        BoolOp::Union | BoolOp::Xor => {
+            try_far(subject, clip, true).or_else(|| if clip_far { try_far(clip, subject, false) } else { None })
+        }
+    }
 }
 
 /// The far operand cut to the box: the local rings to sweep, the chains outside to splice back,
@@ -472,5 +515,32 @@ mod tests {
         }
         // Under positive and negative fill one of the two orientations leaves the clip empty.
         assert!(spliced >= 200, "spliced only {spliced} of 320");
+    }
+}
+
+#[cfg(test)]
+mod big_ring_tests {
+    use super::*;
+    use clip_core::WindowKind;
+    use clip_oracle::polygon::{REGION_TOLERANCE, same_region, tolerance};
+    use clip_testkit::workload::polygon_case_sized;
+
+    #[test]
+    fn spiky_stars_splice_around_the_box_for_union_difference_and_xor() {
+        for (index, edges) in [(0, 1_000), (1, 5_000)] {
+            let case = polygon_case_sized("spiky-box", 2, index, edges, WindowKind::Any).unwrap();
+            for fill in FillRule::ALL {
+                for op in [BoolOp::Union, BoolOp::Difference, BoolOp::Xor] {
+                    let out = splice_big_ring(&case.subject, &case.clip, true, op, fill);
+                    // The star runs counter-clockwise: negative fill leaves it empty.
+                    assert_eq!(out.is_some(), fill != FillRule::Negative, "{op:?} {fill:?}");
+                    let Some(out) = out else { continue };
+                    let plain = Vatti.clip_unfiltered(&case.subject, &case.clip, op, fill).unwrap();
+                    let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
+                    let same = same_region((&out, FillRule::NonZero), (&plain, FillRule::NonZero), tol);
+                    assert!(same.is_ok(), "{edges} {op:?} {fill:?}: {:?}", same.unwrap_err());
+                }
+            }
+        }
     }
 }

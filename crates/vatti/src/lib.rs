@@ -143,6 +143,7 @@ mod repair;
 mod scanbeam;
 mod scratch;
 mod simplify;
+mod star_shaped;
 mod sweep;
 mod touches;
 mod trapezoids;
@@ -274,7 +275,12 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        let (a, b, op) = Vatti::filtered(subject, clip, op, fill)?;
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        if let Some(out) = far_splice::splice_big_ring(subject, clip, true, op, fill) {
+            return Ok(out);
+        }
+        let (a, b, op) = Vatti::reduced(subject, clip, clip.bounds(), None, op, fill);
         Ok(Vatti::sweep_polygons(&a, &b, op, fill))
     }
 

@@ -62,6 +62,9 @@ impl PreparedClip {
     /// `subject op clip`, as [`Vatti`]'s `clip` gives it.
     pub fn clip(&self, subject: &Polygons, op: BoolOp) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
+        if let Some(out) = crate::far_splice::splice_big_ring(subject, &self.clip, false, op, self.fill) {
+            return Ok(out);
+        }
         if matches!(op, BoolOp::Union | BoolOp::Xor) {
             let (rings, blocks) = self.resolved();
             if let Some(out) = splice(subject, Far { rings, blocks: Some(blocks) }, false, op, self.fill) {

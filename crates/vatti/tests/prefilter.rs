@@ -25,9 +25,29 @@ fn grid_rings() -> impl Strategy<Value = Polygons> {
         .prop_map(|rings| Polygons::new(rings.into_iter().filter(|r| r.distinct_points() >= 3).collect()))
 }
 
+/// A star-shaped ring of 64-300 vertices about (50, 50) (radii 5-50, either way round): a big
+/// ring the splice certifies simple and keeps out of the sweep.
+fn big_star() -> impl Strategy<Value = Polygons> {
+    (prop::collection::vec(5.0f64..50.0, 64..300), any::<bool>()).prop_map(|(radii, cw)| {
+        let n = radii.len() as f64;
+        let pts = radii
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let a = i as f64 * std::f64::consts::TAU / n;
+                Point::new(50.0 + r * a.cos(), 50.0 + r * a.sin())
+            })
+            .collect();
+        let ring = Ring::new(pts);
+        Polygons::from(if cw { ring.reversed() } else { ring })
+    })
+}
+
 /// A big subject and a smaller operand somewhere over it, beside it or inside it.
 fn operands() -> impl Strategy<Value = (Polygons, Polygons)> {
     prop_oneof![
+        (big_star(), (0.0f64..100.0, 0.0f64..100.0, 1.0f64..20.0))
+            .prop_flat_map(|(s, (x, y, k))| (Just(s), rings_in(x - k, y - k, k))),
         (rings_in(0.0, 0.0, 100.0), (-20.0f64..100.0, -20.0f64..100.0, 1.0f64..40.0))
             .prop_flat_map(|(s, (x, y, k))| (Just(s), rings_in(x, y, k))),
         (grid_rings(), grid_rings()),
