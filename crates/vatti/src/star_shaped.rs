@@ -16,46 +16,59 @@ pub(crate) fn certified_simple(pts: &[Point]) -> bool {
         return false;
     }
     let bounds = Rect::bounding(pts);
-    // Points of the kernel extreme in four directions; their mean is inside it when it has an interior.
+    // Edge i's half-plane a·x <= b (a = (dy, -dx), b = a·p_i) with a point on its line, in a
+    // fixed pseudo-random order and laid out in it, so the inner loops read memory in sequence.
+    let planes: Vec<Plane> = shuffled(n)
+        .into_iter()
+        .map(|i| {
+            let (p, q) = (pts[i], pts[(i + 1) % n]);
+            let a = Point::new(q.y - p.y, p.x - q.x);
+            Plane { a, b: a.x * p.x + a.y * p.y, on: p }
+        })
+        .collect();
+    // The mean of the kernel's extreme points in two opposite directions is inside it when it
+    // has an interior, unless both lie on one edge's line: then four directions are averaged.
+    let dirs = [Point::new(1.0, 0.3), Point::new(-1.0, -0.3), Point::new(-0.3, 1.0), Point::new(0.3, -1.0)];
     let mut sum = Point::ZERO;
-    for dir in [Point::new(1.0, 0.3), Point::new(-0.3, 1.0), Point::new(-1.0, -0.3), Point::new(0.3, -1.0)] {
-        let Some(p) = kernel_extreme(pts, bounds, dir) else { return false };
+    for (k, &dir) in dirs.iter().enumerate() {
+        let Some(p) = kernel_extreme(&planes, bounds, dir) else { return false };
         sum = Point::new(sum.x + p.x, sum.y + p.y);
+        if k == 1 && star_from(pts, Point::new(0.5 * sum.x, 0.5 * sum.y)) {
+            return true;
+        }
     }
-    let k = Point::new(0.25 * sum.x, 0.25 * sum.y);
-    if !bounds.contains(k) {
-        return false;
-    }
+    star_from(pts, Point::new(0.25 * sum.x, 0.25 * sum.y))
+}
+
+/// True when every edge of the ring turns counter-clockwise around `k` and the ring goes round
+/// it once: then each ray from `k` meets the ring once, so no two edges cross or touch.
+fn star_from(pts: &[Point], k: Point) -> bool {
+    let n = pts.len();
     let turns = (0..n).all(|i| orient(pts[i], pts[(i + 1) % n], k) == Orientation::CounterClockwise);
-    // Every edge turning counter-clockwise around `k` with total winding one: each ray from `k`
-    // meets the ring once, so no two edges cross or touch.
     turns && (0..n).map(|i| sunday(pts[i], pts[(i + 1) % n], k)).sum::<i32>() == 1
 }
 
-/// The point of the ring's kernel (left of every edge) furthest in direction `dir`, within
+/// An edge's half-plane `a·x <= b` and a point on its line.
+struct Plane {
+    a: Point,
+    b: f64,
+    on: Point,
+}
+
+/// The point of the kernel (inside every half-plane) furthest in direction `dir`, within
 /// `bounds`, in floating point (the caller checks the certificate exactly); `None` when the
-/// kernel looks empty.
-fn kernel_extreme(pts: &[Point], bounds: Rect, dir: Point) -> Option<Point> {
-    let n = pts.len();
-    // Half-plane of edge i: a·x <= b with a = (dy, -dx), b = a·p_i.
-    let plane = |i: usize| {
-        let (p, q) = (pts[i], pts[(i + 1) % n]);
-        let a = Point::new(q.y - p.y, p.x - q.x);
-        (a, a.x * p.x + a.y * p.y)
-    };
-    let order = shuffled(n);
+/// kernel looks empty. The half-planes come in random order: Seidel's incremental algorithm.
+fn kernel_extreme(planes: &[Plane], bounds: Rect, dir: Point) -> Option<Point> {
     let mut x = Point::new(
         if dir.x > 0.0 { bounds.max.x } else { bounds.min.x },
         if dir.y > 0.0 { bounds.max.y } else { bounds.min.y },
     );
-    for (done, &i) in order.iter().enumerate() {
-        let (a, b) = plane(i);
+    for (done, &Plane { a, b, on: p0 }) in planes.iter().enumerate() {
         let scale = a.x.abs().max(a.y.abs());
         if a.x * x.x + a.y * x.y <= b + 1e-12 * scale * (x.x.abs() + x.y.abs() + 1.0) {
             continue;
         }
         // The optimum moves onto this edge's line: a one-dimensional problem along it.
-        let p0 = pts[i];
         let u = Point::new(-a.y, a.x);
         let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
         let mut bound = |au: f64, rhs: f64| {
@@ -71,8 +84,7 @@ fn kernel_extreme(pts: &[Point], bounds: Rect, dir: Point) -> Option<Point> {
         bound(-u.x, p0.x - bounds.min.x);
         bound(u.y, bounds.max.y - p0.y);
         bound(-u.y, p0.y - bounds.min.y);
-        for &j in &order[..done] {
-            let (aj, bj) = plane(j);
+        for &Plane { a: aj, b: bj, .. } in &planes[..done] {
             bound(aj.x * u.x + aj.y * u.y, bj - (aj.x * p0.x + aj.y * p0.y));
         }
         if lo > hi {
