@@ -523,7 +523,17 @@ mod big_ring_tests {
     use super::*;
     use clip_core::WindowKind;
     use clip_oracle::polygon::{REGION_TOLERANCE, same_region, tolerance};
-    use clip_testkit::workload::polygon_case_sized;
+    use clip_testkit::workload::{polygon_case, polygon_case_sized};
+
+    #[test]
+    fn verify_sized_spiky_boxes_take_the_splice() {
+        // verify draws 6-200 star edges: the big stars among them are spliced, so verify checks the path.
+        let taken = (0..40)
+            .filter_map(|i| polygon_case("spiky-box", 1, i, WindowKind::Any).ok())
+            .filter(|c| splice_big_ring(&c.subject, &c.clip, true, BoolOp::Union, FillRule::NonZero).is_some())
+            .count();
+        assert!(taken >= 5, "only {taken} of 40 spliced");
+    }
 
     #[test]
     fn spiky_stars_splice_around_the_box_for_union_difference_and_xor() {
