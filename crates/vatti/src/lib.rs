@@ -142,6 +142,7 @@ mod rect_path;
 mod repair;
 mod scanbeam;
 mod scratch;
+mod simple_ring;
 mod simplify;
 mod star_shaped;
 mod sweep;
@@ -220,6 +221,13 @@ impl Vatti {
 
     /// The sweep's conventional rings of valid operands, repaired where rounding broke their form.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Polygons {
+        // A small simple ring alone (the rectangle path's cut subject, often) needs no sweep.
+        if clip.rings.is_empty()
+            && op != BoolOp::Intersection
+            && let Some(out) = simple_ring::alone(subject, fill)
+        {
+            return out;
+        }
         let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule| {
             Vatti::sweep(a, b, op, fill, false, |rings, touches, _| {
                 cleanup::conventional_rings_checked(rings, touches, || form_check::raw_near_rounding(a, b, rings))
