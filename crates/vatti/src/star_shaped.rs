@@ -1,7 +1,8 @@
 //! A linear-time certificate that a ring is simple: a point it is star-shaped from (every edge
 //! turns counter-clockwise around it and the ring goes round it once), found by linear
-//! programming over the edges' half-planes (Seidel's randomized incremental algorithm, expected
-//! linear time) and then checked exactly.
+//! programming over the edges' half-planes (Seidel's randomized incremental algorithm on a
+//! sample, grown by the edges its optimum violates, as in Clarkson's scheme, so a big ring is
+//! only read in sequence) and then checked exactly.
 
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{Point, Rect};
@@ -16,22 +17,12 @@ pub(crate) fn certified_simple(pts: &[Point]) -> bool {
         return false;
     }
     let bounds = Rect::bounding(pts);
-    // Edge i's half-plane a·x <= b (a = (dy, -dx), b = a·p_i) with a point on its line, in a
-    // fixed pseudo-random order and laid out in it, so the inner loops read memory in sequence.
-    let planes: Vec<Plane> = shuffled(n)
-        .into_iter()
-        .map(|i| {
-            let (p, q) = (pts[i], pts[(i + 1) % n]);
-            let a = Point::new(q.y - p.y, p.x - q.x);
-            Plane { a, b: a.x * p.x + a.y * p.y, on: p }
-        })
-        .collect();
     // The mean of the kernel's extreme points in two opposite directions is inside it when it
     // has an interior, unless both lie on one edge's line: then four directions are averaged.
     let dirs = [Point::new(1.0, 0.3), Point::new(-1.0, -0.3), Point::new(-0.3, 1.0), Point::new(0.3, -1.0)];
     let mut sum = Point::ZERO;
     for (k, &dir) in dirs.iter().enumerate() {
-        let Some(p) = kernel_extreme(&planes, bounds, dir) else { return false };
+        let Some(p) = kernel_extreme(pts, bounds, dir) else { return false };
         sum = Point::new(sum.x + p.x, sum.y + p.y);
         if k == 1 && star_from(pts, Point::new(0.5 * sum.x, 0.5 * sum.y)) {
             return true;
@@ -48,6 +39,9 @@ fn star_from(pts: &[Point], k: Point) -> bool {
     turns && (0..n).map(|i| sunday(pts[i], pts[(i + 1) % n], k)).sum::<i32>() == 1
 }
 
+/// Edges in the first sample of the kernel search; each round adds at most four times as many.
+const SAMPLE: usize = 1024;
+
 /// An edge's half-plane `a·x <= b` and a point on its line.
 struct Plane {
     a: Point,
@@ -55,19 +49,63 @@ struct Plane {
     on: Point,
 }
 
-/// The point of the kernel (inside every half-plane) furthest in direction `dir`, within
+impl Plane {
+    /// The half-plane left of edge `i` of ring `pts`: `a = (dy, -dx)`, `b = a·p_i`.
+    #[inline]
+    fn of_edge(pts: &[Point], i: usize) -> Plane {
+        let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
+        let a = Point::new(q.y - p.y, p.x - q.x);
+        Plane { a, b: a.x * p.x + a.y * p.y, on: p }
+    }
+
+    /// True when `x` is outside the half-plane by more than rounding.
+    #[inline]
+    fn violated_by(&self, x: Point) -> bool {
+        let scale = self.a.x.abs().max(self.a.y.abs());
+        self.a.x * x.x + self.a.y * x.y > self.b + 1e-12 * scale * (x.x.abs() + x.y.abs() + 1.0)
+    }
+}
+
+/// The point of the ring's kernel (left of every edge) furthest in direction `dir`, within
 /// `bounds`, in floating point (the caller checks the certificate exactly); `None` when the
-/// kernel looks empty. The half-planes come in random order: Seidel's incremental algorithm.
-fn kernel_extreme(planes: &[Plane], bounds: Rect, dir: Point) -> Option<Point> {
+/// kernel looks empty or the search does not settle. Clarkson's scheme: solve on a sample of
+/// the edges, then one pass over all of them adds those the optimum violates, until none does.
+fn kernel_extreme(pts: &[Point], bounds: Rect, dir: Point) -> Option<Point> {
+    let n = pts.len();
+    let mut set: Vec<Plane> = (0..n).step_by(n.div_ceil(SAMPLE)).map(|i| Plane::of_edge(pts, i)).collect();
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+    for _ in 0..16 {
+        shuffle(&mut set, &mut seed);
+        let x = seidel(&set, bounds, dir)?;
+        let before = set.len();
+        for i in 0..n {
+            let plane = Plane::of_edge(pts, i);
+            if plane.violated_by(x) {
+                set.push(plane);
+                if set.len() > before + 4 * SAMPLE {
+                    break;
+                }
+            }
+        }
+        if set.len() == before {
+            return Some(x);
+        }
+    }
+    None
+}
+
+/// Seidel's algorithm: the point inside every half-plane of `planes` (taken in their order,
+/// which should be random) and `bounds` furthest in direction `dir`; `None` when there is none.
+fn seidel(planes: &[Plane], bounds: Rect, dir: Point) -> Option<Point> {
     let mut x = Point::new(
         if dir.x > 0.0 { bounds.max.x } else { bounds.min.x },
         if dir.y > 0.0 { bounds.max.y } else { bounds.min.y },
     );
-    for (done, &Plane { a, b, on: p0 }) in planes.iter().enumerate() {
-        let scale = a.x.abs().max(a.y.abs());
-        if a.x * x.x + a.y * x.y <= b + 1e-12 * scale * (x.x.abs() + x.y.abs() + 1.0) {
+    for (done, plane) in planes.iter().enumerate() {
+        if !plane.violated_by(x) {
             continue;
         }
+        let (a, p0) = (plane.a, plane.on);
         // The optimum moves onto this edge's line: a one-dimensional problem along it.
         let u = Point::new(-a.y, a.x);
         let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
@@ -96,18 +134,15 @@ fn kernel_extreme(planes: &[Plane], bounds: Rect, dir: Point) -> Option<Point> {
     Some(x)
 }
 
-/// `0..n` in a fixed pseudo-random order (the expected linear time needs an order the input
-/// cannot line up with; a fixed seed keeps results reproducible).
-fn shuffled(n: usize) -> Vec<usize> {
-    let mut order: Vec<usize> = (0..n).collect();
-    let mut s: u64 = 0x9e37_79b9_7f4a_7c15;
-    for i in (1..n).rev() {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        order.swap(i, (s % (i as u64 + 1)) as usize);
+/// Shuffles `items` (Fisher-Yates with a xorshift generator: a fixed seed keeps results
+/// reproducible, and the expected linear time needs an order the input cannot line up with).
+fn shuffle<T>(items: &mut [T], seed: &mut u64) {
+    for i in (1..items.len()).rev() {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        items.swap(i, (*seed % (i as u64 + 1)) as usize);
     }
-    order
 }
 
 #[cfg(test)]
