@@ -32,8 +32,11 @@ pub(crate) fn alone(operand: &Polygons, fill: FillRule) -> Option<Polygons> {
     if crossed {
         return None;
     }
+    // A sliver whose rounded area is near zero has its orientation and form left to the sweep.
     let area = ring.signed_area();
-    if area == 0.0 {
+    let b = ring.bounds();
+    let scale = b.width().max(b.height());
+    if !(area.abs() > 1e-6 * scale * scale) {
         return None;
     }
     let inside = fill.is_inside(if area > 0.0 { 1 } else { -1 });
