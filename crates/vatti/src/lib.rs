@@ -39,9 +39,20 @@
 //!   replaced by a path around it and the loops it wound around the box are added back as
 //!   border loops, so every winding number inside the box is unchanged and no point is
 //!   rounded. A spiky star of 10^6 edges against a small box inside it sweeps a handful of
-//!   edges. ∪ and ⊕ sweep everything: outside the other operand's box the result is an operand
-//!   itself, which still needs the sweep to come out as simple rings (a spiky star's sweep is
-//!   quadratic in its edges, Clipper2's too).
+//!   edges. When no edge of the other operand reaches the box, that operand is all or nothing
+//!   there, and only the subject (or nothing) is swept.
+//! - **Splice** (`far_splice`), for ∪, ⊕ and − of a big subject: outside the other operand's
+//!   box the result is an operand itself, so when that operand is already in conventional form
+//!   its chains there pass through unchanged. Only its part inside the box (cut exactly, windings
+//!   kept) is swept with the other operand, and the chains are joined back where it crosses the
+//!   box's border (exact crossing tests; the rounded crossing points are never output). Vatti's
+//!   `clip` takes it when an operand is one big ring certified simple (`star_shaped`: a point it
+//!   is star-shaped from, found by linear programming and checked exactly), so a spiky star's
+//!   quadratic sweep is never run; a big ring that is simple but not star-shaped is still swept.
+//!   Anything degenerate at the box's border falls back to the whole sweep.
+//! - **Lone small simple ring** (`simple_ring`): a ring of at most 24 vertices swept alone (the
+//!   rectangle path's cut subject, a subject the pre-filter found all inside) whose edges meet
+//!   only at shared vertices (every pair tested exactly) is its own conventional form.
 //! - **Rectangle path** (`rect_path`): ∩ with a clip that is one axis-aligned rectangle cuts
 //!   the subject to it side by side (Sutherland-Hodgman against each side's half-plane, which
 //!   keeps the winding numbers inside) and sweeps the cut subject alone, for any subject and
@@ -50,9 +61,8 @@
 //!   validated once and its rings get boxes over runs of edges (`edge_blocks`), so for ∩ and −
 //!   each subject's sweep takes only the clip edges near it, found without visiting the others.
 //!   For ∪ and ⊕ the clip's region under the fill rule is resolved once into conventional rings
-//!   (`far_splice`): each subject sweeps only their part inside its grown box, and their chains
-//!   outside it, which the result keeps as they are, are spliced back exactly (a degenerate
-//!   meeting with the box's border falls back to the whole sweep). The clip's local minima are
+//!   (on the first such call), which each subject splices into: only their part inside its
+//!   grown box is swept. The clip's local minima are
 //!   not kept between calls: the sweep's tables are built from the cut operands, which are small. [`VattiPrepared`] puts it behind [`PolygonClipper`]
 //!   (`vatti-prepared` in the harness), keeping each thread's last prepared clip.
 //!
