@@ -36,7 +36,7 @@ pub(crate) fn alone(operand: &Polygons, fill: FillRule) -> Option<Polygons> {
     let area = ring.signed_area();
     let b = ring.bounds();
     let scale = b.width().max(b.height());
-    if !(area.abs() > 1e-6 * scale * scale) {
+    if area.abs() <= 1e-6 * scale * scale {
         return None;
     }
     let inside = fill.is_inside(if area > 0.0 { 1 } else { -1 });
