@@ -208,6 +208,14 @@ impl Cut {
                         return None;
                     }
                     let (entry, leave) = crossings(u, w, &b)?;
+                    // A crossing exactly in line with the next inside edge would let the local
+                    // sweep drop the vertex between them, which the whole sweep keeps.
+                    let in_line = |a: Point, m: Point, c: Point| orient(a, m, c) == Orientation::Collinear;
+                    if entry.is_some_and(|y| end == Place::Inside && in_line(y, w, pts[(i + 2) % n]))
+                        || leave.is_some_and(|x| inside == Place::Inside && in_line(pts[(i + n - 1) % n], u, x))
+                    {
+                        return None;
+                    }
                     match (inside, end, entry, leave) {
                         (Place::Inside, Place::Inside, None, None) => local.push(w),
                         (Place::Outside, Place::Outside, None, None) => acc += sunday(u, w, c),
