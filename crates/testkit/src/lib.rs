@@ -7,7 +7,8 @@
 //! - [`workload`]: every case is a pure function of (workload name, seed, index), seeded with
 //!   `rand_pcg::Pcg64` from a hash of the three, so cases do not depend on iteration order or
 //!   thread count. Polygon workloads [`workload::POLYGON_WORKLOADS`] (`vatti-t3`, `star`,
-//!   `scribble`, `holes`, `multi`, `grid`, `large`), line workloads [`workload::LINE_WORKLOADS`]
+//!   `scribble`, `scribble-rect`, `holes`, `multi`, `grid`, `large`, `spiky-box`,
+//!   `many-subjects`), line workloads [`workload::LINE_WORKLOADS`]
 //!   (`wang-t4`, `lines-degenerate`, `lines-large`), curve workloads
 //!   [`workload::CURVE_WORKLOADS`] (`circles`, `ellipses`), and [`workload::hard_cases`], inputs
 //!   the mature clippers' bug trackers are full of.

@@ -32,8 +32,19 @@ use rand_pcg::Pcg64;
 use shapes::{checkerboard, edge_count, grid_ring, scribble, smooth, star};
 
 /// The polygon workloads, by name.
-pub const POLYGON_WORKLOADS: &[&str] =
-    &["vatti-t3", "star", "star-far", "scribble", "holes", "multi", "grid", "large", "spiky-box", "many-subjects"];
+pub const POLYGON_WORKLOADS: &[&str] = &[
+    "vatti-t3",
+    "star",
+    "star-far",
+    "scribble",
+    "scribble-rect",
+    "holes",
+    "multi",
+    "grid",
+    "large",
+    "spiky-box",
+    "many-subjects",
+];
 
 /// How far `star-far` moves `star`'s cases: UTM-like magnitudes, where one ulp of a coordinate
 /// (about 1.2e-7) is no longer small beside the 1e-9 relative area tolerance of a 1000-unit box.
@@ -136,7 +147,9 @@ fn polygon_name(workload: &str) -> Result<&'static str, UnknownWorkload> {
 ///
 /// Sizes: `vatti-t3` cycles through [`VATTI_EDGES`] by index; `large` alternates smooth blobs and
 /// checkerboards over [`LARGE_EDGES`]; `spiky-box` is a spiky star against a box of about 1% of
-/// its area inside it; `many-subjects` is a subject of 4-40 edges over one clip polygon of
+/// its area inside it; `scribble-rect` is a self-crossing scribble against an axis-aligned
+/// rectangle overlapping it (one in four clockwise), so the clippers' rectangle paths are checked
+/// on any subject under every fill rule; `many-subjects` is a subject of 4-40 edges over one clip polygon of
 /// [`MANY_SUBJECTS_CLIP_EDGES`] edges that is the same for every index of a seed (a sized case
 /// sizes that clip); the others draw 6-200 edges per operand, log-uniformly.
 pub fn polygon_case(
@@ -212,6 +225,15 @@ fn make_polygon_case(
             let o = offset_center(&mut rng);
             let c = scribble(&mut rng, m, Rect::new(o.x - 350.0, o.y - 350.0, o.x + 350.0, o.y + 350.0));
             (s.into(), c.into(), format!("scribble subject {n} edges vs scribble clip {m} edges"))
+        }
+        "scribble-rect" => {
+            let n = size(&mut rng);
+            let s = scribble(&mut rng, n, Rect::new(100.0, 100.0, 900.0, 900.0));
+            let r = windows::rectangle_over(&mut rng, &s.bounds(), false);
+            let cw = rng.random_bool(0.25);
+            let c = if cw { Polygons::new(r.rings.iter().map(Ring::reversed).collect()) } else { r };
+            let way = if cw { "clockwise" } else { "counter-clockwise" };
+            (s.into(), c, format!("scribble-rect subject {n} edges vs a {way} rectangle"))
         }
         "holes" => {
             let (n, m) = (size(&mut rng), size(&mut rng));

@@ -12,7 +12,7 @@
 use std::borrow::Cow;
 
 use clip_core::predicates::{Orientation, orient};
-use clip_core::{BoolOp, MAX_COORDINATE, MIN_COORDINATE, Point, Polygons, Rect, Ring};
+use clip_core::{BoolOp, FillRule, MAX_COORDINATE, MIN_COORDINATE, Point, Polygons, Rect, Ring};
 
 use crate::edge_blocks::EdgeBlocks;
 
@@ -39,6 +39,18 @@ impl Envelope {
     pub(crate) fn new(b: Rect) -> Option<Envelope> {
         let c = Point::new(b.min.x + 0.5 * (b.max.x - b.min.x), b.min.y + 0.5 * (b.max.y - b.min.y));
         (c.x > b.min.x && c.x < b.max.x && c.y > b.min.y && c.y < b.max.y).then_some(Envelope { b, c })
+    }
+
+    /// The box.
+    #[inline]
+    pub(crate) fn rect(&self) -> Rect {
+        self.b
+    }
+
+    /// The point strictly inside the box that windings are measured at.
+    #[inline]
+    pub(crate) fn center(&self) -> Point {
+        self.c
     }
 
     /// True when box `r` has no point in common with the closed box.
@@ -122,7 +134,7 @@ impl Envelope {
     }
 
     /// The corners passed going counter-clockwise along the border from `from` to `to`.
-    fn corners_between(&self, from: Point, to: Point, out: &mut Vec<Point>) {
+    pub(crate) fn corners_between(&self, from: Point, to: Point, out: &mut Vec<Point>) {
         let ((mut k, kp), (sq, kq)) = (self.place(from), self.place(to));
         if k == sq && kq >= kp {
             return;
@@ -188,7 +200,7 @@ impl Envelope {
     }
 
     /// `count` loops of the border, counter-clockwise when positive.
-    fn border_loops(&self, count: i32, rings: &mut Vec<Ring>) {
+    pub(crate) fn border_loops(&self, count: i32, rings: &mut Vec<Ring>) {
         let ccw: Vec<Point> = (0..4).map(|k| self.corner(k)).collect();
         let ring = if count > 0 { Ring::new(ccw) } else { Ring::new(ccw).reversed() };
         rings.extend(std::iter::repeat_n(ring, count.unsigned_abs() as usize));
@@ -197,7 +209,7 @@ impl Envelope {
 
 /// Sunday's signed crossing of edge `a -> b` with the rightward ray from `c` (exact).
 #[inline]
-fn sunday(a: Point, b: Point, c: Point) -> i32 {
+pub(crate) fn sunday(a: Point, b: Point, c: Point) -> i32 {
     if a.y <= c.y {
         i32::from(b.y > c.y && orient(a, b, c) == Orientation::CounterClockwise)
     } else if b.y <= c.y && orient(a, b, c) == Orientation::Clockwise {
@@ -249,7 +261,7 @@ pub(crate) fn cut(polygons: &Polygons, b: Rect, blocks: Option<&[EdgeBlocks]>) -
 /// clear of the operand whose box it is (on that operand's edges, rounded crossings a few ulps
 /// off them would make slivers in the output); `None` when the grown corners leave the valid
 /// coordinate range.
-fn grown(b: Rect) -> Option<Rect> {
+pub(crate) fn grown(b: Rect) -> Option<Rect> {
     let m = 0.125 * b.extent();
     let g = Rect::new(b.min.x - m, b.min.y - m, b.max.x + m, b.max.y + m);
     let valid = |v: f64| v.abs() <= MAX_COORDINATE && (v == 0.0 || v.abs() >= MIN_COORDINATE);
@@ -260,25 +272,50 @@ fn grown(b: Rect) -> Option<Rect> {
 /// clip's (grown) box, then the clip to the cut subject's; for − the clip to the subject's box
 /// (the subject is zero outside it). ∪ and ⊕ keep everything (outside the other operand's box the
 /// result is an operand itself, which still needs the sweep to come out as simple rings).
-/// `clip_blocks` are the clip's edge blocks when it was prepared.
+/// When no clip edge reaches the box, the clip is all or nothing over the subject, and the
+/// subject alone is swept (as its union with nothing) or nothing is. `clip_blocks` are the clip's
+/// edge blocks when it was prepared.
 pub(crate) fn prefilter<'a>(
     subject: &'a Polygons,
     clip: &'a Polygons,
     clip_bounds: Rect,
     clip_blocks: Option<&[EdgeBlocks]>,
     op: BoolOp,
-) -> (Cow<'a, Polygons>, Cow<'a, Polygons>) {
+    fill: FillRule,
+) -> (Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp) {
     let owned = |cut: Option<Polygons>, whole: &'a Polygons| cut.map_or(Cow::Borrowed(whole), Cow::Owned);
-    let cut_to = |p: &Polygons, b: Rect, blocks| grown(b).and_then(|g| cut(p, g, blocks));
+    let cut_to = |p: &Polygons, b: Rect, blocks| {
+        grown(b).and_then(|g| cut(p, g, blocks).map(|c| (uniform_winding(&c, g).map(|w| fill.is_inside(w)), c)))
+    };
+    let nothing = || Cow::Owned(Polygons::default());
     match op {
         BoolOp::Intersection => {
-            let a = owned(cut_to(subject, clip_bounds, None), subject);
-            let b = owned(cut_to(clip, a.bounds(), clip_blocks), clip);
-            (a, b)
+            let a = match cut_to(subject, clip_bounds, None) {
+                Some((Some(true), _)) => return (Cow::Borrowed(clip), nothing(), BoolOp::Union),
+                Some((Some(false), _)) => return (nothing(), nothing(), BoolOp::Union),
+                other => owned(other.map(|c| c.1), subject),
+            };
+            match cut_to(clip, a.bounds(), clip_blocks) {
+                Some((Some(true), _)) => (a, nothing(), BoolOp::Union),
+                Some((Some(false), _)) => (nothing(), nothing(), BoolOp::Union),
+                other => (a, owned(other.map(|c| c.1), clip), op),
+            }
         }
-        BoolOp::Difference => (Cow::Borrowed(subject), owned(cut_to(clip, subject.bounds(), clip_blocks), clip)),
-        BoolOp::Union | BoolOp::Xor => (Cow::Borrowed(subject), Cow::Borrowed(clip)),
+        BoolOp::Difference => match cut_to(clip, subject.bounds(), clip_blocks) {
+            Some((Some(true), _)) => (nothing(), nothing(), BoolOp::Union),
+            Some((Some(false), _)) => (Cow::Borrowed(subject), nothing(), BoolOp::Union),
+            other => (Cow::Borrowed(subject), owned(other.map(|c| c.1), clip), op),
+        },
+        BoolOp::Union | BoolOp::Xor => (Cow::Borrowed(subject), Cow::Borrowed(clip), op),
     }
+}
+
+/// The winding number over the whole of box `g` when `cut` (an operand cut to `g`) is nothing
+/// but loops of its border.
+fn uniform_winding(cut: &Polygons, g: Rect) -> Option<i32> {
+    let corner = |p: &Point| (p.x == g.min.x || p.x == g.max.x) && (p.y == g.min.y || p.y == g.max.y);
+    let loops = cut.rings.iter().all(|r| r.points.len() == 4 && r.points.iter().all(corner));
+    loops.then(|| cut.rings.iter().map(|r| if r.signed_area() > 0.0 { 1 } else { -1 }).sum())
 }
 
 #[cfg(test)]

@@ -39,9 +39,20 @@
 //!   replaced by a path around it and the loops it wound around the box are added back as
 //!   border loops, so every winding number inside the box is unchanged and no point is
 //!   rounded. A spiky star of 10^6 edges against a small box inside it sweeps a handful of
-//!   edges. ∪ and ⊕ sweep everything: outside the other operand's box the result is an operand
-//!   itself, which still needs the sweep to come out as simple rings (a spiky star's sweep is
-//!   quadratic in its edges, Clipper2's too).
+//!   edges. When no edge of the other operand reaches the box, that operand is all or nothing
+//!   there, and only the subject (or nothing) is swept.
+//! - **Splice** (`far_splice`), for ∪, ⊕ and − of a big subject: outside the other operand's
+//!   box the result is an operand itself, so when that operand is already in conventional form
+//!   its chains there pass through unchanged. Only its part inside the box (cut exactly, windings
+//!   kept) is swept with the other operand, and the chains are joined back where it crosses the
+//!   box's border (exact crossing tests; the rounded crossing points are never output). Vatti's
+//!   `clip` takes it when an operand is one big ring certified simple (`star_shaped`: a point it
+//!   is star-shaped from, found by linear programming and checked exactly), so a spiky star's
+//!   quadratic sweep is never run; a big ring that is simple but not star-shaped is still swept.
+//!   Anything degenerate at the box's border falls back to the whole sweep.
+//! - **Lone small simple ring** (`simple_ring`): a ring of at most 24 vertices swept alone (the
+//!   rectangle path's cut subject, a subject the pre-filter found all inside) whose edges meet
+//!   only at shared vertices (every pair tested exactly) is its own conventional form.
 //! - **Rectangle path** (`rect_path`): ∩ with a clip that is one axis-aligned rectangle cuts
 //!   the subject to it side by side (Sutherland-Hodgman against each side's half-plane, which
 //!   keeps the winding numbers inside) and sweeps the cut subject alone, for any subject and
@@ -49,8 +60,10 @@
 //! - **Prepared clip** ([`Vatti::prepare`], [`PreparedClip`], `Send + Sync`): the clip is
 //!   validated once and its rings get boxes over runs of edges (`edge_blocks`), so for ∩ and −
 //!   each subject's sweep takes only the clip edges near it, found without visiting the others.
-//!   The clip's local minima are not kept between calls: the sweep's tables are built from the
-//!   cut operands, which are small. [`VattiPrepared`] puts it behind [`PolygonClipper`]
+//!   For ∪ and ⊕ the clip's region under the fill rule is resolved once into conventional rings
+//!   (on the first such call), which each subject splices into: only their part inside its
+//!   grown box is swept. The clip's local minima are
+//!   not kept between calls: the sweep's tables are built from the cut operands, which are small. [`VattiPrepared`] puts it behind [`PolygonClipper`]
 //!   (`vatti-prepared` in the harness), keeping each thread's last prepared clip.
 //!
 //! [`Vatti::clip_unfiltered`] keeps the plain sweep reachable; the tests compare every path with
@@ -133,6 +146,7 @@ mod cleanup;
 mod contribution;
 mod edge_blocks;
 mod envelope;
+mod far_splice;
 mod form_check;
 mod horizontal;
 mod intersections;
@@ -144,7 +158,9 @@ mod rect_path;
 mod repair;
 mod scanbeam;
 mod scratch;
+mod simple_ring;
 mod simplify;
+mod star_shaped;
 mod sweep;
 mod touches;
 mod trapezoids;
@@ -204,8 +220,7 @@ impl Vatti {
             let a = if inside { rect_path::cut_to_rectangle(subject, r) } else { Polygons::default() };
             return (Cow::Owned(a), Cow::Owned(Polygons::default()), BoolOp::Union);
         }
-        let (a, b) = envelope::prefilter(subject, clip, clip_bounds, clip_blocks, op);
-        (a, b, op)
+        envelope::prefilter(subject, clip, clip_bounds, clip_blocks, op, fill)
     }
 
     /// Validates both operands and reduces them ([`Vatti::reduced`]).
@@ -222,6 +237,13 @@ impl Vatti {
 
     /// The sweep's conventional rings of valid operands, repaired where rounding broke their form.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Polygons {
+        // A small simple ring alone (the rectangle path's cut subject, often) needs no sweep.
+        if clip.rings.is_empty()
+            && op != BoolOp::Intersection
+            && let Some(out) = simple_ring::alone(subject, fill)
+        {
+            return out;
+        }
         let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, strict: bool| {
             Vatti::sweep(a, b, op, fill, false, |rings, touches, _| {
                 cleanup::conventional_rings_checked(rings, touches, strict, || {
@@ -280,7 +302,12 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        let (a, b, op) = Vatti::filtered(subject, clip, op, fill)?;
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        if let Some(out) = far_splice::splice_big_ring(subject, clip, true, op, fill) {
+            return Ok(out);
+        }
+        let (a, b, op) = Vatti::reduced(subject, clip, clip.bounds(), None, op, fill);
         Ok(Vatti::sweep_polygons(&a, &b, op, fill))
     }
 

@@ -1,10 +1,13 @@
 //! A clip polygon prepared once for many subjects (the paper's Extensions: "clipping several
 //! subject polygons against a constant clip polygon"): validated, its box and edge blocks built.
 
+use std::sync::OnceLock;
+
 use clip_core::{BoolOp, ClipError, FillRule, Operand, Polygons, Rect, Trapezoid, validate_polygons};
 
 use crate::Vatti;
 use crate::edge_blocks::EdgeBlocks;
+use crate::far_splice::{Far, splice};
 
 /// A clip operand and fill rule fixed for many subjects. Each [`PreparedClip::clip`] validates
 /// only the subject and, for ∩ and −, sweeps only the clip edges that can reach the subject's
@@ -26,6 +29,9 @@ pub struct PreparedClip {
     fill: FillRule,
     bounds: Rect,
     blocks: Vec<EdgeBlocks>,
+    /// The clip's region under `fill` in conventional form with its edge blocks, made on the
+    /// first ∪ or ⊕: those splice the subject's neighbourhood into it (`far_splice`).
+    resolved: OnceLock<(Polygons, Vec<EdgeBlocks>)>,
 }
 
 impl Vatti {
@@ -37,6 +43,7 @@ impl Vatti {
             fill,
             bounds: clip.bounds(),
             blocks: clip.rings.iter().map(|r| EdgeBlocks::new(&r.points)).collect(),
+            resolved: OnceLock::new(),
         })
     }
 }
@@ -55,8 +62,27 @@ impl PreparedClip {
     /// `subject op clip`, as [`Vatti`]'s `clip` gives it.
     pub fn clip(&self, subject: &Polygons, op: BoolOp) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
+        if let Some(out) = crate::far_splice::splice_big_ring(subject, &self.clip, false, op, self.fill) {
+            return Ok(out);
+        }
+        if matches!(op, BoolOp::Union | BoolOp::Xor) {
+            let (rings, blocks) = self.resolved();
+            if let Some(out) = splice(subject, Far { rings, blocks: Some(blocks) }, false, op, self.fill) {
+                return Ok(out);
+            }
+        }
         let (a, b, op) = Vatti::reduced(subject, &self.clip, self.bounds, Some(&self.blocks), op, self.fill);
         Ok(Vatti::sweep_polygons(&a, &b, op, self.fill))
+    }
+
+    /// The clip's region in conventional form, resolved once.
+    fn resolved(&self) -> (&Polygons, &[EdgeBlocks]) {
+        let (rings, blocks) = self.resolved.get_or_init(|| {
+            let rings = Vatti::sweep_polygons(&self.clip, &Polygons::default(), BoolOp::Union, self.fill);
+            let blocks = rings.rings.iter().map(|r| EdgeBlocks::new(&r.points)).collect();
+            (rings, blocks)
+        });
+        (rings, blocks)
     }
 
     /// `subject op clip` as trapezoids, as [`Vatti`]'s `clip_trapezoids` gives them.

@@ -25,9 +25,29 @@ fn grid_rings() -> impl Strategy<Value = Polygons> {
         .prop_map(|rings| Polygons::new(rings.into_iter().filter(|r| r.distinct_points() >= 3).collect()))
 }
 
+/// A star-shaped ring of 64-300 vertices about (50, 50) (radii 5-50, either way round): a big
+/// ring the splice certifies simple and keeps out of the sweep.
+fn big_star() -> impl Strategy<Value = Polygons> {
+    (prop::collection::vec(5.0f64..50.0, 64..300), any::<bool>()).prop_map(|(radii, cw)| {
+        let n = radii.len() as f64;
+        let pts = radii
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let a = i as f64 * std::f64::consts::TAU / n;
+                Point::new(50.0 + r * a.cos(), 50.0 + r * a.sin())
+            })
+            .collect();
+        let ring = Ring::new(pts);
+        Polygons::from(if cw { ring.reversed() } else { ring })
+    })
+}
+
 /// A big subject and a smaller operand somewhere over it, beside it or inside it.
 fn operands() -> impl Strategy<Value = (Polygons, Polygons)> {
     prop_oneof![
+        (big_star(), (0.0f64..100.0, 0.0f64..100.0, 1.0f64..20.0))
+            .prop_flat_map(|(s, (x, y, k))| (Just(s), rings_in(x - k, y - k, k))),
         (rings_in(0.0, 0.0, 100.0), (-20.0f64..100.0, -20.0f64..100.0, 1.0f64..40.0))
             .prop_flat_map(|(s, (x, y, k))| (Just(s), rings_in(x, y, k))),
         (grid_rings(), grid_rings()),
@@ -92,6 +112,20 @@ fn spiky_stars_cut_to_a_box_inside_them_match_the_plain_sweep() {
         let case = polygon_case_sized("spiky-box", 7, index, edges, clip_core::WindowKind::Any).unwrap();
         for op in BoolOp::ALL {
             for fill in [FillRule::EvenOdd, FillRule::Positive] {
+                check_all_paths(&case.subject, &case.clip, op, fill).unwrap();
+            }
+        }
+    }
+}
+
+#[test]
+fn many_subjects_cases_match_the_plain_sweep_on_every_path() {
+    // Small subjects over a 1000-edge clip: the prepared clip splices ∪ and ⊕ into its resolved
+    // region, cutting it at the subject's box.
+    for index in 0..48 {
+        let case = clip_testkit::workload::polygon_case("many-subjects", 5, index, clip_core::WindowKind::Any).unwrap();
+        for op in BoolOp::ALL {
+            for fill in FillRule::ALL {
                 check_all_paths(&case.subject, &case.clip, op, fill).unwrap();
             }
         }
