@@ -29,7 +29,8 @@ pub struct Provenance {
     pub command: String,
     /// Seed of every generated case.
     pub seed: u64,
-    /// `git rev-parse HEAD`, with "+dirty" when the work tree had changes; "unknown" outside git.
+    /// The git revision the binary was built from (`git rev-parse HEAD` at build time), with
+    /// "+dirty" when the code differed from that commit; "unknown" outside git.
     pub git_revision: String,
     /// Where it ran.
     pub machine: Machine,
@@ -44,14 +45,22 @@ pub struct Provenance {
 impl Provenance {
     /// The provenance of a run whose measurements end now.
     pub fn now(command: &str, seed: u64, parameters: serde_json::Value) -> Provenance {
+        let built = BUILD_REVISION.to_owned();
+        // A long run can outlast the checkout it was built from: say so rather than stamp the new HEAD.
+        let notes = match checkout_revision() {
+            Some(head) if head != built && built != "unknown" => {
+                vec![format!("built from {built}; the checkout was at {head} when the results were written")]
+            }
+            _ => Vec::new(),
+        };
         Provenance {
             command: command.to_owned(),
             seed,
-            git_revision: git_revision(),
+            git_revision: built,
             machine: machine(),
             date: utc_now(),
             parameters,
-            notes: Vec::new(),
+            notes,
         }
     }
 
@@ -80,7 +89,11 @@ impl Provenance {
     }
 }
 
-fn git_revision() -> String {
+/// The revision this binary was built from, stamped by the build script.
+const BUILD_REVISION: &str = env!("CLIPBENCH_BUILD_REVISION");
+
+/// The checkout's HEAD now, as the build script stamps it, or `None` outside git.
+fn checkout_revision() -> Option<String> {
     let run = |args: &[&str]| {
         Command::new("git")
             .args(args)
@@ -94,9 +107,9 @@ fn git_revision() -> String {
             // Dirty means the code differs from the commit; result files being rewritten do not count.
             let code = ["status", "--porcelain", "--untracked-files=no", "--", "*.rs", "*.toml", "Cargo.lock", "*.sh"];
             let dirty = run(&code).is_some_and(|s| !s.is_empty());
-            if dirty { format!("{rev}+dirty") } else { rev }
+            Some(if dirty { format!("{rev}+dirty") } else { rev })
         }
-        _ => "unknown".to_owned(),
+        _ => None,
     }
 }
 
