@@ -19,8 +19,8 @@ pub struct LineCrossings {
     before_end: u32,
     /// How many intersections lie strictly between `M0` and `M1`.
     inside_count: usize,
-    /// The parameters of the first [`HELD`] of them, +inf past `inside_count`: a segment rarely
-    /// has more, and these sort in place by a fixed network.
+    /// The parameters of the first [`HELD`] of them (those past `inside_count` are left over from
+    /// earlier segments): a segment rarely has more, and these sort in place by a fixed network.
     held: [f64; HELD],
     /// All of their parameters once there are more than [`HELD`] (the held ones first).
     spilled: Vec<f64>,
@@ -66,7 +66,6 @@ impl LineCrossings {
         self.after_start = 0;
         self.before_end = 0;
         self.inside_count = 0;
-        self.held = [f64::INFINITY; HELD];
         self.along.clear();
     }
 
@@ -87,14 +86,22 @@ impl LineCrossings {
             if self.inside_count < HELD {
                 self.held[self.inside_count] = t;
             } else {
-                if self.inside_count == HELD {
-                    self.spilled.clear();
-                    self.spilled.extend_from_slice(&self.held);
-                }
-                self.spilled.push(t);
+                self.spill(t);
             }
             self.inside_count += 1;
         }
+    }
+
+    /// Records a crossing past the [`HELD`] ones; out of line, so the common path stays small in
+    /// the callers' loops.
+    #[cold]
+    #[inline(never)]
+    fn spill(&mut self, t: f64) {
+        if self.inside_count == HELD {
+            self.spilled.clear();
+            self.spilled.extend_from_slice(&self.held);
+        }
+        self.spilled.push(t);
     }
 
     /// Records `before` crossings before the start and `after` past the end, which only count
@@ -273,13 +280,17 @@ fn snap(v: &mut [f64]) {
 }
 
 /// The `count` crossing parameters of one segment, sorted: up to [`HELD`] in `held` (padded with
-/// +inf) by a sorting network, a fixed sequence of 19 compare-exchanges that compile to `min` and
+/// +inf here) by a sorting network, a fixed sequence of 19 compare-exchanges that compile to `min` and
 /// `max` with no branch on the data (crossings come in ring order, not along the line, so a
 /// comparison sort mispredicts about once per element; the rank sort before took 64 comparisons
 /// and two copies of variable length for 8); more, in `spilled`, by insertion.
 #[inline]
 fn sorted<'a>(held: &'a mut [f64; HELD], count: usize, spilled: &'a mut Vec<f64>) -> &'a mut [f64] {
     if count <= HELD {
+        // The slots past `count` as +inf, which sorts last: a select per slot, no branch.
+        for (i, t) in held.iter_mut().enumerate() {
+            *t = if i < count { *t } else { f64::INFINITY };
+        }
         sort_network(held);
         return &mut held[..count];
     }
@@ -395,9 +406,11 @@ mod tests {
 
     #[test]
     fn held_and_spilled_crossings_sort_alike() {
-        for n in 0..=12 {
+        // One recorder throughout, more and fewer crossings in turn: slots left over from a
+        // longer list must not show up in a shorter one.
+        let mut c = LineCrossings::default();
+        for n in (0..=12).chain((0..=12).rev()) {
             let values: Vec<f64> = (0..n).map(|i| f64::from((i * 7 + 3) % 5) / 4.0).collect();
-            let mut c = LineCrossings::default();
             c.clear();
             for &t in &values {
                 c.record(Along::Inside, t);
