@@ -486,14 +486,17 @@ impl PreparedWindow for PreparedLineIndex {
         // Then the root's child boxes, also over the batch: a segment with an end outside the
         // bounding box that meets none of them lies wholly outside. The children it meets are
         // kept beside its index: its walk starts from them rather than testing the root again.
-        let mut roots = vec![0u8; kept.len()];
+        // The root and the box are copied out first: the loop's stores into `kept` and `roots`
+        // could alias the tree for all the compiler knows, and it reloaded them per segment.
+        let (root, bounds) = (self.tree.nodes[0], self.bounds);
+        let mut roots = vec![0u32; kept.len()];
         let mut n = 0;
         for k in 0..kept.len() {
             let index = kept[k];
             let s = segments[index];
-            let entered = self.root_entry(&Ray::new(s.a, s.b, &self.bounds), &s);
-            (kept[n], roots[n]) = (index, entered as u8);
-            n += usize::from((entered != 0) | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0));
+            let entered = Ray::new(s.a, s.b, &bounds).segment_hits(&root, &s.bounds()) & u32::from(root.present);
+            (kept[n], roots[n]) = (index, entered);
+            n += usize::from((entered != 0) | ((bounds.outcode(s.a) | bounds.outcode(s.b)) == 0));
         }
         kept.truncate(n);
         // A batch that walks the tree more often than it has leaves reaches most of the window:
@@ -503,14 +506,7 @@ impl PreparedWindow for PreparedLineIndex {
             self.touch();
         }
         for (&index, &root_entered) in kept.iter().zip(&roots) {
-            self.clip_one::<false>(
-                index,
-                segments[index],
-                Some(u32::from(root_entered)),
-                out,
-                &mut crossings,
-                &mut counts,
-            );
+            self.clip_one::<false>(index, segments[index], Some(root_entered), out, &mut crossings, &mut counts);
         }
         Ok(())
     }
