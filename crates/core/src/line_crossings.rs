@@ -188,7 +188,9 @@ impl LineCrossings {
     fn emit_few(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
         let before = out.len();
         let m0_inside = self.after_start % 2 == 1;
-        let [t0, t1, ..] = self.held;
+        // Read one slot at a time: a load spanning two slots written apart cannot be forwarded
+        // from the stores and waits for them.
+        let (t0, t1) = (self.held[0], self.held[1]);
         match self.inside_count {
             0 => {
                 if m0_inside {
