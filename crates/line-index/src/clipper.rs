@@ -29,6 +29,23 @@ struct Line {
     trusted_gap: f64,
 }
 
+/// Slots of a walk's stack: each level pushes at most WAYS - 1 more than it pops, so 64 hold
+/// trees far deeper than u32 leaf indices allow.
+const STACK: usize = 64;
+
+/// What a batch's walks share: the stack of nodes to visit, kept from segment to segment rather
+/// than zeroed for each walk, and the counters of [`PreparedLineIndex::clip_batch_counted`].
+struct WalkState {
+    stack: [u32; STACK],
+    counts: IndexCounts,
+}
+
+impl WalkState {
+    fn new() -> WalkState {
+        WalkState { stack: [0; STACK], counts: IndexCounts::default() }
+    }
+}
+
 /// What the horizontal ray found about a segment's start.
 enum Start {
     /// Not on the boundary: inside (true) or outside the window.
@@ -129,12 +146,12 @@ impl PreparedLineIndex {
         out: &mut Vec<VisiblePiece>,
     ) -> Result<IndexCounts, ClipError> {
         validate_segments(segments)?;
-        let mut counts = IndexCounts::default();
+        let mut state = WalkState::new();
         let mut crossings = LineCrossings::default();
         for (index, &s) in segments.iter().enumerate() {
-            self.clip_one::<true>(index, s, None, out, &mut crossings, &mut counts);
+            self.clip_one::<true>(index, s, None, out, &mut crossings, &mut state);
         }
-        Ok(counts)
+        Ok(state.counts)
     }
 
     /// One segment: bounding-box reject, then the tree walked along the ray from `a` through `b`,
@@ -148,21 +165,21 @@ impl PreparedLineIndex {
         root_entered: Option<u32>,
         out: &mut Vec<VisiblePiece>,
         crossings: &mut LineCrossings,
-        counts: &mut IndexCounts,
+        state: &mut WalkState,
     ) {
         if COUNT {
-            counts.segments += 1;
+            state.counts.segments += 1;
         }
         let (a, b) = (s.a, s.b);
         if a == b {
             if COUNT {
-                counts.zero_length += 1;
+                state.counts.zero_length += 1;
             }
             return;
         }
         if self.bounds.rejects_segment(a, b) {
             if COUNT {
-                counts.bounding_box += 1;
+                state.counts.bounding_box += 1;
             }
             return;
         }
@@ -185,7 +202,7 @@ impl PreparedLineIndex {
         if a_outside | b_outside {
             // The batch's pass over the root (`root_entry`) has tested its children already.
             let root_entered = root_entered.unwrap_or_else(|| self.root_entry(&ray, &s));
-            let found = self.walk::<COUNT, true, false>(Some(root_entered), &ray, &line, &frame, crossings, counts);
+            let found = self.walk::<COUNT, true, false>(Some(root_entered), &ray, &line, &frame, crossings, state);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
             // random in a batch spread over the screen).
@@ -195,12 +212,12 @@ impl PreparedLineIndex {
             let start = if self.tree.leaves.len() > SHORT_FROM_LEAVES
                 && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height())
             {
-                self.locate::<COUNT>(a, counts)
+                self.locate::<COUNT>(a, state)
             } else {
                 Start::OnBoundary
             };
             if let Start::Inside(inside) = start {
-                let found = self.walk::<COUNT, true, false>(None, &ray, &line, &frame, crossings, counts);
+                let found = self.walk::<COUNT, true, false>(None, &ray, &line, &frame, crossings, state);
                 // The crossings on the segment toggle the parity from the start's to the end's.
                 if (found + u32::from(inside)) % 2 == 1 {
                     crossings.record(Along::After, 1.0);
@@ -211,7 +228,7 @@ impl PreparedLineIndex {
             } else if self.exit_length(b, b - a) <= self.exit_length(a, a - b) {
                 // Crossings at or after the start, counted: every ring crosses the line an even
                 // number of times, so their parity is the parity of those before the start.
-                let found = self.walk::<COUNT, false, false>(None, &ray, &line, &frame, crossings, counts);
+                let found = self.walk::<COUNT, false, false>(None, &ray, &line, &frame, crossings, state);
                 if found % 2 == 1 {
                     crossings.record(Along::Before, 0.0);
                 }
@@ -219,7 +236,7 @@ impl PreparedLineIndex {
                 // The same from the end backwards, where the line leaves the box sooner that way:
                 // crossings at or before the end, and the parity of those after it.
                 let back = Ray::new(b, a, &self.bounds);
-                let found = self.walk::<COUNT, false, true>(None, &back, &line, &frame, crossings, counts);
+                let found = self.walk::<COUNT, false, true>(None, &back, &line, &frame, crossings, state);
                 if found % 2 == 1 {
                     crossings.record(Along::After, 1.0);
                 }
@@ -227,13 +244,13 @@ impl PreparedLineIndex {
         }
         if crossings.is_empty() {
             if COUNT {
-                counts.no_crossing += 1;
+                state.counts.no_crossing += 1;
             }
             return;
         }
         let written = crossings.emit(index, &frame, out);
         if COUNT && written > 0 {
-            counts.visible += 1;
+            state.counts.visible += 1;
         }
     }
 
@@ -272,7 +289,7 @@ impl PreparedLineIndex {
         line: &Line,
         frame: &LineFrame,
         crossings: &mut LineCrossings,
-        counts: &mut IndexCounts,
+        state: &mut WalkState,
     ) -> u32 {
         let segment = &Segment::new(frame.a, frame.b).bounds();
         let mut found = 0;
@@ -294,7 +311,7 @@ impl PreparedLineIndex {
                     crossings,
                 )
             },
-            counts,
+            state,
         );
         found
     }
@@ -308,7 +325,7 @@ impl PreparedLineIndex {
         root_entered: Option<u32>,
         hits: impl Fn(&Node) -> u32,
         mut leaf: impl FnMut(&Range<u32>, &Node, usize),
-        counts: &mut IndexCounts,
+        state: &mut WalkState,
     ) {
         let nodes = &self.tree.nodes;
         let root = &nodes[0];
@@ -320,21 +337,19 @@ impl PreparedLineIndex {
             }
             return;
         }
-        // Each level pushes at most WAYS - 1 more than it pops: 64 slots hold trees far deeper
-        // than u32 leaf indices allow.
-        let mut stack = [0u32; 64];
+        let stack = &mut state.stack;
         let mut top = 0;
         let mut node = root;
         loop {
             if COUNT {
-                counts.nodes_tested += 1;
+                state.counts.nodes_tested += 1;
             }
             while entered != 0 {
                 let i = entered.trailing_zeros() as usize;
                 entered &= entered - 1;
                 if node.leaves & (1 << i) != 0 {
                     if COUNT {
-                        counts.leaves_scanned += 1;
+                        state.counts.leaves_scanned += 1;
                     }
                     leaf(&self.tree.leaves[node.child[i] as usize], node, i);
                 } else {
@@ -354,7 +369,7 @@ impl PreparedLineIndex {
     /// The exact place of `a` in the window (even-odd), by the crossings of a horizontal ray from
     /// `a` to the nearer side of the bounding box, edges taken half-open in y; or that `a` lies on
     /// the boundary.
-    fn locate<const COUNT: bool>(&self, a: Point, counts: &mut IndexCounts) -> Start {
+    fn locate<const COUNT: bool>(&self, a: Point, state: &mut WalkState) -> Start {
         let rightwards = self.bounds.max.x - a.x <= a.x - self.bounds.min.x;
         let mut odd = false;
         let mut on_boundary = false;
@@ -384,7 +399,7 @@ impl PreparedLineIndex {
                     }
                 }
             },
-            counts,
+            state,
         );
         if on_boundary { Start::OnBoundary } else { Start::Inside(odd) }
     }
@@ -478,7 +493,7 @@ impl PreparedWindow for PreparedLineIndex {
     fn clip_batch(&self, segments: &[Segment], out: &mut Vec<VisiblePiece>) -> Result<(), ClipError> {
         validate_segments(segments)?;
         let mut crossings = LineCrossings::default();
-        let mut counts = IndexCounts::default();
+        let mut state = WalkState::new();
         // The bounding box over the whole batch first, without branches (see
         // `Rect::keep_meeting`), then the segments it kept.
         let mut kept = Vec::new();
@@ -506,7 +521,7 @@ impl PreparedWindow for PreparedLineIndex {
             self.touch();
         }
         for (&index, &root_entered) in kept.iter().zip(&roots) {
-            self.clip_one::<false>(index, segments[index], Some(root_entered), out, &mut crossings, &mut counts);
+            self.clip_one::<false>(index, segments[index], Some(root_entered), out, &mut crossings, &mut state);
         }
         Ok(())
     }
