@@ -72,7 +72,9 @@
 //! otherwise: short edges near the line, on a finely sampled boundary, cost no exact expansion. A
 //! box is skipped only when a rounded two-product expression of exact coordinates at its extreme
 //! corner clears the same kind of error bound, so a box the ray (or segment) touches is never
-//! skipped; the horizontal ray compares coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
+//! skipped (each comparison is taken as the sign of a rounded difference of two finite values,
+//! which is the exact one, so one `max` over them decides a box); the horizontal ray compares
+//! coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
 //! as on its negative side (one crossing when its neighbours lie on opposite sides, a touch
 //! otherwise); an edge along the line is boundary, so visible.
 //!
