@@ -282,10 +282,9 @@ fn snap(v: &mut [f64]) {
 }
 
 /// The `count` crossing parameters of one segment, sorted: up to [`HELD`] in `held` (padded with
-/// +inf here) by a sorting network, a fixed sequence of 19 compare-exchanges that compile to `min` and
-/// `max` with no branch on the data (crossings come in ring order, not along the line, so a
-/// comparison sort mispredicts about once per element; the rank sort before took 64 comparisons
-/// and two copies of variable length for 8); more, in `spilled`, by insertion.
+/// +inf here) by a sorting network, 19 compare-exchanges that compile to `min` and `max` with no
+/// branch on the data (crossings come in ring order, not along the line, so a comparison sort
+/// mispredicts about once per element); more, in `spilled`, by insertion.
 #[inline]
 fn sorted<'a>(held: &'a mut [f64; HELD], count: usize, spilled: &'a mut Vec<f64>) -> &'a mut [f64] {
     if count <= HELD {

@@ -201,7 +201,7 @@ impl PreparedLineIndex {
         let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
         if a_outside | b_outside {
             // The batch's pass over the root (`root_entry`) has tested its children already.
-            let root_entered = root_entered.unwrap_or_else(|| self.root_entry(&ray, &s));
+            let root_entered = root_entered.unwrap_or_else(|| Self::root_entry(&self.tree.nodes[0], &ray, &s));
             let found = self.walk::<COUNT, true, false>(Some(root_entered), &ray, &line, &frame, crossings, state);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
@@ -254,11 +254,10 @@ impl PreparedLineIndex {
         }
     }
 
-    /// The root's children whose boxes the closed segment `s` (the ray `ray` from its start, of
-    /// positive length) can meet, as bits. Branch-free.
+    /// The children of `root` whose boxes the closed segment `s` (the ray `ray` from its start,
+    /// of positive length) can meet, as bits. Branch-free.
     #[inline(always)]
-    fn root_entry(&self, ray: &Ray, s: &Segment) -> u32 {
-        let root = &self.tree.nodes[0];
+    fn root_entry(root: &Node, ray: &Ray, s: &Segment) -> u32 {
         ray.segment_hits(root, &s.bounds()) & u32::from(root.present)
     }
 
@@ -509,7 +508,7 @@ impl PreparedWindow for PreparedLineIndex {
         for k in 0..kept.len() {
             let index = kept[k];
             let s = segments[index];
-            let entered = Ray::new(s.a, s.b, &bounds).segment_hits(&root, &s.bounds()) & u32::from(root.present);
+            let entered = Self::root_entry(&root, &Ray::new(s.a, s.b, &bounds), &s);
             (kept[n], roots[n]) = (index, entered);
             n += usize::from((entered != 0) | ((bounds.outcode(s.a) | bounds.outcode(s.b)) == 0));
         }
