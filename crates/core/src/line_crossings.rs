@@ -11,18 +11,40 @@ use crate::{Segment, VisiblePiece};
 /// when the crossings after it are odd in number, the end when those before it are. Edges along
 /// the line are boundary, visible under the closed-set rule, and are united with the inside
 /// intervals at the end.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct LineCrossings {
     /// Intersections strictly after `M0` (`t > 0`).
     after_start: u32,
     /// Intersections strictly before `M1` (`t < 1`).
     before_end: u32,
-    /// Parameters of the intersections strictly between `M0` and `M1`.
-    inside: Vec<f64>,
+    /// How many intersections lie strictly between `M0` and `M1`.
+    inside_count: usize,
+    /// The parameters of the first [`HELD`] of them (those past `inside_count` are left over from
+    /// earlier segments): a segment rarely has more, and these sort in place by a fixed network.
+    held: [f64; HELD],
+    /// All of their parameters once there are more than [`HELD`] (the held ones first).
+    spilled: Vec<f64>,
     /// Parameter intervals (clamped to `[0, 1]`) of window edges along the line.
     along: Vec<(f64, f64)>,
     /// Visible intervals before merging.
     spans: Vec<(f64, f64)>,
+}
+
+/// Crossings inside the segment held in [`LineCrossings::held`] before they spill to a vector.
+const HELD: usize = 8;
+
+impl Default for LineCrossings {
+    fn default() -> LineCrossings {
+        LineCrossings {
+            after_start: 0,
+            before_end: 0,
+            inside_count: 0,
+            held: [f64::INFINITY; HELD],
+            spilled: Vec::new(),
+            along: Vec::new(),
+            spans: Vec::new(),
+        }
+    }
 }
 
 /// A place on the line as a parameter clamped to `[0, 1]` (the place decides, the value follows).
@@ -43,7 +65,7 @@ impl LineCrossings {
     pub fn clear(&mut self) {
         self.after_start = 0;
         self.before_end = 0;
-        self.inside.clear();
+        self.inside_count = 0;
         self.along.clear();
     }
 
@@ -51,7 +73,7 @@ impl LineCrossings {
     /// is outside), none on it and no edge along it.
     #[inline]
     pub fn is_empty(&self) -> bool {
-        self.after_start == 0 && self.inside.is_empty() && self.along.is_empty()
+        self.after_start == 0 && self.inside_count == 0 && self.along.is_empty()
     }
 
     /// Records a crossing of the boundary at `place`, parameter `t`.
@@ -60,8 +82,26 @@ impl LineCrossings {
         self.after_start += u32::from(place > Along::AtStart);
         self.before_end += u32::from(place < Along::AtEnd);
         if place == Along::Inside {
-            self.inside.push(t.clamp(0.0, 1.0));
+            let t = t.clamp(0.0, 1.0);
+            if self.inside_count < HELD {
+                self.held[self.inside_count] = t;
+            } else {
+                self.spill(t);
+            }
+            self.inside_count += 1;
         }
+    }
+
+    /// Records a crossing past the [`HELD`] ones; out of line, so the common path stays small in
+    /// the callers' loops.
+    #[cold]
+    #[inline(never)]
+    fn spill(&mut self, t: f64) {
+        if self.inside_count == HELD {
+            self.spilled.clear();
+            self.spilled.extend_from_slice(&self.held);
+        }
+        self.spilled.push(t);
     }
 
     /// Records `before` crossings before the start and `after` past the end, which only count
@@ -95,13 +135,13 @@ impl LineCrossings {
 
     /// [`LineCrossings::emit`] in general: any number of crossings, edges along the line.
     fn emit_general(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
-        sort_small(&mut self.inside);
-        snap(&mut self.inside);
+        let crossings = sorted(&mut self.held, self.inside_count, &mut self.spilled);
+        snap(crossings);
         let (m0_inside, m1_inside) = (self.after_start % 2 == 1, self.before_end % 2 == 1);
         self.spans.clear();
         let mut inside = m0_inside;
         let mut from = 0.0;
-        for &t in &self.inside {
+        for &t in &*crossings {
             if inside {
                 self.spans.push((from, t));
             }
@@ -148,14 +188,17 @@ impl LineCrossings {
     fn emit_few(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) -> usize {
         let before = out.len();
         let m0_inside = self.after_start % 2 == 1;
-        match *self.inside.as_slice() {
-            [] => {
+        // Read one slot at a time: a load spanning two slots written apart cannot be forwarded
+        // from the stores and waits for them.
+        let (t0, t1) = (self.held[0], self.held[1]);
+        match self.inside_count {
+            0 => {
                 if m0_inside {
                     frame.push_piece(out, index, (0.0, 1.0));
                 }
             }
-            [t] => frame.push_piece(out, index, if m0_inside { (0.0, t) } else { (t, 1.0) }),
-            [t0, t1] => {
+            1 => frame.push_piece(out, index, if m0_inside { (0.0, t0) } else { (t0, 1.0) }),
+            2 => {
                 let (t0, t1) = (t0.min(t1), t0.max(t1));
                 let t1 = if t1 - t0 <= PARAMETER_SNAP { t0 } else { t1 };
                 if !m0_inside {
@@ -176,7 +219,7 @@ impl LineCrossings {
     /// snapping, pairing by parity and merging as the general path does, without its separate
     /// loops (each loop of varying length mispredicts once at its end).
     fn emit_sorted(&mut self, index: usize, frame: &LineFrame, out: &mut Vec<VisiblePiece>) {
-        sort_small(&mut self.inside);
+        let crossings = sorted(&mut self.held, self.inside_count, &mut self.spilled);
         let mut inside = self.after_start % 2 == 1;
         let (mut from, mut previous) = (0.0, f64::NEG_INFINITY);
         let mut current: Option<(f64, f64)> = None;
@@ -192,7 +235,7 @@ impl LineCrossings {
                 None => Some(span),
             };
         };
-        for &t in &self.inside {
+        for &t in &*crossings {
             let t = if t - previous <= PARAMETER_SNAP { previous } else { t };
             previous = t;
             if inside {
@@ -238,52 +281,56 @@ fn snap(v: &mut [f64]) {
     }
 }
 
-/// Sorts the few crossing parameters of one segment. Up to [`RANK_SORT_UP_TO`] of them by rank
-/// (each value's place is the count of values before it, ties by position): a fixed number of
-/// comparisons and no branch on the data, where an insertion sort of crossings that come in ring
-/// order (not along the line) mispredicts about once per element. Up to 4 in a rank sort of 4
-/// (16 comparisons instead of 64: three or four crossings are the common case past the two that
-/// `emit_few` takes). Longer lists by insertion.
+/// The `count` crossing parameters of one segment, sorted: up to [`HELD`] in `held` (padded with
+/// +inf here) by a sorting network, 19 compare-exchanges that compile to `min` and `max` with no
+/// branch on the data (crossings come in ring order, not along the line, so a comparison sort
+/// mispredicts about once per element); more, in `spilled`, by insertion.
 #[inline]
-fn sort_small(v: &mut [f64]) {
-    if v.len() <= 4 {
-        rank_sort::<4>(v);
-        return;
+fn sorted<'a>(held: &'a mut [f64; HELD], count: usize, spilled: &'a mut Vec<f64>) -> &'a mut [f64] {
+    if count <= HELD {
+        // The slots past `count` as +inf, which sorts last: a select per slot, no branch.
+        for (i, t) in held.iter_mut().enumerate() {
+            *t = if i < count { *t } else { f64::INFINITY };
+        }
+        sort_network(held);
+        return &mut held[..count];
     }
-    if v.len() <= RANK_SORT_UP_TO {
-        rank_sort::<RANK_SORT_UP_TO>(v);
-        return;
-    }
-    for i in 1..v.len() {
-        let x = v[i];
+    for i in 1..spilled.len() {
+        let x = spilled[i];
         let mut j = i;
-        while j > 0 && v[j - 1] > x {
-            v[j] = v[j - 1];
+        while j > 0 && spilled[j - 1] > x {
+            spilled[j] = spilled[j - 1];
             j -= 1;
         }
-        v[j] = x;
+        spilled[j] = x;
     }
+    spilled
 }
 
-/// Sorts `v` (at most `N` values) by rank, padded with +inf to `N` so the loops have fixed trip
-/// counts.
+/// Sorts 8 values (no NaN) by Knuth's optimal network for 8 inputs (19 comparators in 6
+/// rounds; The Art of Computer Programming, vol. 3, 5.3.4), written out so that the values stay
+/// in registers and each comparator is a `min` and a `max`.
 #[inline]
-fn rank_sort<const N: usize>(v: &mut [f64]) {
-    let mut padded = [f64::INFINITY; N];
-    padded[..v.len()].copy_from_slice(v);
-    let mut sorted = [0.0f64; N];
-    for (i, &x) in padded.iter().enumerate() {
-        let mut rank = 0;
-        for (j, &y) in padded.iter().enumerate() {
-            rank += usize::from((y < x) | ((y == x) & (j < i)));
-        }
-        sorted[rank] = x;
+fn sort_network(v: &mut [f64; HELD]) {
+    macro_rules! rounds {
+        ($($i:literal $j:literal),*) => {{
+            let mut w = *v;
+            $(
+                let (x, y) = (w[$i], w[$j]);
+                (w[$i], w[$j]) = (if y < x { y } else { x }, if y < x { x } else { y });
+            )*
+            *v = w;
+        }};
     }
-    v.copy_from_slice(&sorted[..v.len()]);
+    rounds!(
+        0 2, 1 3, 4 6, 5 7,
+        0 4, 1 5, 2 6, 3 7,
+        0 1, 2 3, 4 5, 6 7,
+        2 4, 3 5,
+        1 4, 3 6,
+        1 2, 3 4, 5 6
+    );
 }
-
-/// The longest list [`sort_small`] sorts by rank (quadratic in the length).
-const RANK_SORT_UP_TO: usize = 8;
 
 #[cfg(test)]
 mod tests {
@@ -348,13 +395,30 @@ mod tests {
     }
 
     #[test]
-    fn sorts_by_rank_and_by_insertion_alike() {
-        for n in 0..=12 {
-            let mut v: Vec<f64> = (0..n).map(|i| f64::from((i * 7 + 3) % 5) / 4.0).collect();
-            let mut expected = v.clone();
+    fn the_network_sorts_every_input_of_zeros_and_ones() {
+        // By the 0-1 principle a comparator network that sorts all 2^8 inputs of zeros and ones
+        // sorts every input.
+        for bits in 0u32..1 << HELD {
+            let mut v: [f64; HELD] = core::array::from_fn(|i| f64::from((bits >> i) & 1));
+            sort_network(&mut v);
+            assert!(v.is_sorted(), "{bits:08b}: {v:?}");
+        }
+    }
+
+    #[test]
+    fn held_and_spilled_crossings_sort_alike() {
+        // One recorder throughout, more and fewer crossings in turn: slots left over from a
+        // longer list must not show up in a shorter one.
+        let mut c = LineCrossings::default();
+        for n in (0..=12).chain((0..=12).rev()) {
+            let values: Vec<f64> = (0..n).map(|i| f64::from((i * 7 + 3) % 5) / 4.0).collect();
+            c.clear();
+            for &t in &values {
+                c.record(Along::Inside, t);
+            }
+            let mut expected = values.clone();
             expected.sort_by(f64::total_cmp);
-            sort_small(&mut v);
-            assert_eq!(v, expected, "{n} values");
+            assert_eq!(sorted(&mut c.held, c.inside_count, &mut c.spilled), &expected[..], "{n} values");
         }
     }
 

@@ -3,8 +3,7 @@
 use clip_core::predicates::{orient_sign, orient2d};
 use clip_core::{
     Along, ClipError, LineCapabilities, LineClipper, LineCrossings, LineFrame, LineSide, Point, Polygons,
-    PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, retain_indices, validate_segments,
-    validate_window,
+    PreparedWindow, Rect, Segment, VisiblePiece, WindowKind, WindowRings, validate_segments, validate_window,
 };
 
 use core::ops::Range;
@@ -28,6 +27,23 @@ struct Line {
     /// A gap `|fp - fq|` above which a crossing's rounded end values are kept as they are
     /// ([`LineSide::crossing_gap_bound`]).
     trusted_gap: f64,
+}
+
+/// Slots of a walk's stack: each level pushes at most WAYS - 1 more than it pops, so 64 hold
+/// trees far deeper than u32 leaf indices allow.
+const STACK: usize = 64;
+
+/// What a batch's walks share: the stack of nodes to visit, kept from segment to segment rather
+/// than zeroed for each walk, and the counters of [`PreparedLineIndex::clip_batch_counted`].
+struct WalkState {
+    stack: [u32; STACK],
+    counts: IndexCounts,
+}
+
+impl WalkState {
+    fn new() -> WalkState {
+        WalkState { stack: [0; STACK], counts: IndexCounts::default() }
+    }
 }
 
 /// What the horizontal ray found about a segment's start.
@@ -130,38 +146,40 @@ impl PreparedLineIndex {
         out: &mut Vec<VisiblePiece>,
     ) -> Result<IndexCounts, ClipError> {
         validate_segments(segments)?;
-        let mut counts = IndexCounts::default();
+        let mut state = WalkState::new();
         let mut crossings = LineCrossings::default();
         for (index, &s) in segments.iter().enumerate() {
-            self.clip_one::<true>(index, s, out, &mut crossings, &mut counts);
+            self.clip_one::<true>(index, s, None, out, &mut crossings, &mut state);
         }
-        Ok(counts)
+        Ok(state.counts)
     }
 
     /// One segment: bounding-box reject, then the tree walked along the ray from `a` through `b`,
     /// every crossing at or after the start recorded, and the pieces read off by parity.
+    /// `root_entered`, when known, is [`Self::root_entry`] of the segment.
     #[inline]
     fn clip_one<const COUNT: bool>(
         &self,
         index: usize,
         s: Segment,
+        root_entered: Option<u32>,
         out: &mut Vec<VisiblePiece>,
         crossings: &mut LineCrossings,
-        counts: &mut IndexCounts,
+        state: &mut WalkState,
     ) {
         if COUNT {
-            counts.segments += 1;
+            state.counts.segments += 1;
         }
         let (a, b) = (s.a, s.b);
         if a == b {
             if COUNT {
-                counts.zero_length += 1;
+                state.counts.zero_length += 1;
             }
             return;
         }
         if self.bounds.rejects_segment(a, b) {
             if COUNT {
-                counts.bounding_box += 1;
+                state.counts.bounding_box += 1;
             }
             return;
         }
@@ -182,7 +200,9 @@ impl PreparedLineIndex {
         // tells the parity just after it: those segments take the ray.
         let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
         if a_outside | b_outside {
-            let found = self.walk::<COUNT, true, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
+            // The batch's pass over the root (`root_entry`) has tested its children already.
+            let root_entered = root_entered.unwrap_or_else(|| Self::root_entry(&self.tree.nodes[0], &ray, &s));
+            let found = self.walk::<COUNT, true, false>(Some(root_entered), &ray, &line, &frame, crossings, state);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
             // random in a batch spread over the screen).
@@ -192,12 +212,12 @@ impl PreparedLineIndex {
             let start = if self.tree.leaves.len() > SHORT_FROM_LEAVES
                 && (b.x - a.x).abs() + (b.y - a.y).abs() < SHORT * (self.bounds.width() + self.bounds.height())
             {
-                self.locate::<COUNT>(a, counts)
+                self.locate::<COUNT>(a, state)
             } else {
                 Start::OnBoundary
             };
             if let Start::Inside(inside) = start {
-                let found = self.walk::<COUNT, true, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, true, false>(None, &ray, &line, &frame, crossings, state);
                 // The crossings on the segment toggle the parity from the start's to the end's.
                 if (found + u32::from(inside)) % 2 == 1 {
                     crossings.record(Along::After, 1.0);
@@ -208,7 +228,7 @@ impl PreparedLineIndex {
             } else if self.exit_length(b, b - a) <= self.exit_length(a, a - b) {
                 // Crossings at or after the start, counted: every ring crosses the line an even
                 // number of times, so their parity is the parity of those before the start.
-                let found = self.walk::<COUNT, false, false>(&ray, &line, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, false, false>(None, &ray, &line, &frame, crossings, state);
                 if found % 2 == 1 {
                     crossings.record(Along::Before, 0.0);
                 }
@@ -216,7 +236,7 @@ impl PreparedLineIndex {
                 // The same from the end backwards, where the line leaves the box sooner that way:
                 // crossings at or before the end, and the parity of those after it.
                 let back = Ray::new(b, a, &self.bounds);
-                let found = self.walk::<COUNT, false, true>(&back, &line, &frame, &s.bounds(), crossings, counts);
+                let found = self.walk::<COUNT, false, true>(None, &back, &line, &frame, crossings, state);
                 if found % 2 == 1 {
                     crossings.record(Along::After, 1.0);
                 }
@@ -224,24 +244,21 @@ impl PreparedLineIndex {
         }
         if crossings.is_empty() {
             if COUNT {
-                counts.no_crossing += 1;
+                state.counts.no_crossing += 1;
             }
             return;
         }
         let written = crossings.emit(index, &frame, out);
         if COUNT && written > 0 {
-            counts.visible += 1;
+            state.counts.visible += 1;
         }
     }
 
-    /// False when `s` (of positive length, not rejected by the bounding box) certainly shows
-    /// nothing: an end lies outside the bounding box, so outside the window, and no child box of
-    /// the root meets the segment, so it crosses and touches no edge. Branch-free.
+    /// The children of `root` whose boxes the closed segment `s` (the ray `ray` from its start,
+    /// of positive length) can meet, as bits. Branch-free.
     #[inline(always)]
-    fn may_show(&self, s: Segment) -> bool {
-        let root = &self.tree.nodes[0];
-        let meets = Ray::new(s.a, s.b, &self.bounds).segment_hits(root, &s.bounds()) & u32::from(root.present) != 0;
-        meets | ((self.bounds.outcode(s.a) | self.bounds.outcode(s.b)) == 0)
+    fn root_entry(root: &Node, ray: &Ray, s: &Segment) -> u32 {
+        ray.segment_hits(root, &s.bounds()) & u32::from(root.present)
     }
 
     /// How far the ray from `p` in direction `d` runs inside the bounding box, in units of `|d|`
@@ -259,22 +276,24 @@ impl PreparedLineIndex {
         along(p.x, d.x, self.bounds.min.x, self.bounds.max.x).min(along(p.y, d.y, self.bounds.min.y, self.bounds.max.y))
     }
 
-    /// Walks the tree: along the ray from the start (`ON_SEGMENT` false; from the end backwards
-    /// when `BACKWARD`), or over the boxes
-    /// meeting the closed segment whose box is `segment` (`ON_SEGMENT` true); records the
+    /// Walks the tree from the root's children `root_entered` (tested here when `None`): along
+    /// the ray from the start (`ON_SEGMENT` false; from the end backwards when `BACKWARD`), or
+    /// over the boxes meeting the closed segment of `frame` (`ON_SEGMENT` true); records the
     /// crossings at or after the start (on the segment) and returns how many there were.
     #[inline(always)]
     fn walk<const COUNT: bool, const ON_SEGMENT: bool, const BACKWARD: bool>(
         &self,
+        root_entered: Option<u32>,
         ray: &Ray,
         line: &Line,
         frame: &LineFrame,
-        segment: &Rect,
         crossings: &mut LineCrossings,
-        counts: &mut IndexCounts,
+        state: &mut WalkState,
     ) -> u32 {
+        let segment = &Segment::new(frame.a, frame.b).bounds();
         let mut found = 0;
         self.visit::<COUNT>(
+            root_entered,
             |node| {
                 if ON_SEGMENT { ray.segment_hits(node, segment) } else { ray.hits(node) }
             },
@@ -291,46 +310,45 @@ impl PreparedLineIndex {
                     crossings,
                 )
             },
-            counts,
+            state,
         );
         found
     }
 
-    /// Visits the tree from the root: `hits` tells which children of a node to enter, `leaf` is
-    /// called with the edges of each leaf entered, its parent and its slot there.
+    /// Visits the tree from the root: `hits` tells which children of a node to enter (of the
+    /// root too, unless `root_entered` already says), `leaf` is called with the edges of each
+    /// leaf entered, its parent and its slot there.
     #[inline(always)]
     fn visit<const COUNT: bool>(
         &self,
+        root_entered: Option<u32>,
         hits: impl Fn(&Node) -> u32,
         mut leaf: impl FnMut(&Range<u32>, &Node, usize),
-        counts: &mut IndexCounts,
+        state: &mut WalkState,
     ) {
         let nodes = &self.tree.nodes;
+        let root = &nodes[0];
+        let mut entered = root_entered.unwrap_or_else(|| hits(root) & u32::from(root.present));
         if let [leaf_edges] = &self.tree.leaves[..] {
             // One leaf (up to 16 edges): the root holds it alone, no stack.
-            let root = &nodes[0];
-            if hits(root) & u32::from(root.present) != 0 {
+            if entered != 0 {
                 leaf(leaf_edges, root, root.present.trailing_zeros() as usize);
             }
             return;
         }
-        // Each level pushes at most WAYS - 1 more than it pops: 64 slots hold trees far deeper
-        // than u32 leaf indices allow.
-        let mut stack = [0u32; 64];
-        let mut top = 1;
-        while top > 0 {
-            top -= 1;
-            let node = &nodes[stack[top] as usize];
+        let stack = &mut state.stack;
+        let mut top = 0;
+        let mut node = root;
+        loop {
             if COUNT {
-                counts.nodes_tested += 1;
+                state.counts.nodes_tested += 1;
             }
-            let mut entered = hits(node) & u32::from(node.present);
             while entered != 0 {
                 let i = entered.trailing_zeros() as usize;
                 entered &= entered - 1;
                 if node.leaves & (1 << i) != 0 {
                     if COUNT {
-                        counts.leaves_scanned += 1;
+                        state.counts.leaves_scanned += 1;
                     }
                     leaf(&self.tree.leaves[node.child[i] as usize], node, i);
                 } else {
@@ -338,17 +356,24 @@ impl PreparedLineIndex {
                     top += 1;
                 }
             }
+            if top == 0 {
+                return;
+            }
+            top -= 1;
+            node = &nodes[stack[top] as usize];
+            entered = hits(node) & u32::from(node.present);
         }
     }
 
     /// The exact place of `a` in the window (even-odd), by the crossings of a horizontal ray from
     /// `a` to the nearer side of the bounding box, edges taken half-open in y; or that `a` lies on
     /// the boundary.
-    fn locate<const COUNT: bool>(&self, a: Point, counts: &mut IndexCounts) -> Start {
+    fn locate<const COUNT: bool>(&self, a: Point, state: &mut WalkState) -> Start {
         let rightwards = self.bounds.max.x - a.x <= a.x - self.bounds.min.x;
         let mut odd = false;
         let mut on_boundary = false;
         self.visit::<COUNT>(
+            None,
             |node| {
                 let mut mask = 0;
                 for i in 0..WAYS {
@@ -373,7 +398,7 @@ impl PreparedLineIndex {
                     }
                 }
             },
-            counts,
+            state,
         );
         if on_boundary { Start::OnBoundary } else { Start::Inside(odd) }
     }
@@ -467,22 +492,35 @@ impl PreparedWindow for PreparedLineIndex {
     fn clip_batch(&self, segments: &[Segment], out: &mut Vec<VisiblePiece>) -> Result<(), ClipError> {
         validate_segments(segments)?;
         let mut crossings = LineCrossings::default();
-        let mut counts = IndexCounts::default();
+        let mut state = WalkState::new();
         // The bounding box over the whole batch first, without branches (see
         // `Rect::keep_meeting`), then the segments it kept.
         let mut kept = Vec::new();
         self.bounds.keep_meeting(segments, &mut kept);
         // Then the root's child boxes, also over the batch: a segment with an end outside the
-        // bounding box that meets none of them lies wholly outside.
-        retain_indices(&mut kept, |i| self.may_show(segments[i]));
+        // bounding box that meets none of them lies wholly outside. The children it meets are
+        // kept beside its index: its walk starts from them rather than testing the root again.
+        // The root and the box are copied out first: the loop's stores into `kept` and `roots`
+        // could alias the tree for all the compiler knows, and it reloaded them per segment.
+        let (root, bounds) = (self.tree.nodes[0], self.bounds);
+        let mut roots = vec![0u32; kept.len()];
+        let mut n = 0;
+        for k in 0..kept.len() {
+            let index = kept[k];
+            let s = segments[index];
+            let entered = Self::root_entry(&root, &Ray::new(s.a, s.b, &bounds), &s);
+            (kept[n], roots[n]) = (index, entered);
+            n += usize::from((entered != 0) | ((bounds.outcode(s.a) | bounds.outcode(s.b)) == 0));
+        }
+        kept.truncate(n);
         // A batch that walks the tree more often than it has leaves reaches most of the window:
         // read it in order first, one load per cache line, at streaming speed, rather than by
         // a dependent miss per node and leaf when other work has evicted it.
         if kept.len() >= self.tree.leaves.len() {
             self.touch();
         }
-        for &index in &kept {
-            self.clip_one::<false>(index, segments[index], out, &mut crossings, &mut counts);
+        for (&index, &root_entered) in kept.iter().zip(&roots) {
+            self.clip_one::<false>(index, segments[index], Some(root_entered), out, &mut crossings, &mut state);
         }
         Ok(())
     }

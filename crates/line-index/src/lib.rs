@@ -30,7 +30,8 @@
 //! screen, and a per-segment early out mispredicts on a large share of it): zero-length segments
 //! and those the window's bounding box rejects (both ends beyond one side, Cohen-Sutherland) are
 //! dropped, then those with an end outside the bounding box that meet none of the root's child
-//! boxes (they lie wholly outside). When more segments are left than the tree has leaves, the
+//! boxes (they lie wholly outside); the children a segment meets are kept for its walk, which
+//! starts from them without testing the root again. When more segments are left than the tree has leaves, the
 //! batch will reach most of the window, so the vertices and nodes are first read in order, one
 //! load per cache line: a window evicted by other work then comes back at streaming speed instead
 //! of by a dependent miss per node and leaf (see `PERFORMANCE.md`). Per segment `a -> b` left:
@@ -71,7 +72,9 @@
 //! otherwise: short edges near the line, on a finely sampled boundary, cost no exact expansion. A
 //! box is skipped only when a rounded two-product expression of exact coordinates at its extreme
 //! corner clears the same kind of error bound, so a box the ray (or segment) touches is never
-//! skipped; the horizontal ray compares coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
+//! skipped (each comparison is taken as the sign of a rounded difference of two finite values,
+//! which is the exact one, so one `max` over them decides a box); the horizontal ray compares
+//! coordinates only. Degenerate incidences are Liu's: a vertex on the line counts
 //! as on its negative side (one crossing when its neighbours lie on opposite sides, a touch
 //! otherwise); an edge along the line is boundary, so visible.
 //!

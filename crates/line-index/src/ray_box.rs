@@ -65,12 +65,31 @@ impl Ray {
     /// Unused slots are not masked here.
     #[inline(always)]
     pub fn hits(&self, node: &Node) -> u32 {
-        let ahead = self.ahead(node);
-        self.line_hits(node) & ahead
+        // f(c) = d.x (c.y - a.y) - d.y (c.x - a.x) is largest at the corner with the larger y when
+        // d.x >= 0 and the smaller x when d.y >= 0, smallest at the opposite corner (the signs of
+        // the rounded d are the exact ones); d . (c - a) is largest at the far corner.
+        // The opposite row of a side is two rows on (mod 4); `& 3` lets the compiler drop the
+        // bounds checks.
+        let (y_high, y_low) = (&node.sides[self.y_high & 3], &node.sides[(self.y_high + 2) & 3]);
+        let (x_low, x_high) = (&node.sides[self.x_low & 3], &node.sides[(self.x_low + 2) & 3]);
+        let (x_far, y_far) = (&node.sides[self.x_far & 3], &node.sides[self.y_far & 3]);
+        // Child by child in lanes (the children side by side vectorise), the bits packed after.
+        let mut keep = [0u32; WAYS];
+        for (i, keep) in keep.iter_mut().enumerate() {
+            let highest = self.d.x * (y_high[i] - self.a.y) - self.d.y * (x_low[i] - self.a.x);
+            let lowest = self.d.x * (y_low[i] - self.a.y) - self.d.y * (x_high[i] - self.a.x);
+            let farthest = self.d.x * (x_far[i] - self.a.x) + self.d.y * (y_far[i] - self.a.y);
+            // As differences that must not be positive (see `segment_hits`): the line meets the
+            // box, and its far corner is not behind the start.
+            let line = larger(-self.line_error - highest, lowest - self.line_error);
+            *keep = u32::from(larger(line, -self.ahead_error - farthest) <= 0.0);
+        }
+        keep[0] | (keep[1] << 1) | (keep[2] << 2) | (keep[3] << 3)
     }
 
-    /// As [`Ray::line_hits`], and also clear for a box apart from `segment` (the segment's own
-    /// box): the boxes the closed segment can meet. Both tests child by child in lanes, one mask.
+    /// Bit `i` set unless the closed segment certainly misses child box `i` of `node`: every
+    /// corner strictly on one side of its line (as in [`Ray::hits`]), or the box apart from
+    /// `segment`, the segment's own box. Both tests child by child in lanes, one mask.
     #[inline(always)]
     pub fn segment_hits(&self, node: &Node, segment: &Rect) -> u32 {
         let (y_high, y_low) = (&node.sides[self.y_high & 3], &node.sides[(self.y_high + 2) & 3]);
@@ -80,47 +99,15 @@ impl Ray {
         for (i, keep) in keep.iter_mut().enumerate() {
             let highest = self.d.x * (y_high[i] - self.a.y) - self.d.y * (x_low[i] - self.a.x);
             let lowest = self.d.x * (y_low[i] - self.a.y) - self.d.y * (x_high[i] - self.a.x);
-            let overlaps = (min_x[i] <= segment.max.x)
-                & (max_x[i] >= segment.min.x)
-                & (min_y[i] <= segment.max.y)
-                & (max_y[i] >= segment.min.y);
-            *keep = u32::from((highest >= -self.line_error) & (lowest <= self.line_error) & overlaps);
+            // The six tests as differences that must not be positive, decided by their largest:
+            // the rounded difference of two finite values has the sign of the exact one, and
+            // `max` chains vectorise where six comparisons and their `&` did not.
+            let line = larger(-self.line_error - highest, lowest - self.line_error);
+            let across = larger(min_x[i] - segment.max.x, segment.min.x - max_x[i]);
+            let along = larger(min_y[i] - segment.max.y, segment.min.y - max_y[i]);
+            *keep = u32::from(larger(line, larger(across, along)) <= 0.0);
         }
         keep[0] | (keep[1] << 1) | (keep[2] << 2) | (keep[3] << 3)
-    }
-
-    /// As [`Ray::hits`] for the whole line: bit `i` set unless every corner of box `i` lies
-    /// strictly on one side of it.
-    #[inline(always)]
-    pub fn line_hits(&self, node: &Node) -> u32 {
-        // f(c) = d.x (c.y - a.y) - d.y (c.x - a.x) is largest at the corner with the larger y when
-        // d.x >= 0 and the smaller x when d.y >= 0, smallest at the opposite corner (the signs of
-        // the rounded d are the exact ones).
-        // The opposite row of a side is two rows on (mod 4); `& 3` lets the compiler drop the
-        // bounds checks.
-        let (y_high, y_low) = (&node.sides[self.y_high & 3], &node.sides[(self.y_high + 2) & 3]);
-        let (x_low, x_high) = (&node.sides[self.x_low & 3], &node.sides[(self.x_low + 2) & 3]);
-        // Child by child in lanes (the children side by side vectorise), the bits packed after.
-        let mut keep = [0u32; WAYS];
-        for (i, keep) in keep.iter_mut().enumerate() {
-            let highest = self.d.x * (y_high[i] - self.a.y) - self.d.y * (x_low[i] - self.a.x);
-            let lowest = self.d.x * (y_low[i] - self.a.y) - self.d.y * (x_high[i] - self.a.x);
-            *keep = u32::from((highest >= -self.line_error) & (lowest <= self.line_error));
-        }
-        keep[0] | (keep[1] << 1) | (keep[2] << 2) | (keep[3] << 3)
-    }
-
-    /// Bit `i` set unless box `i` lies strictly behind the start: its corner farthest along the
-    /// ray has `d . (c - a) < 0`, beyond the same kind of error bound.
-    #[inline(always)]
-    fn ahead(&self, node: &Node) -> u32 {
-        let (x_far, y_far) = (&node.sides[self.x_far & 3], &node.sides[self.y_far & 3]);
-        let mut mask = 0;
-        for i in 0..WAYS {
-            let farthest = self.d.x * (x_far[i] - self.a.x) + self.d.y * (y_far[i] - self.a.y);
-            mask |= u32::from(farthest >= -self.ahead_error) << i;
-        }
-        mask
     }
 
     /// True when child box `i` of `node` lies strictly between the perpendiculars to the segment
@@ -135,6 +122,13 @@ impl Ray {
         let farthest = self.d.x * (x_far - self.b.x) + self.d.y * (y_far - self.b.y);
         (nearest > self.ahead_error) & (farthest < -self.before_end_error)
     }
+}
+
+/// The larger of two values, as one `max` instruction (`f64::max` also orders NaN, which costs
+/// more; a NaN here only comes from an unused slot's infinite box, which the caller masks off).
+#[inline(always)]
+fn larger(a: f64, b: f64) -> f64 {
+    if a > b { a } else { b }
 }
 
 #[cfg(test)]
