@@ -40,6 +40,10 @@ pub(crate) struct Touches {
     pub splits: Vec<SplitEdge>,
     pub ids: Vec<u32>,
     pub distinct: Vec<Point>,
+    /// The points visited more than once, each as a run of its visits (point indices) in
+    /// `shared`, run `i` ending at `shared_ends[i]`.
+    pub shared: Vec<u32>,
+    pub shared_ends: Vec<u32>,
     /// Work buffers: point index by emission stamp, points in emission order, ring of every
     /// point, and one run of equal y by x.
     slot: Vec<u32>,
@@ -68,7 +72,17 @@ impl Touches {
         self.ids.clear();
         self.ids.resize(raw.points.len(), 0);
         self.distinct.clear();
+        self.shared.clear();
+        self.shared_ends.clear();
         ring_of(raw, &mut self.ring);
+    }
+
+    /// The indices of the points before and after point `k` in its ring (after [`Touches::find`]).
+    #[inline]
+    pub(crate) fn around(&self, raw: &RawRings, k: usize) -> (usize, usize) {
+        let r = self.ring[k] as usize;
+        let (start, end) = (raw.start(r), raw.ends[r]);
+        (if k == start { end - 1 } else { k - 1 }, if k + 1 == end { start } else { k + 1 })
     }
 
     /// Bytes the buffers hold (their capacity; split lists not counted).
@@ -77,6 +91,7 @@ impl Touches {
         self.touched.capacity()
             + self.splits.capacity() * size_of::<SplitEdge>()
             + 4 * (self.ids.capacity() + self.slot.capacity() + self.order.capacity() + self.ring.capacity())
+            + 4 * (self.shared.capacity() + self.shared_ends.capacity())
             + self.distinct.capacity() * size_of::<Point>()
             + self.run.capacity() * size_of::<(f64, u32)>()
     }
@@ -137,9 +152,9 @@ impl Touches {
                 t.distinct.push(raw.points[equal[0].1 as usize]);
                 for &(_, k) in equal {
                     t.ids[k as usize] = id;
-                    if equal.len() > 1 {
-                        t.touched[ring[k as usize] as usize] = true;
-                    }
+                }
+                if equal.len() > 1 {
+                    t.share(&ring, equal.iter().map(|&(_, k)| k));
                 }
             }
             for &k in same_y {
@@ -171,11 +186,21 @@ impl Touches {
         true
     }
 
+    /// Records the visits (point indices) of one point visited more than once, and marks their
+    /// rings touched.
+    fn share(&mut self, ring: &[u32], visits: impl Iterator<Item = u32>) {
+        for k in visits {
+            self.touched[ring[k as usize] as usize] = true;
+            self.shared.push(k);
+        }
+        self.shared_ends.push(self.shared.len() as u32);
+    }
+
     /// The touches by sorting every point's exact key, and every vertex by y then x.
     fn by_sorting(&mut self, raw: &RawRings) {
         self.reset(raw);
         let t = self;
-        let ring = &t.ring;
+        let ring = std::mem::take(&mut t.ring);
         let mut keyed: Vec<((u64, u64), u32)> =
             raw.points.iter().enumerate().map(|(k, &p)| (key(p), k as u32)).collect();
         keyed.sort_unstable();
@@ -184,13 +209,14 @@ impl Touches {
             t.distinct.push(raw.points[same[0].1 as usize]);
             for &(_, k) in same {
                 t.ids[k as usize] = id;
-                if same.len() > 1 {
-                    t.touched[ring[k as usize] as usize] = true;
-                }
+            }
+            if same.len() > 1 {
+                t.share(&ring, same.iter().map(|&(_, k)| k));
             }
         }
         drop(keyed);
-        t.splits = split_edges(raw, ring, &mut t.touched, &t.ids, false);
+        t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false);
+        t.ring = ring;
     }
 }
 
