@@ -209,6 +209,7 @@ fn rebuild(
     let same_way = has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends, &used);
     let mut slot = vec![usize::MAX; pts.len()];
     let mut walk: Vec<u32> = Vec::new();
+    let mut stack: Vec<u32> = Vec::new();
     let mut clockwise: Vec<usize> = Vec::new();
     for start in 0..edges.len() {
         if used[start] {
@@ -228,7 +229,7 @@ fn rebuild(
                 _ => break,
             }
         }
-        split_repeats(&walk, &mut slot, &mut |ring: &[u32]| {
+        split_repeats(&walk, &mut slot, &mut stack, &mut |ring: &[u32]| {
             let points: Vec<Point> = ring.iter().map(|&i| pts[i as usize]).collect();
             push_simplified(&points, out, &mut clockwise);
         });
@@ -404,9 +405,10 @@ fn clockwise_before(v: Point, r: Point, w1: Point, w2: Point) -> bool {
 }
 
 /// Splits a closed walk at every vertex it visits twice, handing each simple loop to `emit`.
-/// `slot` is scratch space indexed by vertex id, all `usize::MAX` on entry and exit.
-pub(crate) fn split_repeats(walk: &[u32], slot: &mut [usize], emit: &mut impl FnMut(&[u32])) {
-    let mut stack: Vec<u32> = Vec::with_capacity(walk.len());
+/// `slot` is scratch space indexed by vertex id, all `usize::MAX` on entry and exit; `stack` is
+/// a reused buffer.
+pub(crate) fn split_repeats(walk: &[u32], slot: &mut [usize], stack: &mut Vec<u32>, emit: &mut impl FnMut(&[u32])) {
+    stack.clear();
     for &v in walk {
         let at = slot[v as usize];
         if at != usize::MAX {
@@ -420,8 +422,8 @@ pub(crate) fn split_repeats(walk: &[u32], slot: &mut [usize], emit: &mut impl Fn
             stack.push(v);
         }
     }
-    emit(&stack);
-    for &w in &stack {
+    emit(stack);
+    for &w in stack.iter() {
         slot[w as usize] = usize::MAX;
     }
 }

@@ -27,6 +27,7 @@ pub(crate) struct Turns {
     /// Per visit, whether its edge was walked; the walk's point ids; split scratch.
     used: Vec<bool>,
     walk: Vec<u32>,
+    stack: Vec<u32>,
     slot: Vec<usize>,
     points: Vec<Point>,
     /// The ways in and out of one shared point.
@@ -146,7 +147,7 @@ impl Turns {
                         break;
                     }
                 }
-                crate::cleanup::split_repeats(&self.walk, &mut self.slot, &mut |ring: &[u32]| {
+                crate::cleanup::split_repeats(&self.walk, &mut self.slot, &mut self.stack, &mut |ring: &[u32]| {
                     points.clear();
                     points.extend(ring.iter().map(|&i| pts[i as usize]));
                     emit(points);
@@ -158,7 +159,7 @@ impl Turns {
     /// Bytes the buffers hold (their capacity).
     pub(crate) fn held_bytes(&self) -> usize {
         use std::mem::size_of;
-        4 * (self.pick.capacity() + self.walk.capacity())
+        4 * (self.pick.capacity() + self.walk.capacity() + self.stack.capacity())
             + self.used.capacity()
             + self.slot.capacity() * size_of::<usize>()
             + self.points.capacity() * size_of::<Point>()
