@@ -143,8 +143,9 @@ fn rebuild(
 ) -> bool {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
-    let mut visits: Vec<u32> = Vec::new();
-    let mut ring_ends: Vec<usize> = Vec::new();
+    let inside: usize = splits.iter().map(|s| s.inside.len()).sum();
+    let mut visits: Vec<u32> = Vec::with_capacity(rings.points.len() + inside);
+    let mut ring_ends: Vec<usize> = Vec::with_capacity(rings.len());
     let mut next_split = splits.iter().peekable();
     for ri in (0..rings.len()).filter(|&ri| touched[ri]) {
         let start = rings.start(ri);
