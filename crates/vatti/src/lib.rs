@@ -86,7 +86,9 @@
 //!   never what is inside.
 //! - Clean-up (`cleanup`) rebuilds only rings that touch: opposite coincident edges cancel,
 //!   vertices inside horizontal output edges split them, and rings are re-walked corner by
-//!   corner, then split where they still visit a vertex twice.
+//!   corner, then split where they still visit a vertex twice. Where nothing cancels or splits
+//!   (most touches: holes on their outers, pinches), the walk turns only at the shared points
+//!   (`turns`), with the same result.
 //! - Output follows the workspace's conventions (`docs/DESIGN.md`): simple rings, outers
 //!   counter-clockwise, holes clockwise, no repeated or collinear vertices, no zero-area rings.
 //!   Where the result pinches at a point the rings are split there (two rings touching at a
