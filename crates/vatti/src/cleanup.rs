@@ -17,6 +17,7 @@ use clip_core::{Point, Rect, Ring, ring_winding};
 use crate::raw_rings::RawRings;
 use crate::simplify::simplify_ring;
 use crate::touches::Touches;
+use crate::turns::Turns;
 
 /// The clean-up's rings, and whether rounding left their form broken (`repair` then joins
 /// them): two rings (or two passes of one) running the same way along an edge, where rounded
@@ -34,7 +35,7 @@ pub(crate) struct CleanRings {
 /// are already simple and lose only collinear vertices. `touches` is a reused work buffer.
 #[cfg(test)]
 pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> CleanRings {
-    conventional_rings_checked(raw, touches, true, || true)
+    conventional_rings_checked(raw, touches, &mut Turns::default(), true, || true)
 }
 
 /// Clockwise rings times rings up to which the held test runs whatever `near_rounding` says.
@@ -50,6 +51,7 @@ const HELD_TEST_BUDGET: usize = 1 << 16;
 pub(crate) fn conventional_rings_checked(
     raw: &RawRings,
     touches: &mut Touches,
+    turns: &mut Turns,
     strict: bool,
     near_rounding: impl FnOnce() -> bool,
 ) -> CleanRings {
@@ -64,8 +66,68 @@ pub(crate) fn conventional_rings_checked(
             }
         }
     }
-    let broken_form = touches.touched.contains(&true) && rebuild(raw, touches, &mut out, strict, near_rounding);
+    let broken_form = touches.touched.contains(&true)
+        && if touches.splits.is_empty() && turns.plan(raw, touches) {
+            walk_turns(raw, touches, turns, &mut out, strict, near_rounding)
+        } else {
+            rebuild(raw, touches, &mut out, strict, near_rounding)
+        };
     CleanRings { rings: out, broken_form }
+}
+
+/// What [`rebuild`] does with touched rings that `turns` planned (nothing to cancel or split,
+/// nothing running the same way): the same rings in the same order, and whether a clockwise one
+/// is held by no ring. Debug builds check it against the rebuild.
+fn walk_turns(
+    raw: &RawRings,
+    touches: &Touches,
+    turns: &mut Turns,
+    out: &mut Vec<Ring>,
+    strict: bool,
+    near_rounding: impl FnOnce() -> bool,
+) -> bool {
+    // Asked once at most, for the debug check too.
+    let (mut near_rounding, mut near) = (Some(near_rounding), None);
+    let mut near_rounding = || *near.get_or_insert_with(|| near_rounding.take().is_some_and(|f| f()));
+    #[cfg(debug_assertions)]
+    let untouched = out.len();
+    let mut clockwise: Vec<usize> = Vec::new();
+    turns.walk(raw, touches, &mut |points: &[Point]| push_simplified(points, out, &mut clockwise));
+    let broken = any_unheld(out, &clockwise, &mut near_rounding);
+    #[cfg(debug_assertions)]
+    {
+        let mut rebuilt = out[..untouched].to_vec();
+        let rebuilt_broken = rebuild(raw, touches, &mut rebuilt, strict, &mut near_rounding);
+        assert_eq!((&rebuilt, rebuilt_broken), (&*out, broken), "the planned walk differs from the rebuild");
+    }
+    #[cfg(not(debug_assertions))]
+    let _ = strict;
+    broken
+}
+
+/// `points` as a ring without repeated or collinear vertices, pushed onto `out` unless that
+/// leaves fewer than three; its index goes to `clockwise` when its area is not positive.
+fn push_simplified(points: &[Point], out: &mut Vec<Ring>, clockwise: &mut Vec<usize>) {
+    let s = simplify_ring(points);
+    if s.len() >= 3 {
+        let ring = Ring::new(s);
+        if ring.signed_area() <= 0.0 {
+            clockwise.push(out.len());
+        }
+        out.push(ring);
+    }
+}
+
+/// True when one of the `clockwise` rings of `out` is held by no other ring, tested when that is
+/// cheap ([`HELD_TEST_BUDGET`]) or `near_rounding()`.
+fn any_unheld(out: &[Ring], clockwise: &[usize], near_rounding: impl FnOnce() -> bool) -> bool {
+    let check_holes = !clockwise.is_empty() && (clockwise.len() * out.len() <= HELD_TEST_BUDGET || near_rounding());
+    if !check_holes {
+        return false;
+    }
+    // Each ring's box once: `held` looks at every ring for each hole.
+    let boxes: Vec<Rect> = out.iter().map(Ring::bounds).collect();
+    clockwise.iter().any(|&h| !held(out, &boxes, h))
 }
 
 /// Rebuilds the touched rings (horizontal edges split at the vertices inside them) into simple
@@ -81,8 +143,9 @@ fn rebuild(
 ) -> bool {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
-    let mut visits: Vec<u32> = Vec::new();
-    let mut ring_ends: Vec<usize> = Vec::new();
+    let inside: usize = splits.iter().map(|s| s.inside.len()).sum();
+    let mut visits: Vec<u32> = Vec::with_capacity(rings.points.len() + inside);
+    let mut ring_ends: Vec<usize> = Vec::with_capacity(rings.len());
     let mut next_split = splits.iter().peekable();
     for ri in (0..rings.len()).filter(|&ri| touched[ri]) {
         let start = rings.start(ri);
@@ -147,6 +210,7 @@ fn rebuild(
     let same_way = has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends, &used);
     let mut slot = vec![usize::MAX; pts.len()];
     let mut walk: Vec<u32> = Vec::new();
+    let mut stack: Vec<u32> = Vec::new();
     let mut clockwise: Vec<usize> = Vec::new();
     for start in 0..edges.len() {
         if used[start] {
@@ -166,16 +230,9 @@ fn rebuild(
                 _ => break,
             }
         }
-        split_repeats(&walk, &mut slot, &mut |ring: &[u32]| {
+        split_repeats(&walk, &mut slot, &mut stack, &mut |ring: &[u32]| {
             let points: Vec<Point> = ring.iter().map(|&i| pts[i as usize]).collect();
-            let s = simplify_ring(&points);
-            if s.len() >= 3 {
-                let ring = Ring::new(s);
-                if ring.signed_area() <= 0.0 {
-                    clockwise.push(out.len());
-                }
-                out.push(ring);
-            }
+            push_simplified(&points, out, &mut clockwise);
         });
     }
     // Asked once at most: it scans the inputs.
@@ -186,13 +243,7 @@ fn rebuild(
     if same_way == SameWay::Remaining || (strict && same_way == SameWay::Retraced && near_rounding()) {
         return true;
     }
-    let check_holes = !clockwise.is_empty() && (clockwise.len() * out.len() <= HELD_TEST_BUDGET || near_rounding());
-    if !check_holes {
-        return false;
-    }
-    // Each ring's box once: `held` looks at every ring for each hole.
-    let boxes: Vec<Rect> = out.iter().map(Ring::bounds).collect();
-    clockwise.iter().any(|&h| !held(out, &boxes, h))
+    any_unheld(out, &clockwise, near_rounding)
 }
 
 /// True when a point of `rings[hole]` off every other ring (a vertex, else an edge's midpoint)
@@ -355,9 +406,10 @@ fn clockwise_before(v: Point, r: Point, w1: Point, w2: Point) -> bool {
 }
 
 /// Splits a closed walk at every vertex it visits twice, handing each simple loop to `emit`.
-/// `slot` is scratch space indexed by vertex id, all `usize::MAX` on entry and exit.
-fn split_repeats(walk: &[u32], slot: &mut [usize], emit: &mut impl FnMut(&[u32])) {
-    let mut stack: Vec<u32> = Vec::with_capacity(walk.len());
+/// `slot` is scratch space indexed by vertex id, all `usize::MAX` on entry and exit; `stack` is
+/// a reused buffer.
+pub(crate) fn split_repeats(walk: &[u32], slot: &mut [usize], stack: &mut Vec<u32>, emit: &mut impl FnMut(&[u32])) {
+    stack.clear();
     for &v in walk {
         let at = slot[v as usize];
         if at != usize::MAX {
@@ -371,8 +423,8 @@ fn split_repeats(walk: &[u32], slot: &mut [usize], emit: &mut impl FnMut(&[u32])
             stack.push(v);
         }
     }
-    emit(&stack);
-    for &w in &stack {
+    emit(stack);
+    for &w in stack.iter() {
         slot[w as usize] = usize::MAX;
     }
 }
@@ -483,7 +535,7 @@ mod tests {
             ring(&[(4.0, 3.0), (4.0, 2.0), (4.0, 1.0), (3.0, 1.5), (4.0, 2.0), (4.0, 3.0), (3.0, 3.0), (3.5, 3.5)]);
         let raw = RawRings::from_rings(vec![outer, hole]);
         let clean = |strict: bool, near: bool| {
-            super::conventional_rings_checked(&raw, &mut Touches::default(), strict, || near)
+            super::conventional_rings_checked(&raw, &mut Touches::default(), &mut Turns::default(), strict, || near)
         };
         let plain = clean(false, true);
         assert!(!plain.broken_form);

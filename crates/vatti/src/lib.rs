@@ -86,7 +86,9 @@
 //!   never what is inside.
 //! - Clean-up (`cleanup`) rebuilds only rings that touch: opposite coincident edges cancel,
 //!   vertices inside horizontal output edges split them, and rings are re-walked corner by
-//!   corner, then split where they still visit a vertex twice.
+//!   corner, then split where they still visit a vertex twice. Where nothing cancels or splits
+//!   (most touches: holes on their outers, pinches), the walk turns only at the shared points
+//!   (`turns`), with the same result.
 //! - Output follows the workspace's conventions (`docs/DESIGN.md`): simple rings, outers
 //!   counter-clockwise, holes clockwise, no repeated or collinear vertices, no zero-area rings.
 //!   Where the result pinches at a point the rings are split there (two rings touching at a
@@ -164,6 +166,7 @@ mod star_shaped;
 mod sweep;
 mod touches;
 mod trapezoids;
+mod turns;
 
 use std::borrow::Cow;
 
@@ -181,6 +184,7 @@ use crate::raw_rings::RawRings;
 use crate::scratch::Scratch;
 use crate::sweep::Sweep;
 use crate::touches::Touches;
+use crate::turns::Turns;
 
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
 /// operands, polygon or trapezoid output.
@@ -245,8 +249,8 @@ impl Vatti {
             return out;
         }
         let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, strict: bool| {
-            Vatti::sweep(a, b, op, fill, false, |rings, touches, _| {
-                cleanup::conventional_rings_checked(rings, touches, strict, || {
+            Vatti::sweep(a, b, op, fill, false, |rings, touches, turns, _| {
+                cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
                     form_check::raw_near_rounding(a, b, rings)
                 })
             })
@@ -266,7 +270,7 @@ impl Vatti {
 
     /// The sweep's trapezoids of valid operands.
     fn sweep_trapezoids(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Vec<Trapezoid> {
-        Vatti::sweep(subject, clip, op, fill, true, |_, _, traps| traps)
+        Vatti::sweep(subject, clip, op, fill, true, |_, _, _, traps| traps)
     }
 
     /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings
@@ -277,7 +281,7 @@ impl Vatti {
         op: BoolOp,
         fill: FillRule,
         trapezoids: bool,
-        finish: impl FnOnce(&RawRings, &mut Touches, Vec<Trapezoid>) -> T,
+        finish: impl FnOnce(&RawRings, &mut Touches, &mut Turns, Vec<Trapezoid>) -> T,
     ) -> T {
         Scratch::with(|scratch| {
             scratch.bounds.rebuild(subject, clip);
@@ -287,7 +291,7 @@ impl Vatti {
             sweep.out.rings_into(&mut scratch.raw);
             let traps = sweep.traps.take().unwrap_or_default();
             scratch.sweep = sweep.into_buffers();
-            finish(&scratch.raw, &mut scratch.touches, traps)
+            finish(&scratch.raw, &mut scratch.touches, &mut scratch.turns, traps)
         })
     }
 }

@@ -129,6 +129,7 @@ impl OutputBuilder {
     pub(crate) fn rings_into(&self, raw: &mut RawRings) {
         raw.clear();
         raw.near_miss = self.near_miss;
+        raw.stamps = self.pts.len();
         raw.points.reserve(self.pts.len());
         raw.emitted.reserve(self.pts.len());
         for r in &self.recs {

@@ -13,6 +13,8 @@ pub(crate) struct RawRings {
     /// Per point, a distinct emission stamp: the sweep emits points by non-decreasing y except
     /// where crossings at nearly one height are taken out of order.
     pub emitted: Vec<u32>,
+    /// One past the largest emission stamp there may be.
+    pub stamps: usize,
     /// The sweep's [`crate::output::OutputBuilder::near_miss`]: every edge is split at the
     /// points on it.
     pub near_miss: bool,
@@ -24,6 +26,7 @@ impl RawRings {
         self.points.clear();
         self.ends.clear();
         self.emitted.clear();
+        self.stamps = 0;
         self.near_miss = false;
     }
 
@@ -95,6 +98,7 @@ impl RawRings {
         for (stamp, &k) in by_y.iter().enumerate() {
             raw.emitted[k] = stamp as u32;
         }
+        raw.stamps = by_y.len();
         raw
     }
 }

@@ -9,6 +9,7 @@ use crate::bounds::{Bounds, LocalMinimum, Vertex};
 use crate::raw_rings::RawRings;
 use crate::sweep::SweepBuffers;
 use crate::touches::Touches;
+use crate::turns::Turns;
 
 /// Buffers larger than this (bytes of capacity) are freed after the call rather than kept: a
 /// large clip's allocations cost little next to its sweep, and a thread should not hold them.
@@ -19,13 +20,14 @@ thread_local! {
 }
 
 /// The input bounds, the sweep's tables, the raw output rings and the clean-up's touch search
-/// of one clip.
+/// and turns of one clip.
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {
     pub bounds: Bounds,
     pub sweep: SweepBuffers,
     pub raw: RawRings,
     pub touches: Touches,
+    pub turns: Turns,
 }
 
 impl Scratch {
@@ -59,5 +61,6 @@ impl Scratch {
             + self.raw.ends.capacity() * size_of::<usize>()
             + self.raw.emitted.capacity() * size_of::<u32>()
             + self.touches.held_bytes()
+            + self.turns.held_bytes()
     }
 }

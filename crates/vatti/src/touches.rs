@@ -40,10 +40,13 @@ pub(crate) struct Touches {
     pub splits: Vec<SplitEdge>,
     pub ids: Vec<u32>,
     pub distinct: Vec<Point>,
-    /// Work buffers: point index by emission stamp, points in emission order, ring of every
-    /// point, and one run of equal y by x.
+    /// The points visited more than once, each as a run of its visits (point indices) in
+    /// `shared`, run `i` ending at `shared_ends[i]`.
+    pub shared: Vec<u32>,
+    pub shared_ends: Vec<u32>,
+    /// Work buffers: point index by emission stamp, ring of every point, and one run of equal
+    /// y by x.
     slot: Vec<u32>,
-    order: Vec<u32>,
     ring: Vec<u32>,
     run: Vec<(f64, u32)>,
 }
@@ -68,7 +71,17 @@ impl Touches {
         self.ids.clear();
         self.ids.resize(raw.points.len(), 0);
         self.distinct.clear();
+        self.shared.clear();
+        self.shared_ends.clear();
         ring_of(raw, &mut self.ring);
+    }
+
+    /// The indices of the points before and after point `k` in its ring (after [`Touches::find`]).
+    #[inline]
+    pub(crate) fn around(&self, raw: &RawRings, k: usize) -> (usize, usize) {
+        let r = self.ring[k] as usize;
+        let (start, end) = (raw.start(r), raw.ends[r]);
+        (if k == start { end - 1 } else { k - 1 }, if k + 1 == end { start } else { k + 1 })
     }
 
     /// Bytes the buffers hold (their capacity; split lists not counted).
@@ -76,7 +89,8 @@ impl Touches {
         use std::mem::size_of;
         self.touched.capacity()
             + self.splits.capacity() * size_of::<SplitEdge>()
-            + 4 * (self.ids.capacity() + self.slot.capacity() + self.order.capacity() + self.ring.capacity())
+            + 4 * (self.ids.capacity() + self.slot.capacity() + self.ring.capacity())
+            + 4 * (self.shared.capacity() + self.shared_ends.capacity())
             + self.distinct.capacity() * size_of::<Point>()
             + self.run.capacity() * size_of::<(f64, u32)>()
     }
@@ -101,81 +115,105 @@ impl Touches {
     /// The touches from runs of equal y in emission order; false (and nothing found) when that
     /// order goes down in y.
     fn by_emission_order(&mut self, raw: &RawRings) -> bool {
-        let n = raw.points.len();
-        let stamps = raw.emitted.iter().map(|&s| s as usize + 1).max().unwrap_or(0);
-        let (mut slot, mut order) = (std::mem::take(&mut self.slot), std::mem::take(&mut self.order));
+        let mut slot = std::mem::take(&mut self.slot);
         slot.clear();
-        slot.resize(stamps, NONE);
+        slot.resize(raw.stamps, NONE);
         for (k, &s) in raw.emitted.iter().enumerate() {
             slot[s as usize] = k as u32;
         }
-        order.clear();
-        order.extend(slot.iter().copied().filter(|&k| k != NONE));
-        self.slot = slot;
-        if order.len() != n || order.windows(2).any(|w| raw.points[w[1] as usize].y < raw.points[w[0] as usize].y) {
-            self.order = order;
-            return false;
-        }
         self.reset(raw);
         let (ring, mut run) = (std::mem::take(&mut self.ring), std::mem::take(&mut self.run));
-        let t = self;
-        let next = |k: usize| {
-            let r = ring[k] as usize;
-            if k + 1 == raw.ends[r] { raw.start(r) } else { k + 1 }
-        };
-        for same_y in order.chunk_by(|&a, &b| raw.points[a as usize].y == raw.points[b as usize].y) {
-            if let [k] = *same_y {
-                t.ids[k as usize] = t.distinct.len() as u32;
-                t.distinct.push(raw.points[k as usize]);
-                continue;
+        // One pass in emission order, a run of equal y at a time.
+        let (mut y, mut seen, mut monotone) = (f64::NEG_INFINITY, 0, true);
+        run.clear();
+        for &k in slot.iter().filter(|&&k| k != NONE) {
+            let p = raw.points[k as usize];
+            if p.y != y {
+                if p.y < y {
+                    monotone = false;
+                    break;
+                }
+                self.take_run(raw, &ring, &mut run);
+                y = p.y;
             }
+            run.push((p.x, k));
+            seen += 1;
+        }
+        // Every point stamped once (the sweep's stamps are distinct; this guards the reading).
+        let found = monotone && seen == raw.points.len();
+        if found {
+            self.take_run(raw, &ring, &mut run);
+            self.splits.sort_unstable_by_key(|s| (s.ring, s.edge));
+        }
+        (self.slot, self.ring, self.run) = (slot, ring, run);
+        found
+    }
+
+    /// The distinct points of one run of equal y (`run`, emptied: x and point index), the points
+    /// shared in it, and its horizontal edges with vertices inside.
+    fn take_run(&mut self, raw: &RawRings, ring: &[u32], run: &mut Vec<(f64, u32)>) {
+        if let [(_, k)] = run[..] {
+            self.ids[k as usize] = self.distinct.len() as u32;
+            self.distinct.push(raw.points[k as usize]);
             run.clear();
-            run.extend(same_y.iter().map(|&k| (raw.points[k as usize].x, k)));
-            run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-            for equal in run.chunk_by(|a, b| a.0 == b.0) {
-                let id = t.distinct.len() as u32;
-                t.distinct.push(raw.points[equal[0].1 as usize]);
-                for &(_, k) in equal {
-                    t.ids[k as usize] = id;
-                    if equal.len() > 1 {
-                        t.touched[ring[k as usize] as usize] = true;
-                    }
-                }
+            return;
+        }
+        if run.is_empty() {
+            return;
+        }
+        run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        for equal in run.chunk_by(|a, b| a.0 == b.0) {
+            let id = self.distinct.len() as u32;
+            self.distinct.push(raw.points[equal[0].1 as usize]);
+            for &(_, k) in equal {
+                self.ids[k as usize] = id;
             }
-            for &k in same_y {
-                let (a, b) = (raw.points[k as usize], raw.points[next(k as usize)]);
-                if a.y != b.y {
-                    continue;
-                }
-                let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
-                let from = run.partition_point(|&(x, _)| x <= lo);
-                let mut inside = Vec::new();
-                for &(_, j) in run[from..].iter().take_while(|&&(x, _)| x < hi) {
-                    t.touched[ring[j as usize] as usize] = true;
-                    inside.push(t.ids[j as usize]);
-                }
-                if inside.is_empty() {
-                    continue;
-                }
-                let r = ring[k as usize] as usize;
-                t.touched[r] = true;
-                inside.dedup();
-                if a.x > b.x {
-                    inside.reverse();
-                }
-                t.splits.push(SplitEdge { ring: r, edge: k as usize - raw.start(r), inside });
+            if equal.len() > 1 {
+                self.share(ring, equal.iter().map(|&(_, k)| k));
             }
         }
-        t.splits.sort_unstable_by_key(|s| (s.ring, s.edge));
-        (t.order, t.ring, t.run) = (order, ring, run);
-        true
+        for &(_, k) in run.iter() {
+            let r = ring[k as usize] as usize;
+            let next = if k as usize + 1 == raw.ends[r] { raw.start(r) } else { k as usize + 1 };
+            let (a, b) = (raw.points[k as usize], raw.points[next]);
+            if a.y != b.y {
+                continue;
+            }
+            let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+            let from = run.partition_point(|&(x, _)| x <= lo);
+            let mut inside = Vec::new();
+            for &(_, j) in run[from..].iter().take_while(|&&(x, _)| x < hi) {
+                self.touched[ring[j as usize] as usize] = true;
+                inside.push(self.ids[j as usize]);
+            }
+            if inside.is_empty() {
+                continue;
+            }
+            self.touched[r] = true;
+            inside.dedup();
+            if a.x > b.x {
+                inside.reverse();
+            }
+            self.splits.push(SplitEdge { ring: r, edge: k as usize - raw.start(r), inside });
+        }
+        run.clear();
+    }
+
+    /// Records the visits (point indices) of one point visited more than once, and marks their
+    /// rings touched.
+    fn share(&mut self, ring: &[u32], visits: impl Iterator<Item = u32>) {
+        for k in visits {
+            self.touched[ring[k as usize] as usize] = true;
+            self.shared.push(k);
+        }
+        self.shared_ends.push(self.shared.len() as u32);
     }
 
     /// The touches by sorting every point's exact key, and every vertex by y then x.
     fn by_sorting(&mut self, raw: &RawRings) {
         self.reset(raw);
         let t = self;
-        let ring = &t.ring;
+        let ring = std::mem::take(&mut t.ring);
         let mut keyed: Vec<((u64, u64), u32)> =
             raw.points.iter().enumerate().map(|(k, &p)| (key(p), k as u32)).collect();
         keyed.sort_unstable();
@@ -184,13 +222,14 @@ impl Touches {
             t.distinct.push(raw.points[same[0].1 as usize]);
             for &(_, k) in same {
                 t.ids[k as usize] = id;
-                if same.len() > 1 {
-                    t.touched[ring[k as usize] as usize] = true;
-                }
+            }
+            if same.len() > 1 {
+                t.share(&ring, same.iter().map(|&(_, k)| k));
             }
         }
         drop(keyed);
-        t.splits = split_edges(raw, ring, &mut t.touched, &t.ids, false);
+        t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false);
+        t.ring = ring;
     }
 }
 
