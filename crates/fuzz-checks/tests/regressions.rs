@@ -295,51 +295,15 @@ fn vatti_xor_repair_refused_below_min_coordinate_at_1e_89() {
     regression("vatti", "xor-repair-refused-below-min-coordinate-at-1e-89");
 }
 
-/// Known issue, not fixed, found by a 10-minute run of the `vatti` target after the fixes above
-/// (`fuzz/known-issues/vatti-same-way/`): near (0.1, 0.7) the union leaves a sliver ring along
-/// y = x + 0.6 and the outer ring both running up the edge (0.1, 0.7)-(0.1, 0.7000000000000003);
-/// the sliver's edge crosses the outer's horizontal y = 0.7 3e-16 left of (0.1, 0.7), and every
-/// repair sweep returns the same two rings: the sweep does not make that crossing (probably the
-/// edge's x on that scanline, computed from its far end at -2.9 with an error of an ulp of 3,
-/// lands on the horizontal's end; not yet confirmed in the sweep, which another branch works on).
-/// The region is right (the next test).
+/// Near (0.1, 0.7) the union left a sliver ring along y = x + 0.6 and the outer ring both running
+/// up the edge (0.1, 0.7)-(0.1, 0.7000000000000003), through every repair sweep. The sliver's edge
+/// from (-2.9, -2.3) crosses the outer's horizontal y = 0.7 3e-16 left of its end (0.1, 0.7), but
+/// its x on that scanline, interpolated from the far end, came out 8e-17 right of it (an ulp of
+/// 2.9 is 4e-16), so the slide along the horizontal stopped before it. A slide now decides the
+/// side of an edge whose x lies within rounding of its end exactly.
 #[test]
-#[ignore = "vatti: a sliver's crossing with a horizontal's end rounded away (issue 15, known issues)"]
-fn vatti_known_issues_same_way() {
-    let mut failing = Vec::new();
-    for path in known_issues() {
-        if let Err(why) = clip_fuzz_checks::vatti::check_bytes(&fs::read(&path).expect("readable input")) {
-            failing.push(format!("{}: {why}", path.display()));
-        }
-    }
-    assert!(failing.is_empty(), "{}", failing.join("\n"));
-}
-
-/// The known issue above breaks the output's form only: every operation's result covers the exact
-/// region within the oracle's tolerance.
-#[test]
-fn vatti_known_issues_keep_their_regions() {
-    use clip_core::{BoolOp, FillRule, PolygonClipper};
-    use clip_oracle::polygon::{REGION_TOLERANCE, region_area, tolerance};
-    let paths = known_issues();
-    assert!(!paths.is_empty(), "no known issue found");
-    for path in paths {
-        let case = clip_fuzz_checks::vatti::decode(&fs::read(&path).expect("readable input")).expect("a case");
-        let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
-        for op in BoolOp::ALL {
-            let out = clip_vatti::Vatti.clip(&case.subject, &case.clip, op, case.fill).expect("valid input");
-            let layers = [(&case.subject, case.fill), (&case.clip, case.fill), (&out, FillRule::NonZero)];
-            let xor = region_area(&layers, |inside| op.apply(inside[0], inside[1]) != inside[2]);
-            assert!(xor <= tol, "{} {op}: region off by {xor:e} (tolerance {tol:e})", path.display());
-        }
-    }
-}
-
-/// The inputs in vatti's known issues' folder (pictures left out).
-fn known_issues() -> Vec<std::path::PathBuf> {
-    let entries =
-        fs::read_dir(fuzz_dir().join("known-issues").join("vatti-same-way")).expect("the known issues' folder");
-    entries.map(|e| e.expect("readable folder").path()).filter(|p| p.extension().is_none_or(|e| e != "svg")).collect()
+fn vatti_slide_missing_a_crossing_rounded_past_a_horizontals_end() {
+    regression("vatti", "slide-missing-a-crossing-rounded-past-a-horizontals-end");
 }
 
 /// At 1e15 (an ulp is 0.125) a triangle touching a clip ring at a vertex that ring visits twice,
