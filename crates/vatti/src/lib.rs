@@ -112,9 +112,10 @@
 //!   miss), the clean-up also splits slanted edges at the vertices on them, so rounded edges
 //!   through exact vertices cancel or are reported like horizontal ones. Output coordinates
 //!   below `clip_core::MIN_COORDINATE` become 0 before a repair sweep. Known limit: a larger
-//!   output broken between rings that share no point and with no near miss is not found, nor is
-//!   one fuzz input's sliver crossing a horizontal's end (`fuzz/known-issues/vatti-same-way/`);
-//!   the region is right.
+//!   output broken between rings that share no point and with no near miss is not found, and
+//!   where rounded crossings cluster within an ulp or two (edges nearly through a vertex and
+//!   nearly parallel to its edges) the repair's own sweep can leave rings crossing at one of them
+//!   (`fuzz/known-issues/vatti-rings-crossing-after-repair/`); the region is right.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.

@@ -111,3 +111,42 @@ fn rings_overlapping_after_rounding_are_joined() {
         assert_eq!(edges.len(), count, "{op}: an edge runs twice the same way: {:?}", out.rings);
     }
 }
+
+/// A sliver along y = x + 0.6 whose edge from (-2.9, -2.3) crosses a ring's horizontal y = 0.7
+/// 3e-16 left of its end (0.1, 0.7): the edge's x there, interpolated from (-2.9, -2.3), came out
+/// 8e-17 right of the end, the slide along the horizontal stopped short of it, and the union kept
+/// both rings running up (0.1, 0.7)-(0.1, 0.7000000000000003) (a fuzz input's union and every
+/// repair sweep of it).
+#[test]
+fn slide_along_a_horizontal_crosses_an_edge_rounded_past_its_end() {
+    let subject = Polygons::new(vec![
+        Ring::new(
+            [(0.1, 0.7000000000000003), (-2.9, -2.3), (-2.8999999999999995, -2.2999999999999994), (0.1, 0.7)]
+                .iter()
+                .map(|&(x, y)| Point::new(x, y))
+                .collect(),
+        ),
+        Ring::new(
+            [
+                (0.20112359550562517, 23.587640449438208),
+                (-13.149999999999999, 0.7),
+                (0.1, 0.7),
+                (0.1, 0.7000000000000003),
+                (15.1, 15.7),
+                (15.099999999999998, 15.7),
+                (3.9048780487804886, 21.62682926829269),
+            ]
+            .iter()
+            .map(|&(x, y)| Point::new(x, y))
+            .collect(),
+        ),
+    ]);
+    for fill in [FillRule::NonZero, FillRule::EvenOdd] {
+        for op in BoolOp::ALL {
+            let out = Vatti.clip(&subject, &Polygons::default(), op, fill).expect("valid input");
+            let rules = OutputRules::conventional(REGION_TOLERANCE);
+            let verdict = check_polygon_result(&subject, &Polygons::default(), op, fill, &out, &rules);
+            assert!(verdict.is_ok(), "{op} {fill}: {}\noutput: {:?}", verdict.unwrap_err(), out.rings);
+        }
+    }
+}
