@@ -24,22 +24,70 @@ pub(crate) fn rectangle_clip(clip: &Polygons, op: BoolOp, fill: FillRule) -> Opt
 
 /// The subject cut to rectangle `r`: the same winding number at every point strictly inside `r`
 /// (crossings with its sides rounded to f64, as the sweep rounds them), nothing outside it.
+/// Each ring streams through the four sides as Sutherland and Hodgman's re-entrant pipeline, so
+/// no pass holds a copy of a big ring: a million-vertex star cut to a small box allocates only
+/// what reaches the box.
 pub(crate) fn cut_to_rectangle(subject: &Polygons, r: Rect) -> Polygons {
-    let (mut a, mut b) = (Vec::new(), Vec::new());
+    let sides = [Side::Left(r.min.x), Side::Right(r.max.x), Side::Bottom(r.min.y), Side::Top(r.max.y)];
     let rings = subject
         .rings
         .iter()
         .filter_map(|ring| {
-            a.clear();
-            a.extend_from_slice(&ring.points);
-            for side in [Side::Left(r.min.x), Side::Right(r.max.x), Side::Bottom(r.min.y), Side::Top(r.max.y)] {
-                side.cut(&a, &mut b);
-                std::mem::swap(&mut a, &mut b);
+            let mut pipeline = sides.map(Stage::new);
+            let mut out = Vec::new();
+            for &p in &ring.points {
+                feed(&mut pipeline, 0, p, &mut out);
             }
-            (a.len() >= 3).then(|| Ring { points: a.clone() })
+            for k in 0..pipeline.len() {
+                // The closing edge from a stage's last point back to its first.
+                if let Some(first) = pipeline[k].first {
+                    feed(&mut pipeline, k, first, &mut out);
+                }
+            }
+            (out.len() >= 3).then(|| Ring { points: out })
         })
         .collect();
     Polygons::new(rings)
+}
+
+/// One side's place in the pipeline: the first point it saw and the last, with its side.
+#[derive(Clone, Copy)]
+struct Stage {
+    side: Side,
+    first: Option<Point>,
+    prev: Point,
+    prev_kept: bool,
+}
+
+impl Stage {
+    fn new(side: Side) -> Stage {
+        Stage { side, first: None, prev: Point::ZERO, prev_kept: false }
+    }
+}
+
+/// Point `p` into stage `k`: the edge from the stage's previous point to `p` cut to its side,
+/// what is kept passed on to the next stage (the last stage writes to `out`).
+fn feed(pipeline: &mut [Stage; 4], k: usize, p: Point, out: &mut Vec<Point>) {
+    let Some(stage) = pipeline.get_mut(k) else {
+        out.push(p);
+        return;
+    };
+    let kept = stage.side.keeps(p);
+    let (side, prev, prev_kept) = (stage.side, stage.prev, stage.prev_kept);
+    (stage.prev, stage.prev_kept) = (p, kept);
+    if stage.first.is_none() {
+        stage.first = Some(p);
+        return;
+    }
+    match (prev_kept, kept) {
+        (true, true) => feed(pipeline, k + 1, p, out),
+        (true, false) => feed(pipeline, k + 1, side.crossing(prev, p), out),
+        (false, true) => {
+            feed(pipeline, k + 1, side.crossing(prev, p), out);
+            feed(pipeline, k + 1, p, out);
+        }
+        (false, false) => {}
+    }
 }
 
 /// One side of the rectangle: the half-plane that keeps what is on the rectangle's side of it.
@@ -78,26 +126,6 @@ impl Side {
         match self {
             Side::Left(x) | Side::Right(x) => along_x(x),
             Side::Bottom(y) | Side::Top(y) => along_y(y),
-        }
-    }
-
-    /// Sutherland-Hodgman against this side: the ring with each stretch beyond the line replaced
-    /// by the piece of the line between where it leaves and comes back.
-    fn cut(self, ring: &[Point], out: &mut Vec<Point>) {
-        out.clear();
-        let Some(&last) = ring.last() else { return };
-        let mut prev = last;
-        for &p in ring {
-            match (self.keeps(prev), self.keeps(p)) {
-                (true, true) => out.push(p),
-                (true, false) => out.push(self.crossing(prev, p)),
-                (false, true) => {
-                    out.push(self.crossing(prev, p));
-                    out.push(p);
-                }
-                (false, false) => {}
-            }
-            prev = p;
         }
     }
 }
