@@ -44,7 +44,7 @@ pub(crate) fn cut_to_rectangle(subject: &Polygons, r: Rect) -> Polygons {
                     feed(&mut pipeline, k, first, &mut out);
                 }
             }
-            (out.len() >= 3).then(|| Ring { points: out })
+            (out.len() >= 3).then_some(Ring { points: out })
         })
         .collect();
     Polygons::new(rings)
