@@ -1,6 +1,7 @@
 //! A clip polygon prepared once for many subjects (the paper's Extensions: "clipping several
 //! subject polygons against a constant clip polygon"): validated, its box and edge blocks built.
 
+use std::collections::HashSet;
 use std::sync::OnceLock;
 
 use clip_core::{BoolOp, ClipError, FillRule, Operand, Polygons, Rect, Trapezoid, validate_polygons};
@@ -31,7 +32,7 @@ pub struct PreparedClip {
     blocks: Vec<EdgeBlocks>,
     /// The clip's region under `fill` in conventional form with its edge blocks, made on the
     /// first ∪ or ⊕: those splice the subject's neighbourhood into it (`far_splice`).
-    resolved: OnceLock<(Polygons, Vec<EdgeBlocks>)>,
+    resolved: OnceLock<Resolved>,
 }
 
 impl Vatti {
@@ -66,9 +67,13 @@ impl PreparedClip {
             return Ok(out);
         }
         if matches!(op, BoolOp::Union | BoolOp::Xor) {
-            let (rings, blocks) = self.resolved();
-            if let Some(out) = splice(subject, Far { rings, blocks: Some(blocks) }, false, op, self.fill) {
-                return Ok(out);
+            let resolved = self.resolved();
+            // A region with rounded crossings of the clip's own edges would round twice.
+            if resolved.exact {
+                let far = Far { rings: &resolved.rings, blocks: Some(&resolved.blocks) };
+                if let Some(out) = splice(subject, far, false, op, self.fill) {
+                    return Ok(out);
+                }
             }
         }
         let (a, b, op) = Vatti::reduced(subject, &self.clip, self.bounds, Some(&self.blocks), op, self.fill);
@@ -76,13 +81,16 @@ impl PreparedClip {
     }
 
     /// The clip's region in conventional form, resolved once.
-    fn resolved(&self) -> (&Polygons, &[EdgeBlocks]) {
-        let (rings, blocks) = self.resolved.get_or_init(|| {
+    fn resolved(&self) -> &Resolved {
+        self.resolved.get_or_init(|| {
             let rings = Vatti::sweep_polygons(&self.clip, &Polygons::default(), BoolOp::Union, self.fill);
             let blocks = rings.rings.iter().map(|r| EdgeBlocks::new(&r.points)).collect();
-            (rings, blocks)
-        });
-        (rings, blocks)
+            let given: HashSet<(u64, u64)> =
+                self.clip.rings.iter().flat_map(|r| &r.points).map(|p| (p.x.to_bits(), p.y.to_bits())).collect();
+            let exact =
+                rings.rings.iter().flat_map(|r| &r.points).all(|p| given.contains(&(p.x.to_bits(), p.y.to_bits())));
+            Resolved { rings, blocks, exact }
+        })
     }
 
     /// `subject op clip` as trapezoids, as [`Vatti`]'s `clip_trapezoids` gives them.
@@ -91,6 +99,16 @@ impl PreparedClip {
         let (a, b, op) = Vatti::reduced(subject, &self.clip, self.bounds, Some(&self.blocks), op, self.fill);
         Ok(Vatti::sweep_trapezoids(&a, &b, op, self.fill))
     }
+}
+
+/// The clip's region in conventional form, with its edge blocks.
+#[derive(Clone, Debug)]
+struct Resolved {
+    rings: Polygons,
+    blocks: Vec<EdgeBlocks>,
+    /// Every vertex is one of the clip's own: resolving it rounded no crossing, so the region's
+    /// edges lie exactly on the clip's and splicing around it rounds only once, as the sweep does.
+    exact: bool,
 }
 
 #[cfg(test)]

@@ -141,3 +141,22 @@ fn a_prepared_clip_refuses_bad_subjects_and_clips() {
     assert!(prepared.clip(&bad, BoolOp::Intersection).is_err());
     assert!(prepared.clip_trapezoids(&bad, BoolOp::Union).is_err());
 }
+
+/// Found by the property test above in CI: a prepared xor under the positive rule whose clip's
+/// second ring shares the subject's edge (2, 1)-(4, 6) reversed.
+#[test]
+fn prepared_xor_of_a_triangle_sharing_a_clip_edge_reversed() {
+    let ring = |pts: &[(f64, f64)]| Ring::new(pts.iter().map(|&(x, y)| Point::new(x, y)).collect());
+    let s = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1.0), (4.0, 6.0)]));
+    let c = Polygons::new(vec![
+        ring(&[(0.0, 3.0), (2.0, 4.0), (9.0, 9.0)]),
+        ring(&[(4.0, 6.0), (2.0, 1.0), (2.0, 5.0), (5.0, 3.0)]),
+    ]);
+    for op in BoolOp::ALL {
+        for fill in FillRule::ALL {
+            if let Err(e) = check_all_paths(&s, &c, op, fill) {
+                panic!("{op:?} {fill:?}: {e}");
+            }
+        }
+    }
+}
