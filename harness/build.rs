@@ -2,17 +2,11 @@
 //! measured them even when the checkout has moved on by the time a long run writes them.
 
 use std::path::Path;
-use std::process::Command;
 
-fn git(args: &[&str]) -> Option<String> {
-    Command::new("git")
-        .args(args)
-        .output()
-        .ok()
-        .filter(|o| o.status.success())
-        .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_owned())
-        .filter(|s| !s.is_empty())
-}
+#[path = "src/measure/git_revision.rs"]
+mod git_revision;
+
+use git_revision::{checkout_revision, git};
 
 fn main() {
     // Re-stamp when a commit moves HEAD or the code changes; a directory is scanned whole.
@@ -26,13 +20,6 @@ fn main() {
             println!("cargo:rerun-if-changed={path}");
         }
     }
-    let revision = match git(&["rev-parse", "HEAD"]) {
-        Some(rev) => {
-            // Dirty means the code differs from the commit; result files being rewritten do not count.
-            let code = ["status", "--porcelain", "--untracked-files=no", "--", "*.rs", "*.toml", "Cargo.lock", "*.sh"];
-            if git(&code).is_some() { format!("{rev}+dirty") } else { rev }
-        }
-        None => "unknown".to_owned(),
-    };
+    let revision = checkout_revision().unwrap_or_else(|| "unknown".to_owned());
     println!("cargo:rustc-env=CLIPBENCH_BUILD_REVISION={revision}");
 }

@@ -2,6 +2,7 @@
 //! what machine a run happened, peak memory, progress bars.
 
 pub mod cpu_time;
+pub mod git_revision;
 pub mod out_dir;
 pub mod parallel;
 pub mod peak_memory;

@@ -1,12 +1,12 @@
 //! Where a result came from: seed, git revision, machine and date, written beside every CSV.
 
 use std::path::Path;
-use std::process::Command;
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use serde::{Deserialize, Serialize};
 
 use crate::cli_error::CliError;
+use crate::measure::git_revision::checkout_revision;
 use crate::write::write_file;
 
 /// The machine a run happened on.
@@ -91,27 +91,6 @@ impl Provenance {
 
 /// The revision this binary was built from, stamped by the build script.
 const BUILD_REVISION: &str = env!("CLIPBENCH_BUILD_REVISION");
-
-/// The checkout's HEAD now, as the build script stamps it, or `None` outside git.
-fn checkout_revision() -> Option<String> {
-    let run = |args: &[&str]| {
-        Command::new("git")
-            .args(args)
-            .output()
-            .ok()
-            .filter(|o| o.status.success())
-            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_owned())
-    };
-    match run(&["rev-parse", "HEAD"]) {
-        Some(rev) if !rev.is_empty() => {
-            // Dirty means the code differs from the commit; result files being rewritten do not count.
-            let code = ["status", "--porcelain", "--untracked-files=no", "--", "*.rs", "*.toml", "Cargo.lock", "*.sh"];
-            let dirty = run(&code).is_some_and(|s| !s.is_empty());
-            Some(if dirty { format!("{rev}+dirty") } else { rev })
-        }
-        _ => None,
-    }
-}
 
 fn machine() -> Machine {
     let hostname = std::fs::read_to_string("/proc/sys/kernel/hostname")
