@@ -462,16 +462,7 @@ impl<'a> Sweep<'a> {
             self.node_neighbours(b, p, rounded);
             return;
         }
-        for k in (0..lo).rev() {
-            if !self.node_neighbour(a, b, k, p, rounded) {
-                break;
-            }
-        }
-        for k in hi + 1..self.ael.len() {
-            if !self.node_neighbour(a, b, k, p, rounded) {
-                break;
-            }
-        }
+        self.node_outward(a, b, lo, hi, p, rounded);
     }
 
     /// True when edges `a` and `b` lie on one line (exact).
@@ -494,13 +485,20 @@ impl<'a> Sweep<'a> {
     #[inline]
     fn node_neighbours(&mut self, id: u32, p: Point, rounded: bool) {
         let pos = self.ael.pos(id);
-        for k in (0..pos).rev() {
-            if !self.node_neighbour(id, id, k, p, rounded) {
+        self.node_outward(id, id, pos, pos, p, rounded);
+    }
+
+    /// Gives `p` to the edges left of active position `lo` and right of `hi`, outwards, each
+    /// scan stopping at the first edge that does not pass through it ([`Sweep::node_neighbour`]).
+    #[inline]
+    fn node_outward(&mut self, a: u32, b: u32, lo: usize, hi: usize, p: Point, rounded: bool) {
+        for k in (0..lo).rev() {
+            if !self.node_neighbour(a, b, k, p, rounded) {
                 break;
             }
         }
-        for k in pos + 1..self.ael.len() {
-            if !self.node_neighbour(id, id, k, p, rounded) {
+        for k in hi + 1..self.ael.len() {
+            if !self.node_neighbour(a, b, k, p, rounded) {
                 break;
             }
         }

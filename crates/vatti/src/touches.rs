@@ -163,14 +163,7 @@ impl Touches {
         }
         run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
         for equal in run.chunk_by(|a, b| a.0 == b.0) {
-            let id = self.distinct.len() as u32;
-            self.distinct.push(raw.points[equal[0].1 as usize]);
-            for &(_, k) in equal {
-                self.ids[k as usize] = id;
-            }
-            if equal.len() > 1 {
-                self.share(ring, equal.iter().map(|&(_, k)| k));
-            }
+            self.name_point(raw, ring, equal.iter().map(|&(_, k)| k));
         }
         for &(_, k) in run.iter() {
             let r = ring[k as usize] as usize;
@@ -199,6 +192,24 @@ impl Touches {
         run.clear();
     }
 
+    /// Gives the visits (point indices, at least one) of one distinct point its id, and shares
+    /// them when there are several.
+    #[inline]
+    fn name_point(&mut self, raw: &RawRings, ring: &[u32], visits: impl Iterator<Item = u32> + Clone) {
+        let id = self.distinct.len() as u32;
+        let mut count = 0;
+        for k in visits.clone() {
+            if count == 0 {
+                self.distinct.push(raw.points[k as usize]);
+            }
+            self.ids[k as usize] = id;
+            count += 1;
+        }
+        if count > 1 {
+            self.share(ring, visits);
+        }
+    }
+
     /// Records the visits (point indices) of one point visited more than once, and marks their
     /// rings touched.
     fn share(&mut self, ring: &[u32], visits: impl Iterator<Item = u32>) {
@@ -218,14 +229,7 @@ impl Touches {
             raw.points.iter().enumerate().map(|(k, &p)| (key(p), k as u32)).collect();
         keyed.sort_unstable();
         for same in keyed.chunk_by(|a, b| a.0 == b.0) {
-            let id = t.distinct.len() as u32;
-            t.distinct.push(raw.points[same[0].1 as usize]);
-            for &(_, k) in same {
-                t.ids[k as usize] = id;
-            }
-            if same.len() > 1 {
-                t.share(&ring, same.iter().map(|&(_, k)| k));
-            }
+            t.name_point(raw, &ring, same.iter().map(|&(_, k)| k));
         }
         drop(keyed);
         t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false);
