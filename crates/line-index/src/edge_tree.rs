@@ -86,9 +86,12 @@ impl EdgeTree {
     }
 }
 
-/// Appends the node over the consecutive leaves `leaf_ids` (split in four equal runs, each a
-/// leaf or a node built the same way) and returns its index and box. The first call's node, the
-/// root, is node 0.
+/// Appends the node over the consecutive leaves `leaf_ids` and returns its index and box. The
+/// first call's node, the root, is node 0. The leaves are split in runs of the largest power of
+/// four below their count (the last run shorter), each a leaf or a node built the same way, so
+/// every node but those along the right edge is full: the same depth as four equal runs, with
+/// about n / 3 nodes instead of n / 2 (a third less memory to read back when other work has
+/// evicted the tree).
 fn build(leaf_ids: &[u32], boxes: &[[f64; 4]], nodes: &mut Vec<Node>) -> (u32, [f64; 4]) {
     let at = nodes.len();
     nodes.push(Node {
@@ -99,8 +102,12 @@ fn build(leaf_ids: &[u32], boxes: &[[f64; 4]], nodes: &mut Vec<Node>) -> (u32, [
     });
     let mut total = EMPTY;
     let n = leaf_ids.len();
+    let mut run = 1;
+    while run * WAYS < n {
+        run *= WAYS;
+    }
     for part in 0..WAYS {
-        let (lo, hi) = (n * part / WAYS, n * (part + 1) / WAYS);
+        let (lo, hi) = ((run * part).min(n), (run * (part + 1)).min(n));
         if lo == hi {
             continue;
         }
