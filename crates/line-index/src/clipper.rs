@@ -343,24 +343,35 @@ impl PreparedLineIndex {
             if COUNT {
                 state.counts.nodes_tested += 1;
             }
-            while entered != 0 {
-                let i = entered.trailing_zeros() as usize;
-                entered &= entered - 1;
-                if node.leaves & (1 << i) != 0 {
-                    if COUNT {
-                        state.counts.leaves_scanned += 1;
-                    }
-                    leaf(&self.tree.leaves[node.child[i] as usize], node, i);
-                } else {
-                    stack[top] = node.child[i];
-                    top += 1;
+            let mut leafy = entered & u32::from(node.leaves);
+            let mut inner = entered & !u32::from(node.leaves);
+            while leafy != 0 {
+                let i = leafy.trailing_zeros() as usize;
+                leafy &= leafy - 1;
+                if COUNT {
+                    state.counts.leaves_scanned += 1;
                 }
+                leaf(&self.tree.leaves[node.child[i] as usize], node, i);
             }
-            if top == 0 {
+            // The first inner child entered is visited next, straight from the node: on the way
+            // down to one leaf (most walks against a large window) the next node's address then
+            // waits only for this node's test, not also for a store to the stack and its reload.
+            let next = if inner != 0 {
+                let first = node.child[inner.trailing_zeros() as usize];
+                inner &= inner - 1;
+                while inner != 0 {
+                    stack[top] = node.child[inner.trailing_zeros() as usize];
+                    top += 1;
+                    inner &= inner - 1;
+                }
+                first
+            } else if top == 0 {
                 return;
-            }
-            top -= 1;
-            node = &nodes[stack[top] as usize];
+            } else {
+                top -= 1;
+                stack[top]
+            };
+            node = &nodes[next as usize];
             entered = hits(node) & u32::from(node.present);
         }
     }
