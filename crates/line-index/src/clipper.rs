@@ -36,7 +36,7 @@ const STACK: usize = 64;
 /// What a batch's walks share: the stack of nodes to visit, kept from segment to segment rather
 /// than zeroed for each walk, and the counters of [`PreparedLineIndex::clip_batch_counted`].
 struct WalkState {
-    stack: [u32; STACK],
+    stack: [usize; STACK],
     counts: IndexCounts,
 }
 
@@ -121,7 +121,7 @@ impl PreparedLineIndex {
     fn touch(&self) {
         const PER_LINE: usize = 64 / size_of::<f64>();
         let sum = |v: &[f64]| v.iter().step_by(PER_LINE).fold(0.0, |s, &x| s + x);
-        let nodes: f64 = self.tree.nodes.iter().map(|n| n.sides[MIN_X][0] + n.sides[MAX_Y][3]).sum();
+        let nodes: f64 = self.tree.nodes.iter().map(|n| n.sides[MIN_X][0] + n.sides[MAX_X][0]).sum();
         core::hint::black_box(sum(&self.xs) + sum(&self.ys) + nodes);
     }
 
@@ -134,7 +134,7 @@ impl PreparedLineIndex {
     /// Bytes held by the prepared window (the vertices' coordinate arrays and the tree).
     pub fn memory_bytes(&self) -> usize {
         (self.xs.len() + self.ys.len()) * size_of::<f64>()
-            + self.tree.nodes.len() * size_of::<Node>()
+            + self.tree.nodes.len() * (size_of::<Node>() + 1)
             + self.tree.leaves.len() * size_of::<Range<u32>>()
     }
 
@@ -201,7 +201,8 @@ impl PreparedLineIndex {
         let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
         if a_outside | b_outside {
             // The batch's pass over the root (`root_entry`) has tested its children already.
-            let root_entered = root_entered.unwrap_or_else(|| Self::root_entry(&self.tree.nodes[0], &ray, &s));
+            let root_entered =
+                root_entered.unwrap_or_else(|| Self::root_entry(&self.tree.nodes[0], self.tree.present[0], &ray, &s));
             let found = self.walk::<COUNT, true, false>(Some(root_entered), &ray, &line, &frame, crossings, state);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
@@ -257,8 +258,8 @@ impl PreparedLineIndex {
     /// The children of `root` whose boxes the closed segment `s` (the ray `ray` from its start,
     /// of positive length) can meet, as bits. Branch-free.
     #[inline(always)]
-    fn root_entry(root: &Node, ray: &Ray, s: &Segment) -> u32 {
-        ray.segment_hits(root, &s.bounds()) & u32::from(root.present)
+    fn root_entry(root: &Node, present: u8, ray: &Ray, s: &Segment) -> u32 {
+        ray.segment_hits(root, &s.bounds()) & u32::from(present)
     }
 
     /// How far the ray from `p` in direction `d` runs inside the bounding box, in units of `|d|`
@@ -326,43 +327,50 @@ impl PreparedLineIndex {
         mut leaf: impl FnMut(&Range<u32>, &Node, usize),
         state: &mut WalkState,
     ) {
-        let nodes = &self.tree.nodes;
+        let (nodes, present, lowest) = (&self.tree.nodes, &self.tree.present, self.tree.lowest as usize);
         let root = &nodes[0];
-        let mut entered = root_entered.unwrap_or_else(|| hits(root) & u32::from(root.present));
+        let mut entered = root_entered.unwrap_or_else(|| hits(root) & u32::from(present[0]));
         if let [leaf_edges] = &self.tree.leaves[..] {
             // One leaf (up to 16 edges): the root holds it alone, no stack.
             if entered != 0 {
-                leaf(leaf_edges, root, root.present.trailing_zeros() as usize);
+                leaf(leaf_edges, root, present[0].trailing_zeros() as usize);
             }
             return;
         }
         let stack = &mut state.stack;
         let mut top = 0;
-        let mut node = root;
+        let mut at = 0;
         loop {
             if COUNT {
                 state.counts.nodes_tested += 1;
             }
-            let mut leafy = entered & u32::from(node.leaves);
-            let mut inner = entered & !u32::from(node.leaves);
-            while leafy != 0 {
-                let i = leafy.trailing_zeros() as usize;
-                leafy &= leafy - 1;
-                if COUNT {
-                    state.counts.leaves_scanned += 1;
+            let next = if at >= lowest {
+                // The lowest level: the children are leaves `4 (at - lowest) + i`.
+                let node = &nodes[at];
+                while entered != 0 {
+                    let i = entered.trailing_zeros() as usize;
+                    entered &= entered - 1;
+                    if COUNT {
+                        state.counts.leaves_scanned += 1;
+                    }
+                    leaf(&self.tree.leaves[WAYS * (at - lowest) + i], node, i);
                 }
-                leaf(&self.tree.leaves[node.child[i] as usize], node, i);
-            }
-            // The first inner child entered is visited next, straight from the node: on the way
-            // down to one leaf (most walks against a large window) the next node's address then
-            // waits only for this node's test, not also for a store to the stack and its reload.
-            let next = if inner != 0 {
-                let first = node.child[inner.trailing_zeros() as usize];
-                inner &= inner - 1;
-                while inner != 0 {
-                    stack[top] = node.child[inner.trailing_zeros() as usize];
+                if top == 0 {
+                    return;
+                }
+                top -= 1;
+                stack[top]
+            } else if entered != 0 {
+                // The first child entered is visited next, straight from the node: on the way
+                // down to one leaf (most walks against a large window) the next node's address
+                // then waits only for this node's test, not also for a store to the stack and
+                // its reload. The others, if any, are stacked.
+                let first = WAYS * at + 1 + entered.trailing_zeros() as usize;
+                entered &= entered - 1;
+                while entered != 0 {
+                    stack[top] = WAYS * at + 1 + entered.trailing_zeros() as usize;
                     top += 1;
-                    inner &= inner - 1;
+                    entered &= entered - 1;
                 }
                 first
             } else if top == 0 {
@@ -371,8 +379,8 @@ impl PreparedLineIndex {
                 top -= 1;
                 stack[top]
             };
-            node = &nodes[next as usize];
-            entered = hits(node) & u32::from(node.present);
+            at = next;
+            entered = hits(&nodes[at]) & u32::from(present[at]);
         }
     }
 
@@ -513,13 +521,13 @@ impl PreparedWindow for PreparedLineIndex {
         // kept beside its index: its walk starts from them rather than testing the root again.
         // The root and the box are copied out first: the loop's stores into `kept` and `roots`
         // could alias the tree for all the compiler knows, and it reloaded them per segment.
-        let (root, bounds) = (self.tree.nodes[0], self.bounds);
+        let (root, present, bounds) = (self.tree.nodes[0], self.tree.present[0], self.bounds);
         let mut roots = vec![0u32; kept.len()];
         let mut n = 0;
         for k in 0..kept.len() {
             let index = kept[k];
             let s = segments[index];
-            let entered = Self::root_entry(&root, &Ray::new(s.a, s.b, &bounds), &s);
+            let entered = Self::root_entry(&root, present, &Ray::new(s.a, s.b, &bounds), &s);
             (kept[n], roots[n]) = (index, entered);
             n += usize::from((entered != 0) | ((bounds.outcode(s.a) | bounds.outcode(s.b)) == 0));
         }
