@@ -29,8 +29,10 @@ struct Line {
     trusted_gap: f64,
 }
 
-/// Slots of a walk's stack: each level pushes at most WAYS - 1 more than it pops, so 64 hold
-/// trees far deeper than u32 leaf indices allow.
+/// Slots of a walk's stack: each level pops one node and pushes at most WAYS - 1, and a node
+/// writes WAYS slots from the top whichever children it pushes (see `visit`), so a tree of D
+/// levels writes below 3 D + 4; u32 leaf indices allow at most 17 levels. A power of two, so
+/// an index masked by `STACK - 1` needs no bounds check.
 const STACK: usize = 64;
 
 /// What a batch's walks share: the stack of nodes to visit, kept from segment to segment rather
@@ -364,13 +366,14 @@ impl PreparedLineIndex {
                 // The first child entered is visited next, straight from the node: on the way
                 // down to one leaf (most walks against a large window) the next node's address
                 // then waits only for this node's test, not also for a store to the stack and
-                // its reload. The others, if any, are stacked.
+                // its reload. The others are stacked without a branch on how many there are (one
+                // or two children of a node entered is random in a batch, and mispredicted once
+                // per walk): every slot is written, the top moves by the child's bit.
                 let first = WAYS * at + 1 + entered.trailing_zeros() as usize;
-                entered &= entered - 1;
-                while entered != 0 {
-                    stack[top] = WAYS * at + 1 + entered.trailing_zeros() as usize;
-                    top += 1;
-                    entered &= entered - 1;
+                let rest = entered & (entered - 1);
+                for i in 0..WAYS {
+                    stack[top & (STACK - 1)] = WAYS * at + 1 + i;
+                    top += ((rest >> i) & 1) as usize;
                 }
                 first
             } else if top == 0 {
