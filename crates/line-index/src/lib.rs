@@ -87,7 +87,7 @@
 //!   the tree bottom-up over the runs); no sorting.
 //! - **Memory**: 16 bytes per vertex (its x and y, held once, in two arrays), one node of 129
 //!   bytes (two cache lines of boxes and a byte of which slots are used) per 2.5 to 3 leaves, and
-//!   8 bytes per leaf: about 20 bytes per edge, 197 KiB at 10^4 edges (measured by
+//!   8 bytes per leaf: about 20 bytes per edge, 192 KiB at 10^4 edges (measured by
 //!   `reproduce beyond-paper`). [`PreparedLineIndex::memory_bytes`]
 //!   reports it. The size matters beside other work: a window evicted from the caches is read
 //!   back at that cost, which was a third of the time per segment at 10^4 edges in
