@@ -1,4 +1,4 @@
-//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N` one window size (for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead, `--large` the indexed clipper on lines-large case 3, `--counts` the indexed clipper's stage counts instead of times, `--cold` evicts the caches before every timed batch (as the other clippers of `reproduce beyond-paper` do between two batches of one clipper).
+//! Prints ns per segment of the line clippers on wang-t4's concave windows (6 and 50 edges, both size rows), timed in interleaved rounds like `reproduce wang-table4`; `--only NAME` times one clipper, `--rounds N` sets the rounds, `--edges N[,M...]` the window sizes (one for callgrind), `--beyond` the lobed windows of `reproduce beyond-paper` instead, `--large` the indexed clipper on lines-large case 3, `--counts` the indexed clipper's stage counts instead of times, `--cold` evicts the caches before every timed batch (as the other clippers of `reproduce beyond-paper` do between two batches of one clipper).
 
 use std::time::Instant;
 
@@ -20,8 +20,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let clippers: Vec<&dyn LineClipper> =
         clippers.into_iter().filter(|c| only.as_deref().is_none_or(|o| o == c.name())).collect();
     let mut runs: Vec<Run> = Vec::new();
-    let sizes: Vec<usize> = match args.iter().position(|a| a == "--edges").and_then(|i| args.get(i + 1)?.parse().ok()) {
-        Some(edges) => vec![edges],
+    // `--edges 50,10000`: several sizes, timed interleaved in one run.
+    let sizes: Vec<usize> = match args.iter().position(|a| a == "--edges").and_then(|i| args.get(i + 1)) {
+        Some(list) => list.split(',').map(str::parse).collect::<Result<_, _>>()?,
         None => vec![6, 50],
     };
     let beyond = args.iter().any(|a| a == "--beyond");

@@ -29,14 +29,16 @@ struct Line {
     trusted_gap: f64,
 }
 
-/// Slots of a walk's stack: each level pushes at most WAYS - 1 more than it pops, so 64 hold
-/// trees far deeper than u32 leaf indices allow.
+/// Slots of a walk's stack: each level pops one node and pushes at most WAYS - 1, and a node
+/// writes WAYS slots from the top whichever children it pushes (see `visit`), so a tree of D
+/// levels writes below 3 D + 4; u32 leaf indices allow at most 17 levels. A power of two, so
+/// an index masked by `STACK - 1` needs no bounds check.
 const STACK: usize = 64;
 
 /// What a batch's walks share: the stack of nodes to visit, kept from segment to segment rather
 /// than zeroed for each walk, and the counters of [`PreparedLineIndex::clip_batch_counted`].
 struct WalkState {
-    stack: [u32; STACK],
+    stack: [usize; STACK],
     counts: IndexCounts,
 }
 
@@ -121,7 +123,7 @@ impl PreparedLineIndex {
     fn touch(&self) {
         const PER_LINE: usize = 64 / size_of::<f64>();
         let sum = |v: &[f64]| v.iter().step_by(PER_LINE).fold(0.0, |s, &x| s + x);
-        let nodes: f64 = self.tree.nodes.iter().map(|n| n.sides[MIN_X][0] + n.sides[MAX_Y][3]).sum();
+        let nodes: f64 = self.tree.nodes.iter().map(|n| n.sides[MIN_X][0] + n.sides[MAX_X][0]).sum();
         core::hint::black_box(sum(&self.xs) + sum(&self.ys) + nodes);
     }
 
@@ -134,7 +136,7 @@ impl PreparedLineIndex {
     /// Bytes held by the prepared window (the vertices' coordinate arrays and the tree).
     pub fn memory_bytes(&self) -> usize {
         (self.xs.len() + self.ys.len()) * size_of::<f64>()
-            + self.tree.nodes.len() * size_of::<Node>()
+            + self.tree.nodes.len() * (size_of::<Node>() + 1)
             + self.tree.leaves.len() * size_of::<Range<u32>>()
     }
 
@@ -201,7 +203,8 @@ impl PreparedLineIndex {
         let (a_outside, b_outside) = (self.bounds.outcode(a) != 0, self.bounds.outcode(b) != 0);
         if a_outside | b_outside {
             // The batch's pass over the root (`root_entry`) has tested its children already.
-            let root_entered = root_entered.unwrap_or_else(|| Self::root_entry(&self.tree.nodes[0], &ray, &s));
+            let root_entered =
+                root_entered.unwrap_or_else(|| Self::root_entry(&self.tree.nodes[0], self.tree.present[0], &ray, &s));
             let found = self.walk::<COUNT, true, false>(Some(root_entered), &ray, &line, &frame, crossings, state);
             // With the start outside, the crossings on the segment give the end's parity; with
             // the end outside, the start's. Counted without a branch on which end it is (it is
@@ -257,8 +260,8 @@ impl PreparedLineIndex {
     /// The children of `root` whose boxes the closed segment `s` (the ray `ray` from its start,
     /// of positive length) can meet, as bits. Branch-free.
     #[inline(always)]
-    fn root_entry(root: &Node, ray: &Ray, s: &Segment) -> u32 {
-        ray.segment_hits(root, &s.bounds()) & u32::from(root.present)
+    fn root_entry(root: &Node, present: u8, ray: &Ray, s: &Segment) -> u32 {
+        ray.segment_hits(root, &s.bounds()) & u32::from(present)
     }
 
     /// How far the ray from `p` in direction `d` runs inside the bounding box, in units of `|d|`
@@ -326,42 +329,61 @@ impl PreparedLineIndex {
         mut leaf: impl FnMut(&Range<u32>, &Node, usize),
         state: &mut WalkState,
     ) {
-        let nodes = &self.tree.nodes;
+        let (nodes, present, lowest) = (&self.tree.nodes, &self.tree.present, self.tree.lowest as usize);
         let root = &nodes[0];
-        let mut entered = root_entered.unwrap_or_else(|| hits(root) & u32::from(root.present));
+        let mut entered = root_entered.unwrap_or_else(|| hits(root) & u32::from(present[0]));
         if let [leaf_edges] = &self.tree.leaves[..] {
             // One leaf (up to 16 edges): the root holds it alone, no stack.
             if entered != 0 {
-                leaf(leaf_edges, root, root.present.trailing_zeros() as usize);
+                leaf(leaf_edges, root, present[0].trailing_zeros() as usize);
             }
             return;
         }
         let stack = &mut state.stack;
         let mut top = 0;
-        let mut node = root;
+        let mut at = 0;
         loop {
             if COUNT {
                 state.counts.nodes_tested += 1;
             }
-            while entered != 0 {
-                let i = entered.trailing_zeros() as usize;
-                entered &= entered - 1;
-                if node.leaves & (1 << i) != 0 {
+            let next = if at >= lowest {
+                // The lowest level: the children are leaves `4 (at - lowest) + i`.
+                let node = &nodes[at];
+                while entered != 0 {
+                    let i = entered.trailing_zeros() as usize;
+                    entered &= entered - 1;
                     if COUNT {
                         state.counts.leaves_scanned += 1;
                     }
-                    leaf(&self.tree.leaves[node.child[i] as usize], node, i);
-                } else {
-                    stack[top] = node.child[i];
-                    top += 1;
+                    leaf(&self.tree.leaves[WAYS * (at - lowest) + i], node, i);
                 }
-            }
-            if top == 0 {
+                if top == 0 {
+                    return;
+                }
+                top -= 1;
+                stack[top]
+            } else if entered != 0 {
+                // The first child entered is visited next, straight from the node: on the way
+                // down to one leaf (most walks against a large window) the next node's address
+                // then waits only for this node's test, not also for a store to the stack and
+                // its reload. The others are stacked without a branch on how many there are (one
+                // or two children of a node entered is random in a batch, and mispredicted once
+                // per walk): every slot is written, the top moves by the child's bit.
+                let first = WAYS * at + 1 + entered.trailing_zeros() as usize;
+                let rest = entered & (entered - 1);
+                for i in 0..WAYS {
+                    stack[top & (STACK - 1)] = WAYS * at + 1 + i;
+                    top += ((rest >> i) & 1) as usize;
+                }
+                first
+            } else if top == 0 {
                 return;
-            }
-            top -= 1;
-            node = &nodes[stack[top] as usize];
-            entered = hits(node) & u32::from(node.present);
+            } else {
+                top -= 1;
+                stack[top]
+            };
+            at = next;
+            entered = hits(&nodes[at]) & u32::from(present[at]);
         }
     }
 
@@ -502,13 +524,13 @@ impl PreparedWindow for PreparedLineIndex {
         // kept beside its index: its walk starts from them rather than testing the root again.
         // The root and the box are copied out first: the loop's stores into `kept` and `roots`
         // could alias the tree for all the compiler knows, and it reloaded them per segment.
-        let (root, bounds) = (self.tree.nodes[0], self.bounds);
+        let (root, present, bounds) = (self.tree.nodes[0], self.tree.present[0], self.bounds);
         let mut roots = vec![0u32; kept.len()];
         let mut n = 0;
         for k in 0..kept.len() {
             let index = kept[k];
             let s = segments[index];
-            let entered = Self::root_entry(&root, &Ray::new(s.a, s.b, &bounds), &s);
+            let entered = Self::root_entry(&root, present, &Ray::new(s.a, s.b, &bounds), &s);
             (kept[n], roots[n]) = (index, entered);
             n += usize::from((entered != 0) | ((bounds.outcode(s.a) | bounds.outcode(s.b)) == 0));
         }

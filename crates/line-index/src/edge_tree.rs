@@ -13,9 +13,6 @@ pub(crate) const LEAF_EDGES: usize = 16;
 /// Children per node.
 pub(crate) const WAYS: usize = 4;
 
-/// A child slot that holds nothing: its box is empty, so every test misses it.
-const NONE: u32 = u32::MAX;
-
 /// Rows of [`Node::sides`]: a box's least x, least y, greatest x and greatest y. A row's index
 /// can be computed (a box test picks the rows of the corner it needs from the ray's direction,
 /// without a branch).
@@ -25,27 +22,34 @@ pub(crate) const MAX_X: usize = 2;
 pub(crate) const MAX_Y: usize = 3;
 
 /// One node: the boxes of up to four children side by side (each coordinate in its own array,
-/// so the four tests are independent and vectorise), and what each child is.
+/// so the four tests are independent and vectorise), two whole cache lines. Which node or leaf
+/// each child is follows from the node's index (see [`EdgeTree`]).
 #[derive(Clone, Copy, Debug)]
+#[repr(C, align(64))]
 pub(crate) struct Node {
     /// Per row ([`MIN_X`], [`MIN_Y`], [`MAX_X`], [`MAX_Y`]), per child: that side of the child's
     /// box (exact vertex coordinates; an empty box for unused slots).
     pub sides: [[f64; WAYS]; 4],
-    /// Per child: the node index of an inner child, or the leaf index of a leaf child.
-    pub child: [u32; WAYS],
-    /// Bit `i` set when child `i` is a leaf.
-    pub leaves: u8,
-    /// Bit `i` set when slot `i` holds a child.
-    pub present: u8,
 }
 
 /// The hierarchy: leaves are runs of [`LEAF_EDGES`] consecutive edges of one ring in ring order,
-/// so a leaf's box hugs its piece of the boundary; inner nodes group four consecutive runs (or
-/// four consecutive groups). The root is node 0; a query keeps its own small stack.
+/// so a leaf's box hugs its piece of the boundary; nodes group four consecutive leaves, or four
+/// consecutive nodes, level by level up to the root, every leaf at the same depth.
+///
+/// The nodes are laid out as a four-way heap, level after level: the children of node `k` are
+/// nodes `4 k + 1 + i`, or, on the lowest level (from [`EdgeTree::lowest`] on), leaves
+/// `4 (k - lowest) + i`. A walk then has the next node's address from its parent's test alone
+/// (against a large window a walk is a chain of dependent reads and tests, and a stored child
+/// index was one more read in it), and every walk down to a leaf takes as many steps as any
+/// other, which the branch predictor learns.
 #[derive(Clone, Debug)]
 pub(crate) struct EdgeTree {
-    /// Inner nodes, the root first.
+    /// The nodes, the root first.
     pub nodes: Vec<Node>,
+    /// Per node: bit `i` set when slot `i` holds a child (a leaf, or a node over some leaf).
+    pub present: Vec<u8>,
+    /// The index of the first node of the lowest level, whose children are leaves.
+    pub lowest: u32,
     /// Each leaf's edges: edge `i` runs from vertex `i` to `i + 1`.
     pub leaves: Vec<Range<u32>>,
 }
@@ -64,61 +68,51 @@ impl EdgeTree {
         }
         let boxes: Vec<[f64; 4]> =
             leaves.iter().map(|r| bounds_of(&rings.points[r.start as usize..=r.end as usize])).collect();
-        let mut nodes = Vec::with_capacity(leaves.len() / 3 + 2);
-        let ids: Vec<u32> = (0..leaves.len() as u32).collect();
-        build(&ids, &boxes, &mut nodes);
-        EdgeTree { nodes, leaves }
+        // Levels above the lowest are complete; the lowest holds one node per four leaves.
+        let lowest_count = leaves.len().div_ceil(WAYS).max(1);
+        let (mut lowest, mut width) = (0, 1);
+        while width < lowest_count {
+            lowest += width;
+            width *= WAYS;
+        }
+        let count = lowest + lowest_count;
+        let empty = Node {
+            sides: [[f64::INFINITY; WAYS], [f64::INFINITY; WAYS], [f64::NEG_INFINITY; WAYS], [f64::NEG_INFINITY; WAYS]],
+        };
+        let (mut nodes, mut present, mut totals) = (vec![empty; count], vec![0u8; count], vec![EMPTY; count]);
+        // Children before parents: every child's index is above its parent's.
+        for k in (0..count).rev() {
+            for i in 0..WAYS {
+                let child = if k >= lowest {
+                    let leaf = WAYS * (k - lowest) + i;
+                    (leaf < leaves.len()).then(|| boxes[leaf])
+                } else {
+                    let c = WAYS * k + 1 + i;
+                    (c < count && present[c] != 0).then(|| totals[c])
+                };
+                if let Some(b) = child {
+                    let node = &mut nodes[k];
+                    (node.sides[MIN_X][i], node.sides[MIN_Y][i], node.sides[MAX_X][i], node.sides[MAX_Y][i]) =
+                        (b[0], b[1], b[2], b[3]);
+                    present[k] |= 1 << i;
+                    totals[k] = union(totals[k], b);
+                }
+            }
+        }
+        EdgeTree { nodes, present, lowest: lowest as u32, leaves }
     }
 
-    /// The greatest depth of the tree (tests: the stack of a query holds far more).
+    /// The number of levels of nodes (tests: the stack of a query holds far more).
     #[cfg(test)]
     pub fn depth(&self) -> usize {
-        fn depth(t: &EdgeTree, n: usize) -> usize {
-            let node = &t.nodes[n];
-            (0..WAYS)
-                .filter(|&i| node.present & !node.leaves & (1 << i) != 0)
-                .map(|i| depth(t, node.child[i] as usize))
-                .max()
-                .unwrap_or(0)
-                + 1
+        let mut k = self.lowest as usize;
+        let mut depth = 1;
+        while k > 0 {
+            k = (k - 1) / WAYS;
+            depth += 1;
         }
-        depth(self, 0)
+        depth
     }
-}
-
-/// Appends the node over the consecutive leaves `leaf_ids` (split in four equal runs, each a
-/// leaf or a node built the same way) and returns its index and box. The first call's node, the
-/// root, is node 0.
-fn build(leaf_ids: &[u32], boxes: &[[f64; 4]], nodes: &mut Vec<Node>) -> (u32, [f64; 4]) {
-    let at = nodes.len();
-    nodes.push(Node {
-        sides: [[f64::INFINITY; WAYS], [f64::INFINITY; WAYS], [f64::NEG_INFINITY; WAYS], [f64::NEG_INFINITY; WAYS]],
-        child: [NONE; WAYS],
-        leaves: 0,
-        present: 0,
-    });
-    let mut total = EMPTY;
-    let n = leaf_ids.len();
-    for part in 0..WAYS {
-        let (lo, hi) = (n * part / WAYS, n * (part + 1) / WAYS);
-        if lo == hi {
-            continue;
-        }
-        let (child, b, leaf) = if hi - lo == 1 {
-            (leaf_ids[lo], boxes[leaf_ids[lo] as usize], true)
-        } else {
-            let (id, b) = build(&leaf_ids[lo..hi], boxes, nodes);
-            (id, b, false)
-        };
-        let node = &mut nodes[at];
-        (node.sides[MIN_X][part], node.sides[MIN_Y][part], node.sides[MAX_X][part], node.sides[MAX_Y][part]) =
-            (b[0], b[1], b[2], b[3]);
-        node.child[part] = child;
-        node.leaves |= u8::from(leaf) << part;
-        node.present |= 1 << part;
-        total = union(total, b);
-    }
-    (at as u32, total)
 }
 
 fn bounds_of(points: &[Point]) -> [f64; 4] {
@@ -151,15 +145,16 @@ mod tests {
         let mut stack = vec![(0usize, [f64::NEG_INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::INFINITY])];
         while let Some((n, outer)) = stack.pop() {
             let node = &tree.nodes[n];
-            for i in (0..WAYS).filter(|&i| node.present & (1 << i) != 0) {
+            for i in (0..WAYS).filter(|&i| tree.present[n] & (1 << i) != 0) {
                 let b = [node.sides[MIN_X][i], node.sides[MIN_Y][i], node.sides[MAX_X][i], node.sides[MAX_Y][i]];
                 assert!(b[0] >= outer[0] && b[1] >= outer[1] && b[2] <= outer[2] && b[3] <= outer[3]);
-                if node.leaves & (1 << i) != 0 {
-                    let r = &tree.leaves[node.child[i] as usize];
+                if n >= tree.lowest as usize {
+                    let leaf = WAYS * (n - tree.lowest as usize) + i;
+                    let r = &tree.leaves[leaf];
                     assert_eq!(b, bounds_of(&rings.points[r.start as usize..=r.end as usize]));
-                    reached[node.child[i] as usize] += 1;
+                    reached[leaf] += 1;
                 } else {
-                    stack.push((node.child[i] as usize, b));
+                    stack.push((WAYS * n + 1 + i, b));
                 }
             }
         }

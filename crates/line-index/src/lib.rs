@@ -22,9 +22,12 @@
 //!
 //! Preparation lays the rings out in one vertex array (each ring closed by a repeat of its first
 //! vertex) and builds a four-way bounding-box tree over **runs of 16 consecutive edges** in ring
-//! order (leaves), each inner node grouping four consecutive runs or groups. A leaf's box hugs its
-//! piece of the boundary, so a line meets few of them; a node keeps its four children's boxes
-//! side by side, so they are tested together with straight-line arithmetic.
+//! order (leaves), each node grouping four consecutive runs, or four consecutive nodes, every leaf
+//! at the same depth. A leaf's box hugs its piece of the boundary, so a line meets few of them; a
+//! node keeps its four children's boxes side by side, so they are tested together with
+//! straight-line arithmetic. The nodes are stored as a four-way heap (the children of node `k` are
+//! nodes `4 k + 1` to `4 k + 4`, or on the lowest level four consecutive leaves), so a walk finds
+//! the next node from its parent's test alone, without reading a stored child index.
 //!
 //! Per batch, two branch-free passes first (a segment's fate is random in a batch spread over a
 //! screen, and a per-segment early out mispredicts on a large share of it): zero-length segments
@@ -81,10 +84,11 @@
 //! # Cost and memory
 //!
 //! - **Preparation**: O(n) time for n window edges (one pass to lay out the vertices, one to build
-//!   the tree top-down over the runs); no sorting.
-//! - **Memory**: 16 bytes per vertex (its x and y, held once, in two arrays), one node of 152
-//!   bytes per about three leaves and 8 bytes per leaf: about 22 bytes per edge, 212 KiB at
-//!   10^4 edges (measured by `reproduce beyond-paper`). [`PreparedLineIndex::memory_bytes`]
+//!   the tree bottom-up over the runs); no sorting.
+//! - **Memory**: 16 bytes per vertex (its x and y, held once, in two arrays), one node of 129
+//!   bytes (two cache lines of boxes and a byte of which slots are used) per 2.5 to 3 leaves, and
+//!   8 bytes per leaf: about 20 bytes per edge, 192 KiB at 10^4 edges (measured by
+//!   `reproduce beyond-paper`). [`PreparedLineIndex::memory_bytes`]
 //!   reports it. The size matters beside other work: a window evicted from the caches is read
 //!   back at that cost, which was a third of the time per segment at 10^4 edges in
 //!   `reproduce beyond-paper` while the vertices were also held as points (38 bytes per edge).

@@ -135,9 +135,9 @@ fn larger(a: f64, b: f64) -> f64 {
 mod tests {
     use super::*;
 
-    /// A node whose only child is the unit box.
+    /// A node whose every slot holds the unit box.
     fn unit() -> Node {
-        Node { sides: [[0.0; WAYS], [0.0; WAYS], [1.0; WAYS], [1.0; WAYS]], child: [0; WAYS], leaves: 1, present: 1 }
+        Node { sides: [[0.0; WAYS], [0.0; WAYS], [1.0; WAYS], [1.0; WAYS]] }
     }
 
     fn misses(ax: f64, ay: f64, bx: f64, by: f64) -> bool {
