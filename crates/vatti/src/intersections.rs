@@ -74,12 +74,14 @@ impl Sweep<'_> {
         }
         let mut xtop = std::mem::take(&mut self.xtop);
         xtop.clear();
-        for &id in &self.ael.order {
-            let e = &mut self.ael.edges[id as usize];
+        // Extended from the order's exact-length iterator: no capacity test per edge.
+        let edges = &mut self.ael.edges;
+        xtop.extend(self.ael.order.iter().map(|&id| {
+            let e = &mut edges[id as usize];
             e.next_x = e.x_at(yt);
             e.next_y = yt;
-            xtop.push(TopX { x: e.next_x, magnitude: e.magnitude.x_max });
-        }
+            TopX { x: e.next_x, magnitude: e.magnitude.x_max }
+        }));
         // Most beams have no crossing: then no edge passes its left neighbour, and the
         // insertion sort below would find nothing. Before the first edge that does, the
         // insertion sort would only confirm the order, so it starts there.
