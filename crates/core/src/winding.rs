@@ -18,10 +18,16 @@ pub enum Location {
 /// Counter-clockwise loops count +1. Exact (Sunday's crossing rule with exact orientation).
 pub fn ring_winding(p: Point, ring: &Ring) -> Option<i32> {
     let pts = &ring.points;
-    let n = pts.len();
+    let Some(&last) = pts.last() else { return Some(0) };
     let mut w = 0;
-    for i in 0..n {
-        let (a, b) = (pts[i], pts[(i + 1) % n]);
+    let mut prev = last;
+    for &b in pts {
+        let a = std::mem::replace(&mut prev, b);
+        // Wholly above or below p: neither through p nor crossing its ray (the common case,
+        // decided before the box and orientation tests).
+        if (a.y > p.y && b.y > p.y) || (a.y < p.y && b.y < p.y) {
+            continue;
+        }
         if on_segment(p, Segment::new(a, b)) {
             return None;
         }

@@ -74,22 +74,26 @@ impl Sweep<'_> {
         }
         let mut xtop = std::mem::take(&mut self.xtop);
         xtop.clear();
-        for &id in &self.ael.order {
-            let e = &mut self.ael.edges[id as usize];
+        // Extended from the order's exact-length iterator: no capacity test per edge.
+        let edges = &mut self.ael.edges;
+        xtop.extend(self.ael.order.iter().map(|&id| {
+            let e = &mut edges[id as usize];
             e.next_x = e.x_at(yt);
             e.next_y = yt;
-            xtop.push(TopX { x: e.next_x, magnitude: e.magnitude.x_max });
-        }
+            TopX { x: e.next_x, magnitude: e.magnitude.x_max }
+        }));
         // Most beams have no crossing: then no edge passes its left neighbour, and the
-        // insertion sort below would find nothing.
-        if (1..n).all(|i| !self.left_at_top(i, xtop[i], i - 1, xtop[i - 1], yt)) {
+        // insertion sort below would find nothing. Before the first edge that does, the
+        // insertion sort would only confirm the order, so it starts there.
+        let Some(first) = (1..n).find(|&i| self.left_at_top(i, xtop[i], i - 1, xtop[i - 1], yt)) else {
             self.xtop = xtop;
             return table;
-        }
+        };
         // Sorted edge table: positions in the active edge table, by x at the top.
         let mut st = std::mem::take(&mut self.sorted);
         st.clear();
-        for i in 0..n {
+        st.extend(0..first as u32);
+        for i in first..n {
             let mut j = st.len();
             st.push(i as u32);
             while j > 0 && self.left_at_top(i, xtop[i], st[j - 1] as usize, xtop[st[j - 1] as usize], yt) {
@@ -163,8 +167,10 @@ impl Sweep<'_> {
         }
         // At the beam's bottom every active edge's `curr_x` is its `x_at(yb)`, computed when the
         // scanline was processed: taking it spares two divisions per crossing.
+        // Their x at the top was cached for this beam by `intersection_table`.
         debug_assert!(ea.curr_x == ea.x_at(yb) && eb.curr_x == eb.x_at(yb));
-        let xs = [ea.curr_x, ea.x_at_cached(yt), eb.curr_x, eb.x_at_cached(yt)];
+        debug_assert!(ea.next_y == yt && eb.next_y == yt);
+        let xs = [ea.curr_x, ea.next_x, eb.curr_x, eb.next_x];
         let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y)

@@ -33,7 +33,8 @@
 //! bounds, which is a typical usage of clipping". A third comes from GEOS's overlay: never sweep
 //! what cannot reach the other operand.
 //!
-//! - **Envelope pre-filter** (`envelope`), taken by [`PolygonClipper::clip`] by itself: for ∩
+//! - **Envelope pre-filter** (`envelope`), taken by [`PolygonClipper::clip`] by itself for
+//!   operands of more than 64 edges in all (smaller ones are swept whole, which is cheaper): for ∩
 //!   the subject is cut to the clip's bounding box (grown by an eighth), then the clip to the
 //!   cut subject's; for − the clip to the subject's. A stretch of edges that misses the box is
 //!   replaced by a path around it and the loops it wound around the box are added back as
@@ -187,6 +188,17 @@ use crate::sweep::Sweep;
 use crate::touches::Touches;
 use crate::turns::Turns;
 
+/// Operands of at most this many edges in all are swept whole, not cut to each other's boxes
+/// first: at 4-40 edges the cut cost more than the edges it removed saved (callgrind: grid 20 ∩
+/// 70.9 K to 43.2 K instructions per call, star 20 ∩ 65.3 K to 56.7 K), and its box paths
+/// and border loops add edges of their own.
+const SWEPT_WHOLE_UP_TO: usize = 64;
+
+/// Edges (vertices) of all rings.
+fn edge_count(p: &Polygons) -> usize {
+    p.rings.iter().map(|r| r.points.len()).sum()
+}
+
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
 /// operands, polygon or trapezoid output.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -206,6 +218,22 @@ impl Vatti {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
         Ok(Vatti::sweep_polygons(subject, clip, op, fill))
+    }
+
+    /// `subject op clip` with the rectangle path and the envelope pre-filter wherever they
+    /// apply, small operands included (which [`PolygonClipper::clip`] sweeps whole). The same
+    /// region; for comparing the paths.
+    pub fn clip_prefiltered(
+        &self,
+        subject: &Polygons,
+        clip: &Polygons,
+        op: BoolOp,
+        fill: FillRule,
+    ) -> Result<Polygons, ClipError> {
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        let (a, b, op) = Vatti::reduced(subject, clip, clip.bounds(), None, op, fill);
+        Ok(Vatti::sweep_polygons(&a, &b, op, fill))
     }
 
     /// What the sweep is given for valid operands: with one rectangle as the clip of ∩, the
@@ -228,7 +256,23 @@ impl Vatti {
         envelope::prefilter(subject, clip, clip_bounds, clip_blocks, op, fill)
     }
 
-    /// Validates both operands and reduces them ([`Vatti::reduced`]).
+    /// [`Vatti::reduced`] of valid operands, except that small ones (at most
+    /// [`SWEPT_WHOLE_UP_TO`] edges in all) skip the envelope pre-filter: swept whole.
+    fn reduced_unless_small<'a>(
+        subject: &'a Polygons,
+        clip: &'a Polygons,
+        op: BoolOp,
+        fill: FillRule,
+    ) -> (Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp) {
+        if edge_count(subject) + edge_count(clip) <= SWEPT_WHOLE_UP_TO
+            && rect_path::rectangle_clip(clip, op, fill).is_none()
+        {
+            return (Cow::Borrowed(subject), Cow::Borrowed(clip), op);
+        }
+        Vatti::reduced(subject, clip, clip.bounds(), None, op, fill)
+    }
+
+    /// Validates both operands and reduces them ([`Vatti::reduced_unless_small`]).
     fn filtered<'a>(
         subject: &'a Polygons,
         clip: &'a Polygons,
@@ -237,7 +281,7 @@ impl Vatti {
     ) -> Result<(Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp), ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        Ok(Vatti::reduced(subject, clip, clip.bounds(), None, op, fill))
+        Ok(Vatti::reduced_unless_small(subject, clip, op, fill))
     }
 
     /// The sweep's conventional rings of valid operands, repaired where rounding broke their form.
@@ -312,7 +356,7 @@ impl PolygonClipper for Vatti {
         if let Some(out) = far_splice::splice_big_ring(subject, clip, true, op, fill) {
             return Ok(out);
         }
-        let (a, b, op) = Vatti::reduced(subject, clip, clip.bounds(), None, op, fill);
+        let (a, b, op) = Vatti::reduced_unless_small(subject, clip, op, fill);
         Ok(Vatti::sweep_polygons(&a, &b, op, fill))
     }
 

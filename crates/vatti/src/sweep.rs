@@ -403,11 +403,11 @@ impl<'a> Sweep<'a> {
         match class {
             Crossing::Nothing => {}
             Crossing::AToB => {
-                self.add_point(a, p);
+                self.add_point_beside(a, b, p);
                 self.hand_over(a, b);
             }
             Crossing::BToA => {
-                self.add_point(b, p);
+                self.add_point_beside(b, a, p);
                 self.hand_over(b, a);
             }
             Crossing::LocalMin { b_is_left } => {
@@ -558,6 +558,24 @@ impl<'a> Sweep<'a> {
         }
     }
 
+    /// [`Sweep::add_point`] to `a`, whose neighbour `b` passes through `p` too and needs no point
+    /// of its own there (it holds no chain, or `a`'s, which gets `p` now): `a`'s search would
+    /// only pass `b`, so it starts beyond the pair, with either edge's line for the coincidence
+    /// test (as [`Sweep::node_pair_neighbours`]).
+    fn add_point_beside(&mut self, a: u32, b: u32, p: Point) {
+        let (rec, rec_b) = (self.ael.get(a).outrec, self.ael.get(b).outrec);
+        let (pa, pb) = (self.ael.pos(a), self.ael.pos(b));
+        let (lo, hi) = (pa.min(pb), pa.max(pb));
+        if rec == NONE || (rec_b != NONE && rec_b != rec) || hi != lo + 1 {
+            self.add_point(a, p);
+            return;
+        }
+        let left = self.is_left(a);
+        self.out.add(rec, left, p);
+        let rounded = self.rounded_crossing && !self.is_vertex_of(a, p);
+        self.node_outward(a, b, lo, hi, p, rounded);
+    }
+
     /// [`Sweep::add_point`] to `a` and then to `b`, both contributing, with one neighbour
     /// search for the pair.
     fn add_point_both(&mut self, a: u32, b: u32, p: Point) {
@@ -619,7 +637,7 @@ impl<'a> Sweep<'a> {
             return;
         }
         if ra == rb {
-            self.add_point(a, p);
+            self.add_point_beside(a, b, p);
             self.out.close(ra);
         } else {
             self.add_point_both(a, b, p);

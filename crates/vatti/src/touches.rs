@@ -150,17 +150,24 @@ impl Touches {
     }
 
     /// The distinct points of one run of equal y (`run`, emptied: x and point index), the points
-    /// shared in it, and its horizontal edges with vertices inside.
+    /// shared in it, and its horizontal edges with vertices inside. Most runs are one point,
+    /// named here without a call.
+    #[inline]
     fn take_run(&mut self, raw: &RawRings, ring: &[u32], run: &mut Vec<(f64, u32)>) {
-        if let [(_, k)] = run[..] {
-            self.ids[k as usize] = self.distinct.len() as u32;
-            self.distinct.push(raw.points[k as usize]);
-            run.clear();
-            return;
+        match run[..] {
+            [] => {}
+            [(_, k)] => {
+                self.ids[k as usize] = self.distinct.len() as u32;
+                self.distinct.push(raw.points[k as usize]);
+                run.clear();
+            }
+            _ => self.take_long_run(raw, ring, run),
         }
-        if run.is_empty() {
-            return;
-        }
+    }
+
+    /// [`Touches::take_run`] of two points or more.
+    #[inline(never)]
+    fn take_long_run(&mut self, raw: &RawRings, ring: &[u32], run: &mut Vec<(f64, u32)>) {
         run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
         for equal in run.chunk_by(|a, b| a.0 == b.0) {
             self.name_point(raw, ring, equal.iter().map(|&(_, k)| k));

@@ -105,16 +105,21 @@ impl Turns {
             // in (rare; left to the rebuild). Else each way in turns to the first way out
             // clockwise from it (the rebuild's rule), and those are one to one when ways in and
             // out alternate around the point.
+            // (Neighbours around the circle without `%`: a division per way cost a sixth of this.)
             let n = ways.len();
-            if !sorted_apart(&mut ways, pv) || (0..n).any(|i| ways[i].out == ways[(i + 1) % n].out) {
+            if !sorted_apart(&mut ways, pv)
+                || ways.windows(2).any(|w| w[0].out == w[1].out)
+                || ways[0].out == ways[n - 1].out
+            {
                 self.ways = ways;
                 return false;
             }
-            for i in 0..n {
-                let (way_in, way_out) = (ways[i], ways[(i + n - 1) % n]);
-                if !way_in.out {
-                    self.pick[way_in.visit as usize] = way_out.visit;
+            let mut before = ways[n - 1];
+            for &way in ways.iter() {
+                if !way.out {
+                    self.pick[way.visit as usize] = before.visit;
                 }
+                before = way;
             }
         }
         self.ways = ways;
