@@ -42,6 +42,7 @@ pub struct ReadmeDoctests;
 mod area;
 mod batch_filter;
 mod clipper;
+mod cluster_snap;
 mod curve_region;
 mod ellipse;
 mod error;
@@ -68,6 +69,7 @@ pub use clipper::{
     LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
     WindowKind,
 };
+pub use cluster_snap::{SNAP_ULPS, snap_clusters};
 pub use curve_region::{BoundaryPiece, CurveRegion};
 pub use ellipse::{Ellipse, EllipseArc, MIN_AXIS_RATIO, MIN_RADIUS_TO_CENTRE};
 pub use error::{

@@ -112,7 +112,7 @@
 //!   miss), the clean-up also splits slanted edges at the vertices on them, so rounded edges
 //!   through exact vertices cancel or are reported like horizontal ones. Output coordinates
 //!   below `clip_core::MIN_COORDINATE` become 0 before a repair sweep, and points within
-//!   `cluster_snap::SNAP_ULPS` ulps of each other are merged, with edges passing that close routed
+//!   `clip_core::SNAP_ULPS` ulps of each other are merged, with edges passing that close routed
 //!   through them (as snap rounding does), so that crossings rounded an ulp or two apart (edges
 //!   nearly through a vertex and nearly parallel to its edges) do not leave rings crossing there.
 //!   Known limit: a larger output broken between rings that share no point and with no near miss
@@ -147,7 +147,6 @@ pub struct ReadmeDoctests;
 mod active;
 mod bounds;
 mod cleanup;
-mod cluster_snap;
 mod contribution;
 mod edge_blocks;
 mod envelope;
@@ -181,7 +180,6 @@ use clip_core::{
 pub use crate::prepared::PreparedClip;
 pub use crate::prepared_reuse::VattiPrepared;
 
-use crate::cleanup::CleanRings;
 use crate::contribution::Rules;
 use crate::edge_blocks::EdgeBlocks;
 use crate::raw_rings::RawRings;
@@ -252,31 +250,24 @@ impl Vatti {
         {
             return out;
         }
-        let mut rings = Vatti::sweep_clean(subject, clip, op, fill, true);
+        let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, strict: bool| {
+            Vatti::sweep(a, b, op, fill, false, |rings, touches, turns, _| {
+                cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
+                    form_check::raw_near_rounding(a, b, rings)
+                })
+            })
+        };
+        let mut rings = clean(subject, clip, op, fill, true);
         // The full check only judges the sweep's own output: the repair's sweeps are judged by the
         // clean-up alone, so a check stricter than the conventions cannot make it loop.
         rings.broken_form = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
-        Polygons::new(repair::join_overlapping(rings, Vatti::repair_sweep))
-    }
-
-    /// The sweep's raw rings of `a op b` through the clean-up (`strict`: see
-    /// `cleanup::conventional_rings_checked`).
-    fn sweep_clean(a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, strict: bool) -> CleanRings {
-        Vatti::sweep(a, b, op, fill, false, |rings, touches, turns, _| {
-            cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
-                form_check::raw_near_rounding(a, b, rings)
-            })
-        })
-    }
-
-    /// One repair sweep: `out`, a broken output, swept alone as its union under non-zero and
-    /// judged by the clean-up (not strict).
-    fn repair_sweep(out: &Polygons) -> Result<CleanRings, ClipError> {
-        // Rounded output can fall below the coordinates the sweep takes: such coordinates
-        // become 0 (a move far below any rounding of the other coordinates), then validate.
-        let out = repair::flushed_below_min(out);
-        validate_polygons(&out, Operand::Subject)?;
-        Ok(Vatti::sweep_clean(&out, &Polygons::default(), BoolOp::Union, FillRule::NonZero, false))
+        Polygons::new(repair::join_overlapping(rings, |out| {
+            // Rounded output can fall below the coordinates the sweep takes: such coordinates
+            // become 0 (a move far below any rounding of the other coordinates), then validate.
+            let out = repair::flushed_below_min(out);
+            validate_polygons(&out, Operand::Subject)?;
+            Ok(clean(&out, &Polygons::default(), BoolOp::Union, FillRule::NonZero, false))
+        }))
     }
 
     /// The sweep's trapezoids of valid operands.

@@ -6,16 +6,15 @@
 //! positive rule covers the same region once. Its vertices are already the output's, and rings
 //! that only share edges and vertices meet in no new crossing, so this sweep rounds nothing more
 //! in the common case; it is repeated while overlaps remain, at most [`MAX_PASSES`] times. Before
-//! each sweep, points left a few ulps apart are merged and edges passing that close routed through
-//! them (`cluster_snap`): swept as they are, the crossings of edges an ulp apart round to new
-//! points an ulp apart, and rings could be left crossing there after every sweep.
+//! each sweep, points left a few ulps apart are merged and edges passing that close are routed
+//! through them (`clip_core::snap_clusters`): swept as they are, the crossings of edges an ulp
+//! apart round to new points an ulp apart, and rings could be left crossing there every time.
 
 use std::borrow::Cow;
 
-use clip_core::{ClipError, MIN_COORDINATE, Point, Polygons, Ring};
+use clip_core::{ClipError, MIN_COORDINATE, Point, Polygons, Ring, snap_clusters};
 
 use crate::cleanup::CleanRings;
-use crate::cluster_snap;
 use crate::simplify::simplify_ring;
 
 /// Sweeps of the output at most: each one only runs when the last left overlapping rings. Where
@@ -24,9 +23,9 @@ use crate::simplify::simplify_ring;
 pub(crate) const MAX_PASSES: usize = 8;
 
 /// The clean rings, joined by `union_positive` (the output's union with nothing under the
-/// positive rule, of the rings snapped by `cluster_snap::snapped`) while two of them run the same
-/// way along an edge. A sweep that refuses the output (invalid input even after
-/// [`flushed_below_min`]) leaves it as it is.
+/// positive rule, of the rings [`snapped`]) while two of them run the same way along an edge. A
+/// sweep that refuses the output (invalid input even after [`flushed_below_min`]) leaves it as
+/// it is.
 pub(crate) fn join_overlapping(
     mut clean: CleanRings,
     union_positive: impl Fn(&Polygons) -> Result<CleanRings, ClipError>,
@@ -36,13 +35,21 @@ pub(crate) fn join_overlapping(
             break;
         }
         let rings = std::mem::take(&mut clean.rings);
-        let out = Polygons::new(cluster_snap::snapped(&rings).unwrap_or(rings));
+        let out = Polygons::new(snapped(&rings).unwrap_or(rings));
         match union_positive(&out) {
             Ok(joined) => clean = joined,
             Err(_) => return out.rings,
         }
     }
     clean.rings
+}
+
+/// `rings` snapped by `clip_core::snap_clusters`, simplified, without the rings that this leaves
+/// without area; `None` when there was nothing to snap. Out of line: it runs only in a repair.
+#[inline(never)]
+fn snapped(rings: &[Ring]) -> Option<Vec<Ring>> {
+    let snapped = snap_clusters(rings)?;
+    Some(snapped.iter().map(|r| simplify_ring(r)).filter(|r| r.len() >= 3).map(Ring::new).collect())
 }
 
 /// `rings` with every coordinate below `clip_core::MIN_COORDINATE` in magnitude (a rounded
@@ -70,11 +77,24 @@ pub(crate) fn flushed_below_min(rings: &Polygons) -> Cow<'_, Polygons> {
 mod tests {
     use std::cell::Cell;
 
-    use clip_core::FillRule;
+    use clip_core::{BoolOp, FillRule};
     use clip_oracle::polygon::{check_valid_output, region_area};
 
     use super::*;
-    use crate::Vatti;
+    use crate::{Vatti, cleanup};
+
+    /// One repair sweep as `Vatti::sweep_polygons` runs it: the rings alone, their union under
+    /// non-zero, judged by the clean-up (not strict).
+    fn repair_sweep(out: &Polygons) -> Result<CleanRings, ClipError> {
+        Ok(Vatti::sweep(
+            out,
+            &Polygons::default(),
+            BoolOp::Union,
+            FillRule::NonZero,
+            false,
+            |rings, touches, turns, _| cleanup::conventional_rings_checked(rings, touches, turns, false, || true),
+        ))
+    }
 
     /// The sweep's broken xor of `fuzz/regressions/vatti/spike-nearly-through-a-vertex-visited-twice`
     /// (rings 1 and 2 share rounded crossings an ulp apart near the input vertex (0.865625,
@@ -111,14 +131,14 @@ mod tests {
         let broken = broken_xor_near_a_vertex_visited_twice();
         // Swept as it is, the union rounds new crossings an ulp from the old ones and leaves two
         // rings crossing there, which the clean-up does not see.
-        let unsnapped = Vatti::repair_sweep(&broken).expect("valid rings");
+        let unsnapped = repair_sweep(&broken).expect("valid rings");
         assert!(!unsnapped.broken_form);
         assert!(check_valid_output(&Polygons::new(unsnapped.rings)).is_err(), "rings crossing");
         // Snapped first, one sweep gives valid rings covering the same region.
         let sweeps = Cell::new(0);
         let joined = join_overlapping(CleanRings { rings: broken.rings.clone(), broken_form: true }, |out| {
             sweeps.set(sweeps.get() + 1);
-            Vatti::repair_sweep(out)
+            repair_sweep(out)
         });
         assert_eq!(sweeps.get(), 1);
         let joined = Polygons::new(joined);

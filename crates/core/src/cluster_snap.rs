@@ -1,24 +1,25 @@
-//! Merges output points a few ulps apart into one and routes edges passing that close through it.
+//! Merges ring points a few ulps apart into one and routes edges passing that close through it.
 //!
 //! Where edges nearly pass through a vertex and nearly parallel to its edges, their crossings round
-//! to points an ulp or two apart, with edges running between them on either side: rings can cross
-//! there though each rounded point is within rounding of where it belongs. Another sweep of such
-//! an output rounds new crossings among the same edges (found by the `vatti` fuzz target near
-//! (0.87, 7.34) and (5e5, 4e6)). As snap rounding does (Hobby, "Practical segment intersection
-//! with finite precision output", Computational Geometry 13(4), 1999), every point of such a
-//! cluster becomes one point and every edge passing within the cluster's reach goes through it,
-//! so the rings only meet there and the next sweep has nothing to round near it. Points move by at
-//! most [`SNAP_ULPS`] ulps of their magnitude per merge, far within the oracle's tolerance.
+//! to points an ulp or two apart, with edges running between them on either side: a clipper's
+//! rings can cross there though each rounded point is within rounding of where it belongs, and
+//! sweeping them again rounds new crossings among the same edges (found by the `vatti` fuzz target
+//! near (0.87, 7.34) and (5e5, 4e6)). As snap rounding does (J. D. Hobby, *Practical segment
+//! intersection with finite precision output*, Computational Geometry: Theory and Applications
+//! 13(4):199-214, 1999), every point of such a cluster becomes one point and every edge passing
+//! within reach of it goes through it, so rings meet there only at that point. Unlike snap
+//! rounding, points are not moved to a grid: only points within [`SNAP_ULPS`] ulps of another move
+//! (onto the cluster's lowest point), and only edges that close bend. Limits: clusters chain, so a
+//! long run of points each that close to the next becomes one point; and an edge is bent at most
+//! a few rounds, each by [`SNAP_ULPS`] ulps of a merged point.
 
-use clip_core::predicates::orient2d;
-use clip_core::{Point, Ring};
-
-use crate::simplify::simplify_ring;
+use crate::predicates::orient2d;
+use crate::{Point, Ring};
 
 /// How near, in ulps of the larger coordinate magnitude of a point, another point must be (in
 /// each coordinate) to merge with it, and an edge to be routed through it. Rounded crossings of
 /// nearly parallel edges sit a few ulps from each other: the fuzz inputs' clusters span 3.
-pub(crate) const SNAP_ULPS: f64 = 4.0;
+pub const SNAP_ULPS: f64 = 4.0;
 
 /// Rounds of routing edges through merged points at most: a routed edge moves by a reach at
 /// most and can pass near another merged point only within that.
@@ -33,11 +34,12 @@ fn reach(p: Point) -> f64 {
     SNAP_ULPS * (binade * f64::EPSILON).max(f64::MIN_POSITIVE)
 }
 
-/// `rings` with every cluster of points within [`reach`] of each other (in both coordinates,
-/// chained) made one point, and every edge passing within reach of such a merged point (strictly
-/// between its ends) split there; rings are then simplified, and those left without area go.
-/// `None` when no two distinct points are that close: there is nothing to snap.
-pub(crate) fn snapped(rings: &[Ring]) -> Option<Vec<Ring>> {
+/// The points of `rings` with every cluster of points within [`SNAP_ULPS`] ulps of each other
+/// (in both coordinates, chained) made one point, and every edge passing that close to such a
+/// merged point (strictly between its ends) split there. Rings keep their order; repeated and
+/// collinear points are left for the caller to drop. `None` when no two distinct points are that
+/// close: there is nothing to snap.
+pub fn snap_clusters(rings: &[Ring]) -> Option<Vec<Vec<Point>>> {
     let points: Vec<Point> = rings.iter().flat_map(|r| r.points.iter().copied()).collect();
     let (target, merged) = merge_clusters(&points)?;
     let mut at = 0;
@@ -54,7 +56,7 @@ pub(crate) fn snapped(rings: &[Ring]) -> Option<Vec<Ring>> {
             break;
         }
     }
-    Some(out.iter().map(|r| simplify_ring(r)).filter(|r| r.len() >= 3).map(Ring::new).collect())
+    Some(out)
 }
 
 /// For each of `points`, the index of the point its cluster merges into, and the merged points
@@ -174,6 +176,10 @@ fn passes_within_reach(a: Point, b: Point, h: Point) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn snapped(rings: &[Ring]) -> Option<Vec<Ring>> {
+        snap_clusters(rings).map(|rings| rings.into_iter().map(Ring::new).collect())
+    }
 
     fn ring(points: &[(f64, f64)]) -> Ring {
         Ring::new(points.iter().map(|&(x, y)| Point::new(x, y)).collect())
