@@ -63,7 +63,7 @@ mod trapezoid;
 mod winding;
 mod window_rings;
 
-pub use area::signed_area;
+pub use area::{runs_counter_clockwise, signed_area};
 pub use batch_filter::retain_indices;
 pub use clipper::{
     LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
