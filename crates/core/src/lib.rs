@@ -42,6 +42,7 @@ pub struct ReadmeDoctests;
 mod area;
 mod batch_filter;
 mod clipper;
+mod cluster_snap;
 mod curve_region;
 mod ellipse;
 mod error;
@@ -62,12 +63,13 @@ mod trapezoid;
 mod winding;
 mod window_rings;
 
-pub use area::signed_area;
+pub use area::{runs_counter_clockwise, signed_area};
 pub use batch_filter::retain_indices;
 pub use clipper::{
     LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
     WindowKind,
 };
+pub use cluster_snap::{SNAP_ULPS, snap_clusters};
 pub use curve_region::{BoundaryPiece, CurveRegion};
 pub use ellipse::{Ellipse, EllipseArc, MIN_AXIS_RATIO, MIN_RADIUS_TO_CENTRE};
 pub use error::{

@@ -44,6 +44,12 @@ impl Ring {
         crate::area::signed_area(&self.points)
     }
 
+    /// Whether the ring (not crossing itself) runs counter-clockwise, decided exactly where its
+    /// shoelace sum is within rounding: see [`crate::runs_counter_clockwise`].
+    pub fn runs_counter_clockwise(&self) -> bool {
+        crate::area::runs_counter_clockwise(&self.points)
+    }
+
     /// The bounding box.
     pub fn bounds(&self) -> Rect {
         Rect::bounding(&self.points)

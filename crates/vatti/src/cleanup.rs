@@ -106,12 +106,13 @@ fn walk_turns(
 }
 
 /// `points` as a ring without repeated or collinear vertices, pushed onto `out` unless that
-/// leaves fewer than three; its index goes to `clockwise` when its area is not positive.
+/// leaves fewer than three; its index goes to `clockwise` unless it runs counter-clockwise, decided
+/// exactly where its area is rounding (a clockwise sliver's rounded area can come out positive).
 fn push_simplified(points: &[Point], out: &mut Vec<Ring>, clockwise: &mut Vec<usize>) {
     let s = simplify_ring(points);
     if s.len() >= 3 {
         let ring = Ring::new(s);
-        if ring.signed_area() <= 0.0 {
+        if !ring.runs_counter_clockwise() {
             clockwise.push(out.len());
         }
         out.push(ring);

@@ -95,7 +95,7 @@ fn nested_against_orientation(rings: &[Ring]) -> bool {
                 ring_winding(p, other).map(|w| d + usize::from(w != 0))
             })
         });
-        depth.is_none_or(|d| (d % 2 == 0) != (ring.signed_area() > 0.0))
+        depth.is_none_or(|d| (d % 2 == 0) != ring.runs_counter_clockwise())
     })
 }
 

@@ -112,11 +112,12 @@
 //!   `repair::MAX_PASSES` times. Where the sweep left a point near an edge but off it (a near
 //!   miss), the clean-up also splits slanted edges at the vertices on them, so rounded edges
 //!   through exact vertices cancel or are reported like horizontal ones. Output coordinates
-//!   below `clip_core::MIN_COORDINATE` become 0 before a repair sweep. Known limit: a larger
-//!   output broken between rings that share no point and with no near miss is not found, and
-//!   where rounded crossings cluster within an ulp or two (edges nearly through a vertex and
-//!   nearly parallel to its edges) the repair's own sweep can leave rings crossing at one of them
-//!   (`fuzz/known-issues/vatti-rings-crossing-after-repair/`); the region is right.
+//!   below `clip_core::MIN_COORDINATE` become 0 before a repair sweep, and points within
+//!   `clip_core::SNAP_ULPS` ulps of each other are merged, with edges passing that close routed
+//!   through them (as snap rounding does), so that crossings rounded an ulp or two apart (edges
+//!   nearly through a vertex and nearly parallel to its edges) do not leave rings crossing there.
+//!   Known limit: a larger output broken between rings that share no point and with no near miss
+//!   is not found.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.

@@ -361,7 +361,7 @@ fn check_orientation(output: &Polygons, snap: f64, inputs: Option<[&Polygons; 2]
         let ring = &output.rings[r];
         let area = ring.signed_area();
         let want_ccw = depth % 2 == 0;
-        let ccw = turns_counter_clockwise(ring);
+        let ccw = ring.runs_counter_clockwise();
         if ccw != want_ccw && !inputs.is_some_and(|i| rounding_may_invert(ring, snap, i, &mut input_points)) {
             let role = if want_ccw { "an outer ring (depth" } else { "a hole (depth" };
             let turn = if ccw { "counter-clockwise" } else { "clockwise" };
@@ -369,37 +369,6 @@ fn check_orientation(output: &Polygons, snap: f64, inputs: Option<[&Polygons; 2]
         }
     }
     Ok(())
-}
-
-/// Whether a ring that does not cross itself runs counter-clockwise: by the sign of its shoelace
-/// sum (taken from its first vertex) where that is clearly beyond the sum's rounding; else by the
-/// exact turn at its lowest (then leftmost) vertex, where a simple ring turns its own way. (Found
-/// by the `vatti` fuzz target: a triangle with vertices near 1e140 and 1e15 whose exact area,
-/// 2e155, is far below the rounding of its shoelace terms. The sum comes first because a ring that
-/// is simple only up to the snap distance, with a loop an ulp wide at its lowest vertex, may turn
-/// the wrong way there.)
-fn turns_counter_clockwise(ring: &Ring) -> bool {
-    let p = &ring.points;
-    let Some(&o) = p.first() else { return false };
-    let (mut sum, mut size) = (0.0, 0.0);
-    for (i, a) in p.iter().enumerate() {
-        let b = p[(i + 1) % p.len()];
-        let (l, r) = ((a.x - o.x) * (b.y - o.y), (b.x - o.x) * (a.y - o.y));
-        sum += l - r;
-        size += l.abs() + r.abs();
-    }
-    // Each term and each addition rounds by at most an ulp of the running size.
-    if sum.abs() > 4.0 * (p.len() as f64 + 2.0) * f64::EPSILON * size {
-        return sum > 0.0;
-    }
-    let lowest = (0..p.len()).min_by(|&i, &j| p[i].y.total_cmp(&p[j].y).then(p[i].x.total_cmp(&p[j].x)));
-    let Some(i) = lowest else { return false };
-    let (prev, next) = (p[(i + p.len() - 1) % p.len()], p[(i + 1) % p.len()]);
-    match orient(prev, p[i], next) {
-        Orientation::CounterClockwise => true,
-        Orientation::Clockwise => false,
-        Orientation::Collinear => sum > 0.0,
-    }
 }
 
 /// For each ring, how many other rings hold it (rings that do not cross). One exact winding
