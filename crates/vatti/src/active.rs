@@ -77,9 +77,18 @@ impl Edge {
     /// Winding numbers of the region just right of this edge.
     #[inline]
     pub(crate) fn wind_right(&self) -> [i32; 2] {
-        let mut w = self.wind_left;
-        w[self.kind as usize] += self.wind_dx;
-        w
+        self.crossed(self.wind_left)
+    }
+
+    /// Winding numbers `w` after crossing this edge left to right. Both lanes are computed, none
+    /// stored by index: a 4-byte store into the pair by a variable index, read back as 8 bytes,
+    /// defeats store forwarding and stalled `Sweep::cross` (about a quarter of scribble 20 ∩'s
+    /// time in `perf`, under 1 % of its instructions).
+    #[inline]
+    pub(crate) fn crossed(&self, w: [i32; 2]) -> [i32; 2] {
+        // `kind` is SUBJECT (0) or CLIP (1).
+        let clip = i32::from(self.kind != 0);
+        [w[0] + self.wind_dx * (1 - clip), w[1] + self.wind_dx * clip]
     }
 
     /// x where the edge crosses height `y`: exact at the ends, and correctly rounded when the

@@ -4,6 +4,7 @@
 use clip_core::{Point, Polygons};
 
 use crate::simplify::simplify_ring_into;
+use crate::small_sort::insertion_sorted_by;
 
 /// "No index" for the u32 links of the sweep's arenas.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -59,9 +60,12 @@ impl Bounds {
         self.ring = simple;
         let vertices = &self.vertices;
         // Ties in vertex order, as a stable sort would leave them.
-        self.minima.sort_unstable_by(|p, q| {
+        let by_y = |p: &LocalMinimum, q: &LocalMinimum| {
             vertices[p.vertex as usize].pt.y.total_cmp(&vertices[q.vertex as usize].pt.y).then(p.vertex.cmp(&q.vertex))
-        });
+        };
+        if !insertion_sorted_by(&mut self.minima, |p, q| by_y(p, q).is_lt()) {
+            self.minima.sort_unstable_by(by_y);
+        }
     }
 
     /// Points the simplification buffer has room for.

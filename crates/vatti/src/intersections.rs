@@ -7,6 +7,7 @@ use clip_core::predicates::{Orientation, orient};
 
 use crate::active::ROUNDING;
 use crate::scanbeam::height_key;
+use crate::small_sort::insertion_sorted_by;
 use crate::sweep::Sweep;
 
 /// An entry of the intersection table: `left` precedes `right` in the active edge table.
@@ -108,7 +109,9 @@ impl Sweep<'_> {
         self.xtop = xtop;
         self.sorted = st;
         // By height, ties in the order found.
-        table.sort_by_key(|a| a.y_key);
+        if !insertion_sorted_by(&mut table, |a, b| a.y_key < b.y_key) {
+            table.sort_by_key(|a| a.y_key);
+        }
         table
     }
 

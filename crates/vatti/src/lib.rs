@@ -165,6 +165,7 @@ mod scanbeam;
 mod scratch;
 mod simple_ring;
 mod simplify;
+mod small_sort;
 mod star_shaped;
 mod sweep;
 mod touches;

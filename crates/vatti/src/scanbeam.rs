@@ -1,6 +1,7 @@
 //! The scanbeam table (the paper's SBT): every vertex height, sorted once and deduplicated.
 
 use crate::bounds::Vertex;
+use crate::small_sort::insertion_sorted_by;
 
 /// The scanlines of one sweep, bottom to top. Vatti marks an edge's top as the edge becomes
 /// active (MarkSBT); every vertex of a simplified ring is a local minimum or the top of an edge
@@ -13,9 +14,6 @@ pub(crate) struct Scanbeams {
     /// Index of the first height not yet passed.
     next: usize,
 }
-
-/// Up to this many heights the unstable sort is the cheaper (measured with callgrind).
-const SMALL: usize = 64;
 
 /// Heights kept between clips at most (a large buffer is freed when its sweep ends).
 const KEEP_AT_MOST: usize = 4096;
@@ -38,10 +36,9 @@ impl Scanbeams {
     pub(crate) fn rebuild(&mut self, vertices: &[Vertex]) {
         self.keys.clear();
         self.keys.extend(vertices.iter().map(|v| height_key(v.pt.y)));
-        if self.keys.len() <= SMALL {
-            self.keys.sort_unstable();
-        } else {
-            // Merges the rings' monotone runs (each bound is one) instead of sorting from scratch.
+        // Few heights: the small insertion sort (less code to load than the library's). Many:
+        // the stable sort merges the rings' monotone runs (each bound is one).
+        if !insertion_sorted_by(&mut self.keys, |a, b| a < b) {
             self.keys.sort();
         }
         self.keys.dedup();

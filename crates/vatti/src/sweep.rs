@@ -391,10 +391,8 @@ impl<'a> Sweep<'a> {
         let (ea, eb) = (self.ael.get(a), self.ael.get(b));
         let wl = ea.wind_left;
         let mid = ea.wind_right();
-        let mut right = mid;
-        right[eb.kind as usize] += eb.wind_dx;
-        let mut mid_after = wl;
-        mid_after[eb.kind as usize] += eb.wind_dx;
+        let right = eb.crossed(mid);
+        let mid_after = eb.crossed(wl);
         let r = self.rules;
         let class = classify(r.inside(wl), r.inside(mid), r.inside(right), r.inside(mid_after));
         self.ael.get_mut(b).wind_left = wl;

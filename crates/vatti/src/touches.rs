@@ -21,6 +21,7 @@ use clip_core::predicates::{Orientation, orient};
 
 use crate::bounds::NONE;
 use crate::raw_rings::RawRings;
+use crate::small_sort::insertion_sorted_by;
 
 /// A horizontal edge (`ring`, `edge`: the edge from the ring's vertex `edge` to the next) with
 /// vertices strictly inside it: their point ids in the edge's direction.
@@ -168,7 +169,9 @@ impl Touches {
     /// [`Touches::take_run`] of two points or more.
     #[inline(never)]
     fn take_long_run(&mut self, raw: &RawRings, ring: &[u32], run: &mut Vec<(f64, u32)>) {
-        run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        if !insertion_sorted_by(run, |a, b| a.0.total_cmp(&b.0).is_lt()) {
+            run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        }
         for equal in run.chunk_by(|a, b| a.0 == b.0) {
             self.name_point(raw, ring, equal.iter().map(|&(_, k)| k));
         }
