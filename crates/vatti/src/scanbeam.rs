@@ -15,8 +15,9 @@ pub(crate) struct Scanbeams {
     next: usize,
 }
 
-/// Heights kept between clips at most (a large buffer is freed when its sweep ends).
-const KEEP_AT_MOST: usize = 4096;
+/// Heights kept between clips at most (a large buffer is freed when its sweep ends); as many as
+/// a 10^4-vertex clip has, whose other buffers `scratch` keeps too.
+const KEEP_AT_MOST: usize = 1 << 15;
 
 /// `f64::total_cmp`'s order as a signed integer: cheaper to sort by than the floats.
 #[inline]
