@@ -88,5 +88,5 @@ pub use rect::Rect;
 pub use ring::Ring;
 pub use segment::Segment;
 pub use trapezoid::Trapezoid;
-pub use winding::{Location, locate, ring_winding, winding_number};
+pub use winding::{Location, edge_winding, locate, ring_winding, winding_number};
 pub use window_rings::WindowRings;

@@ -28,18 +28,25 @@ pub fn ring_winding(p: Point, ring: &Ring) -> Option<i32> {
         if (a.y > p.y && b.y > p.y) || (a.y < p.y && b.y < p.y) {
             continue;
         }
-        if on_segment(p, Segment::new(a, b)) {
-            return None;
-        }
-        if a.y <= p.y {
-            if b.y > p.y && orient(a, b, p) == Orientation::CounterClockwise {
-                w += 1;
-            }
-        } else if b.y <= p.y && orient(a, b, p) == Orientation::Clockwise {
-            w -= 1;
-        }
+        w += edge_winding(p, a, b)?;
     }
     Some(w)
+}
+
+/// What the edge from `a` to `b` adds to a ring's winding number around `p` (+1 where it
+/// crosses the rightward ray from `p` upwards, −1 downwards, else 0), or `None` when `p` lies on
+/// it: one step of [`ring_winding`], for callers that visit edges in another order (a pass of
+/// many points sorted by y). Exact.
+#[inline]
+pub fn edge_winding(p: Point, a: Point, b: Point) -> Option<i32> {
+    if on_segment(p, Segment::new(a, b)) {
+        return None;
+    }
+    Some(if a.y <= p.y {
+        i32::from(b.y > p.y && orient(a, b, p) == Orientation::CounterClockwise)
+    } else {
+        -i32::from(b.y <= p.y && orient(a, b, p) == Orientation::Clockwise)
+    })
 }
 
 /// The total winding number of all rings around `p`, or `None` when `p` is on an edge.
