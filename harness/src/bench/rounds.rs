@@ -289,8 +289,8 @@ enum ReadAlike {
     TooCostly(u64),
 }
 
-/// [`ReadAlike`] of `cases`: true when no point of either operand is wound twice, checked
-/// exactly where that is affordable.
+/// [`ReadAlike`] of `cases`: `Yes` when no point of any operand is wound twice, checked exactly
+/// where that is affordable.
 fn read_alike(cases: &[PolygonCase]) -> ReadAlike {
     let operands = || cases.iter().flat_map(|c| [&c.subject, &c.clip]);
     let work =

@@ -63,9 +63,7 @@ pub fn region_area_with_witness(
         return (0.0, None);
     }
     edges.sort_unstable_by(|a, b| a.bottom.y.total_cmp(&b.bottom.y));
-    let mut ys: Vec<f64> = edges.iter().flat_map(|e| [e.bottom.y, e.top.y]).collect();
-    ys.sort_unstable_by(f64::total_cmp);
-    ys.dedup();
+    let ys = slab_heights(&edges);
 
     let mut sweep = Sweep::new(layers, edges.len(), &predicate);
     // Active edges (indices into `edges`), in left-to-right order.
@@ -144,12 +142,18 @@ struct Crossing {
 /// ```
 pub fn region_area_work(layers: &[(&Polygons, FillRule)]) -> u64 {
     let edges = collect_edges(layers);
-    let mut ys: Vec<f64> = edges.iter().flat_map(|e| [e.bottom.y, e.top.y]).collect();
-    ys.sort_unstable_by(f64::total_cmp);
-    ys.dedup();
+    let ys = slab_heights(&edges);
     // An edge is active in the slabs from its bottom up to its top: one per height in between.
     let slot = |y: f64| ys.partition_point(|&h| h < y) as u64;
     edges.iter().map(|e| slot(e.top.y) - slot(e.bottom.y)).sum()
+}
+
+/// The heights of the slabs' bottoms and tops: every edge's ends, sorted, without repeats.
+fn slab_heights(edges: &[SlabEdge]) -> Vec<f64> {
+    let mut ys: Vec<f64> = edges.iter().flat_map(|e| [e.bottom.y, e.top.y]).collect();
+    ys.sort_unstable_by(f64::total_cmp);
+    ys.dedup();
+    ys
 }
 
 fn collect_edges(layers: &[(&Polygons, FillRule)]) -> Vec<SlabEdge> {
