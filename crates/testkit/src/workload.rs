@@ -64,6 +64,14 @@ pub const POLYGON_WORKLOADS: &[&str] = &[
     "maps",
 ];
 
+/// The polygon workloads that stress a sweep (the last of [`POLYGON_WORKLOADS`]): many edges
+/// span a level line at once, so a sweep that visits every active edge in every scanbeam goes
+/// quadratic on them.
+pub const SWEEP_WORKLOADS: &[&str] = {
+    let all = POLYGON_WORKLOADS;
+    all.split_at(all.len() - 11).1
+};
+
 /// How far `star-far` moves `star`'s cases: UTM-like magnitudes, where one ulp of a coordinate
 /// (about 1.2e-7) is no longer small beside the 1e-9 relative area tolerance of a 1000-unit box.
 pub const FAR_OFFSET: Point = Point::new(1.0e9, 1.0e9);

@@ -6,19 +6,15 @@ use clip_core::{FillRule, Operand, Polygons, WindowKind, validate_polygons};
 use clip_oracle::polygon::{region_area, same_region};
 use clip_testkit::workload::*;
 
-const SWEEP: [&str; 11] = [
-    "comb",
-    "nested",
-    "concentric",
-    "spiral",
-    "windows",
-    "corrosion",
-    "lines-net",
-    "checkerboard",
-    "not-overlap",
-    "wind-mill",
-    "maps",
-];
+const SWEEP: &[&str] = SWEEP_WORKLOADS;
+
+#[test]
+fn the_sweep_workloads_are_the_comb_the_suite_and_the_maps() {
+    assert_eq!(SWEEP[0], "comb");
+    assert_eq!(SWEEP[SWEEP.len() - 1], "maps");
+    assert!(SWEEP.iter().all(|w| POLYGON_WORKLOADS.contains(w)));
+    assert!(!SWEEP.contains(&"many-subjects"));
+}
 
 fn edges(c: &PolygonCase) -> usize {
     c.subject.vertex_count() + c.clip.vertex_count()
@@ -52,7 +48,7 @@ fn sized_cases_are_deterministic_and_within_a_factor_of_one_and_a_half_of_the_as
 
 #[test]
 fn unsized_cases_stay_small_enough_for_the_oracle() {
-    for w in SWEEP {
+    for &w in SWEEP {
         for index in 0..40 {
             let c = polygon_case(w, 5, index, WindowKind::Any).unwrap();
             // 6-200 edges drawn, the suite's step at most 1.5x; maps' country cases at most
@@ -77,7 +73,7 @@ fn reads_alike(p: &Polygons) -> bool {
 #[test]
 fn operands_are_valid_and_read_alike_under_even_odd_and_non_zero_but_the_spirals() {
     let mut cases: Vec<PolygonCase> = Vec::new();
-    for w in SWEEP {
+    for &w in SWEEP {
         cases.extend((0..6).map(|i| polygon_case(w, 11, i, WindowKind::Any).unwrap()));
         if w != "maps" {
             cases.extend((0..2).map(|i| polygon_case_sized(w, 11, i, 1_000, WindowKind::Any).unwrap()));
