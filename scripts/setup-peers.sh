@@ -90,6 +90,6 @@ fi
 if stale adapters/boost/build/clipbench-boost adapters/boost/clipbench_boost.cpp "${cgal_headers[@]}"; then
   say "building adapters/boost (a minute or two: it reads operands with CGAL)"
   mkdir -p adapters/boost/build
-  g++ "${CXXFLAGS[@]}" -o adapters/boost/build/clipbench-boost adapters/boost/clipbench_boost.cpp -lgmp -lmpfr
+  g++ "${CXXFLAGS[@]}" -DBOOST_ALLOW_DEPRECATED_HEADERS -o adapters/boost/build/clipbench-boost adapters/boost/clipbench_boost.cpp -lgmp -lmpfr
 fi
 say "ready: clipbench verify --clippers adapters/clippers.toml"

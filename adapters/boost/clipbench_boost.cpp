@@ -25,7 +25,7 @@ namespace {
 
 /// An operand's region, rounded to doubles once, as Boost polygons.
 BMulti boost_region(const clipbench::Rings& rings, const std::string& fill) {
-  clipbench::Polygon_set set = clipbench::region_of(rings, fill);
+  clipbench::Polygon_set set = clipbench::read_operand(rings, fill);
   std::vector<clipbench::Polygon_set::Polygon_with_holes_2> polygons;
   set.polygons_with_holes(std::back_inserter(polygons));
   auto ring_of = [](const clipbench::Polygon_set::Polygon_2& p, BPolygon::ring_type& r) {

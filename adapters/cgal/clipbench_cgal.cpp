@@ -16,8 +16,8 @@ int main() {
                      "by Arrangement_2)";
   return serve(name, kFills, [](const std::string& op, const std::string& fill, const Rings& subject,
                                 const Rings& clip) {
-    Polygon_set a = region_of(subject, fill);
-    Polygon_set b = region_of(clip, fill);
+    Polygon_set a = read_operand(subject, fill);
+    Polygon_set b = read_operand(clip, fill);
     long long start = now_ns();
     if (op == "intersection") {
       a.intersection(b);

@@ -115,6 +115,15 @@ inline Polygon_set region_of(const Rings& rings, const std::string& fill) {
   return set;
 }
 
+/// region_of, with a failure named as the reading's, so that it is not taken for the library's.
+inline Polygon_set read_operand(const Rings& rings, const std::string& fill) {
+  try {
+    return region_of(rings, fill);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("reading the operands failed, before the operation ran: ") + e.what());
+  }
+}
+
 /// The rings of a polygon set's polygons, each point rounded to the nearest double once: outers
 /// counter-clockwise, holes clockwise (CGAL's own orientation).
 inline Rings rings_of_set(const Polygon_set& set) {

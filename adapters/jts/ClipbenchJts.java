@@ -84,8 +84,16 @@ public final class ClipbenchJts {
       case "xor" -> OverlayNG.SYMDIFFERENCE;
       default -> throw new IllegalArgumentException("unknown operation '" + op + "'");
     };
-    Geometry a = region(rings(request.get("subject")), fill);
-    Geometry b = region(rings(request.get("clip")), fill);
+    Geometry a;
+    Geometry b;
+    try {
+      a = region(rings(request.get("subject")), fill);
+      b = region(rings(request.get("clip")), fill);
+    } catch (RuntimeException e) {
+      // The reader's failure (JTS building a region from crossing rings), not the overlay's: say so.
+      throw new IllegalStateException("reading the operands failed, before the overlay ran: "
+          + e.getClass().getSimpleName() + ": " + e.getMessage(), e);
+    }
     long start = System.nanoTime();
     Geometry result = robust ? OverlayNGRobust.overlay(a, b, code) : OverlayNG.overlay(a, b, code);
     long time = System.nanoTime() - start;

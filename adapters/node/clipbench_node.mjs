@@ -212,8 +212,13 @@ function answer(library, request) {
   if (library.prepareBoth) {
     ({ a, b, grid } = library.prepareBoth(subject, clip));
   } else {
-    a = library.prepare(subject, fill);
-    b = library.prepare(clip, fill);
+    // A failure here is the reader's (jsts building a region), not the library's: say so.
+    try {
+      a = library.prepare(subject, fill);
+      b = library.prepare(clip, fill);
+    } catch (e) {
+      throw new Error(`reading the operands failed, before ${library.name.split(' ')[0]} ran: ${e?.name ?? 'Error'}: ${e?.message ?? e}`);
+    }
   }
   const start = process.hrtime.bigint();
   const result = library.run(op, a, b, fill);
@@ -230,6 +235,8 @@ async function main() {
   }
   jstsFactory(); // loads jsts now, so the first request is not slowed by it
   const library = await make();
+  // The harness closing its end early is the end of the run, not an error.
+  process.stdout.on('error', () => process.exit(0));
   process.stdout.write(JSON.stringify(handshake(library)) + '\n');
   const input = createInterface({ input: process.stdin, crlfDelay: Infinity });
   input.on('line', (line) => {
