@@ -6,6 +6,11 @@ use clip_core::predicates::{Orientation, orient};
 use crate::bounds::NONE;
 use crate::order_index::OrderIndex;
 
+/// Tables of at most this many edges are searched by a walk: a search tree over a table this
+/// short costs more to keep than it saves. The scanbeam sweep, which walks the whole table in
+/// every scanbeam anyway, never builds one.
+const LINEAR_SEARCH_UP_TO: usize = 16;
+
 /// Relative distance within which a computed crossing point counts as on an edge: a few dozen
 /// ulps, the rounding of one crossing computation.
 pub(crate) const ROUNDING: f64 = 4.0 * f64::EPSILON;
@@ -204,7 +209,10 @@ pub(crate) struct ActiveEdges {
     pub edges: Vec<Edge>,
     first: u32,
     len: usize,
+    /// The search tree over the order, kept only by the event sweep and only while the table
+    /// is longer than [`LINEAR_SEARCH_UP_TO`] (built when it first is).
     index: OrderIndex,
+    indexed: bool,
     /// Records free for new edges.
     free: Vec<u32>,
     /// Records of edges that ended on the current scanline: the scanline's work lists may still
@@ -225,6 +233,7 @@ impl ActiveEdges {
         self.first = NONE;
         self.len = 0;
         self.index.reset();
+        self.indexed = false;
         self.free.clear();
         self.ended.clear();
         self.track = track;
@@ -368,25 +377,53 @@ impl ActiveEdges {
 
     /// Puts a new edge from `p` (on the current scanline) towards `toward` where it belongs:
     /// before the first edge that passes right of `p`, or through `p` heading right of the new
-    /// edge. Exact; a search of the order, which is sorted at the scanline.
+    /// edge. Exact; a search of the order, which is sorted at the scanline: through the tree
+    /// when there is one, else a walk from the left, which a short table makes cheaper.
     pub(crate) fn insert_at(&mut self, id: u32, p: Point, toward: Point) {
-        let edges = &self.edges;
-        let (left, right) = self.index.insert_by(id, |k| {
-            let e = &edges[k as usize];
-            match e.side_of(p) {
-                Orientation::Clockwise => true,
-                Orientation::CounterClockwise => false,
-                Orientation::Collinear => orient(p, toward, e.top) != Orientation::Clockwise,
+        let before = |e: &Edge| match e.side_of(p) {
+            Orientation::Clockwise => true,
+            Orientation::CounterClockwise => false,
+            Orientation::Collinear => orient(p, toward, e.top) != Orientation::Clockwise,
+        };
+        let (left, right) = if self.indexed {
+            let edges = &self.edges;
+            self.index.insert_by(id, |k| before(&edges[k as usize]))
+        } else {
+            let (mut left, mut right) = (NONE, self.first);
+            while right != NONE && before(&self.edges[right as usize]) {
+                left = right;
+                right = self.next(right);
             }
-        });
+            (left, right)
+        };
         self.link(id, left, right);
+        self.index_if_long();
     }
 
     /// Puts a new edge right after `left` (first when `NONE`).
     pub(crate) fn insert_after(&mut self, id: u32, left: u32) {
-        self.index.insert_after(id, left);
+        if self.indexed {
+            self.index.insert_after(id, left);
+        }
         let right = if left == NONE { self.first } else { self.next(left) };
         self.link(id, left, right);
+        self.index_if_long();
+    }
+
+    /// Builds the search tree when the event sweep's table first grows past
+    /// [`LINEAR_SEARCH_UP_TO`].
+    #[inline]
+    fn index_if_long(&mut self) {
+        if self.track && !self.indexed && self.len > LINEAR_SEARCH_UP_TO {
+            self.indexed = true;
+            let mut left = NONE;
+            let mut id = self.first;
+            while id != NONE {
+                self.index.insert_after(id, left);
+                left = id;
+                id = self.next(id);
+            }
+        }
     }
 
     /// The active edge whose bound runs the other way from `id`'s and ends at vertex `v` (its
@@ -421,7 +458,9 @@ impl ActiveEdges {
         let b = self.next(a);
         let (left, right) = (self.prev(a), self.next(b));
         for id in [a, b] {
-            self.index.remove(id);
+            if self.indexed {
+                self.index.remove(id);
+            }
             let e = &mut self.edges[id as usize];
             e.alive = false;
             e.prev = NONE;
@@ -445,7 +484,9 @@ impl ActiveEdges {
     pub(crate) fn swap(&mut self, a: u32) {
         let b = self.next(a);
         let (left, right) = (self.prev(a), self.next(b));
-        self.index.swap(a, b);
+        if self.indexed {
+            self.index.swap(a, b);
+        }
         if left == NONE {
             self.first = b;
         } else {

@@ -65,24 +65,42 @@ impl IntersectionTable {
         if n < 2 {
             return;
         }
+        // Most beams have no crossing: then no edge passes its left neighbour at the top, and
+        // the tables below would find nothing. Until the first edge that does, only x at the
+        // top is computed and compared; from there the edges are listed for the sorted edge table.
         self.order.clear();
         self.xtop.clear();
-        let mut id = ael.first();
+        let (mut id, mut prev) = (ael.first(), NONE);
+        let mut prev_top = TopX { x: f64::NEG_INFINITY, magnitude: 0.0 };
+        let mut first = None;
+        let mut i = 0;
         while id != NONE {
             let e = ael.get_mut(id);
             e.next_x = e.x_at(yt);
             e.next_y = yt;
-            self.order.push(id);
-            self.xtop.push(TopX { x: e.next_x, magnitude: e.magnitude.x_max });
-            id = e.next;
+            let top = TopX { x: e.next_x, magnitude: e.magnitude.x_max };
+            let next = e.next;
+            if first.is_none() && prev != NONE && left_at_top_of(ael, id, top, prev, prev_top, yt) {
+                first = Some(i);
+                // Every edge before this one, for the table.
+                let mut k = ael.first();
+                while k != id {
+                    self.order.push(k);
+                    let ek = ael.get(k);
+                    self.xtop.push(TopX { x: ek.next_x, magnitude: ek.magnitude.x_max });
+                    k = ek.next;
+                }
+            }
+            if first.is_some() {
+                self.order.push(id);
+                self.xtop.push(top);
+            }
+            (prev, prev_top) = (id, top);
+            id = next;
+            i += 1;
         }
+        let Some(first) = first else { return };
         let (order, xtop) = (&self.order, &self.xtop);
-        // Most beams have no crossing: then no edge passes its left neighbour, and the
-        // insertion sort below would find nothing. Before the first edge that does, the
-        // insertion sort would only confirm the order, so it starts there.
-        let Some(first) = (1..n).find(|&i| left_at_top(ael, order, i, xtop[i], i - 1, xtop[i - 1], yt)) else {
-            return;
-        };
         let st = &mut self.sorted;
         st.clear();
         st.extend(0..first as u32);
@@ -114,11 +132,17 @@ impl IntersectionTable {
 /// within rounding of `yt` is then taken in this beam or the next, at most ulps away.
 #[inline(always)]
 fn left_at_top(ael: &ActiveEdges, order: &[u32], i: usize, ti: TopX, k: usize, tk: TopX, yt: f64) -> bool {
+    left_at_top_of(ael, order[i], ti, order[k], tk, yt)
+}
+
+/// [`left_at_top`] of edges `i` and `k` by id.
+#[inline(always)]
+fn left_at_top_of(ael: &ActiveEdges, i: u32, ti: TopX, k: u32, tk: TopX, yt: f64) -> bool {
     let (xi, xk) = (ti.x, tk.x);
     if (xi - xk).abs() > ROUNDING * ti.magnitude.max(tk.magnitude) {
         return xi < xk;
     }
-    left_at_top_near(ael, order[i], xi, order[k], xk, yt)
+    left_at_top_near(ael, i, xi, k, xk, yt)
 }
 
 /// [`left_at_top`] for x values within rounding of each other: rare, so kept out of line to
