@@ -14,40 +14,7 @@ use clip_core::{
 use super::process::{Worker, clipped};
 use super::protocol::{Handshake, LineRequest, PolygonRequest, Reply, WireRing, from_wire, segments_to_wire, to_wire};
 use super::spec::ExternalSpec;
-
-/// The clipper's own times for calls since the last [`OwnTime::take`] (bench reads them).
-#[derive(Debug, Default)]
-pub struct OwnTime {
-    tally: Mutex<OwnTally>,
-}
-
-#[derive(Debug, Default)]
-struct OwnTally {
-    ns: f64,
-    reported: u64,
-    unreported: u64,
-}
-
-impl OwnTime {
-    fn record(&self, time_ns: Option<f64>) {
-        if let Ok(mut t) = self.tally.lock() {
-            match time_ns.filter(|t| t.is_finite() && *t >= 0.0) {
-                Some(ns) => {
-                    t.ns += ns;
-                    t.reported += 1;
-                }
-                None => t.unreported += 1,
-            }
-        }
-    }
-
-    /// The mean own time per call since the last take, when every call reported one; resets.
-    pub fn take(&self) -> Option<f64> {
-        let mut t = self.tally.lock().ok()?;
-        let tally = std::mem::take(&mut *t);
-        (tally.reported > 0 && tally.unreported == 0).then(|| tally.ns / tally.reported as f64)
-    }
-}
+use crate::measure::own_time::OwnTime;
 
 /// The processes of one external clipper.
 pub struct Pool {
