@@ -42,8 +42,10 @@
 //!   and crossings wait in a second heap; a new edge finds its place in a search tree over the
 //!   table. O((n + k) log n) for n edges and k crossings.
 //!
-//! [`Vatti`] takes the event sweep; [`FixedSweep`] fixes either (`vatti-scanbeam` in the
-//! harness reproduces the paper's cost).
+//! [`Vatti`] takes the scanbeam sweep for operands of at most 512 edges in all, where its
+//! quadratic term is bounded and its cheaper crossings win on crossing-dense inputs, and the
+//! event sweep above; [`FixedSweep`] fixes either (`vatti-scanbeam` in the harness reproduces
+//! the paper's cost at every size).
 //!
 //! # Routes: the paper's Extensions and a pre-filter
 //!

@@ -11,11 +11,13 @@ pub(crate) mod limits {
     /// boxes first: the cut's own work and the border paths it adds cost more than the few
     /// edges it could remove.
     pub(crate) const SWEPT_WHOLE_UP_TO: usize = 64;
-    /// Operands of at most this many edges in all take the scanbeam sweep: with that few edges
-    /// active, its pass over the whole table per scanbeam costs less than the event sweep's
-    /// queues and tests. Above it the event sweep's cost does not depend on how many edges
-    /// span the sweep line, and the scanbeam sweep's does.
-    pub(crate) const SCANBEAM_UP_TO: usize = 64;
+    /// Operands of at most this many edges in all take the scanbeam sweep. Its pass over the
+    /// whole table per scanbeam is quadratic only in the edges that span the sweep line, which
+    /// this bounds (at most 512 in at most 1,024 scanbeams), and each crossing costs it less than
+    /// the event sweep's queue: inputs dense in crossings are cheaper on it at this size. Above
+    /// it the event sweep's cost no longer depends on how many edges span the sweep line.
+    /// (PERFORMANCE.md has both sweeps' counts on either side of the limit.)
+    pub(crate) const SCANBEAM_UP_TO: usize = 512;
 }
 
 /// What a clip does with its (valid) operands around the sweep.
