@@ -4,6 +4,7 @@
 //! The `text` group times clip-text's strategies on a paragraph as the window shrinks.
 //! Writes the raw files only; `report` turns them into tables and plots.
 
+mod correctness;
 mod memory_probe;
 mod plan;
 mod rounds;

@@ -3,6 +3,7 @@
 
 pub mod cpu_time;
 pub mod git_revision;
+pub mod interval;
 pub mod out_dir;
 pub mod parallel;
 pub mod peak_memory;

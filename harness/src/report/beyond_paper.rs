@@ -351,6 +351,7 @@ mod tests {
             repetition: 0,
             iterations: 100,
             time_ns: ns,
+            correct: None,
         }
     }
 

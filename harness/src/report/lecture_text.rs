@@ -214,6 +214,7 @@ mod tests {
             repetition: rep,
             iterations: 1,
             time_ns: ns,
+            correct: None,
         }
     }
 

@@ -12,6 +12,7 @@ mod oracle_failures;
 mod provenance_line;
 pub mod table3;
 pub mod table4;
+pub mod wording;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

@@ -544,6 +544,7 @@ mod tests {
             repetition: rep,
             iterations: 1,
             time_ns: ms * 1e6,
+            correct: None,
         }
     }
 
