@@ -21,6 +21,8 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// A paper's own numbers (dashed, hollow triangles) rather than ours (solid, dots).
     pub paper: bool,
+    /// Error bars: `(x, low, high)`, the 95% interval at a point (empty: none drawn).
+    pub spread: Vec<(f64, f64, f64)>,
 }
 
 /// A chart: title, axis labels with units, axis scales and series.
@@ -48,7 +50,8 @@ const SIZE: (u32, u32) = (960, 620);
 impl Chart {
     /// Draws the chart into an SVG file at `path`.
     pub fn write_svg(&self, path: &Path) -> Result<(), CliError> {
-        let points: Vec<(f64, f64)> = self.series.iter().flat_map(|s| s.points.iter().copied()).collect();
+        let spread = self.series.iter().flat_map(|s| s.spread.iter().flat_map(|&(x, low, high)| [(x, low), (x, high)]));
+        let points: Vec<(f64, f64)> = self.series.iter().flat_map(|s| s.points.iter().copied()).chain(spread).collect();
         let points: Vec<(f64, f64)> = points.into_iter().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
         // Room on top for the legend: about one text line per series.
         let legend = (0.06 + 0.045 * self.series.len() as f64).min(0.5);
@@ -112,6 +115,14 @@ impl Chart {
                     .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], colour.stroke_width(3)));
                 ctx.draw_series(s.points.iter().map(|&p| Circle::new(p, 4, colour.filled())))?;
             }
+            // Each interval as a vertical whisker through its point.
+            let bar = colour.stroke_width(2);
+            ctx.draw_series(
+                s.spread
+                    .iter()
+                    .filter(|(_, low, high)| low.is_finite() && high.is_finite())
+                    .map(|&(x, low, high)| PathElement::new(vec![(x, low), (x, high)], bar)),
+            )?;
         }
         ctx.configure_series_labels()
             .position(SeriesLabelPosition::UpperLeft)
@@ -198,12 +209,14 @@ mod tests {
                     colour: RGBColor(1, 2, 3),
                     points: vec![(4.0, 1.0), (200.0, 50.0)],
                     paper: false,
+                    spread: Vec::new(),
                 },
                 Series {
                     label: "paper".into(),
                     colour: RGBColor(3, 2, 1),
                     points: vec![(4.0, 2.0), (200.0, 40.0)],
                     paper: true,
+                    spread: Vec::new(),
                 },
             ],
         };

@@ -9,10 +9,12 @@ use super::provenance_line::provenance_line;
 use super::wording::Sides;
 use crate::cli_error::CliError;
 use crate::measure::interval::{CaseSamples, Interval, bootstrap, geometric_mean_ratio, mean_time, seed_of};
-use crate::measure::raw::{Measurement, read_csv};
+use crate::measure::raw::{Measurement, read_csv, write_csv};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
-use crate::results_files::bench::{BASELINE, CSV, META, MemoryRecord, TEXT_GROUP, read_memory};
+use crate::results_files::bench::{
+    BASELINE, CSV, META, MemoryRecord, POINTS_CSV, PointRecord, TEXT_GROUP, read_memory,
+};
 
 /// The markdown file.
 pub const MD: &str = "bench.md";
@@ -98,6 +100,29 @@ pub fn points(rows: &[Measurement]) -> Points {
         .collect()
 }
 
+/// The rows of [`POINTS_CSV`]: every point with its intervals.
+pub fn point_records(points: &Points) -> Vec<PointRecord> {
+    let finite = |v: f64| v.is_finite().then_some(v);
+    points
+        .iter()
+        .map(|((workload, op, size, clipper), p)| PointRecord {
+            workload: workload.clone(),
+            op: op.clone(),
+            size: *size,
+            clipper: clipper.clone(),
+            cases: p.cases,
+            wrong_cases: p.wrong_cases,
+            rounds: p.rounds,
+            time_ns: p.time_interval.estimate,
+            time_low_ns: p.time_interval.low,
+            time_high_ns: p.time_interval.high,
+            ratio: finite(p.ratio_interval.estimate),
+            ratio_low: finite(p.ratio_interval.low),
+            ratio_high: finite(p.ratio_interval.high),
+        })
+        .collect()
+}
+
 /// Groups in first-seen order of the raw file, clippers likewise.
 fn order(rows: &[Measurement], pick: impl Fn(&Measurement) -> &str) -> Vec<String> {
     let mut seen = Vec::new();
@@ -152,16 +177,25 @@ pub fn chart(points: &Points, group: &str, clippers: &[String]) -> Chart {
     let series = clippers
         .iter()
         .filter_map(|c| {
-            let pts: Vec<(f64, f64)> = points
+            let drawn: Vec<(f64, &Point)> = points
                 .iter()
                 .filter(|((g, o, _, k), p)| g == group && o == op && k == c && p.trusted())
-                .map(|((_, _, s, _), p)| (*s as f64, p.time_ns / 1e3))
+                .map(|((_, _, s, _), p)| (*s as f64, p))
                 .collect();
-            (!pts.is_empty()).then(|| Series { label: c.clone(), colour: clipper_colour(c), points: pts, paper: false })
+            let pts = drawn.iter().map(|(s, p)| (*s, p.time_ns / 1e3)).collect();
+            let spread =
+                drawn.iter().map(|(s, p)| (*s, p.time_interval.low / 1e3, p.time_interval.high / 1e3)).collect();
+            (!drawn.is_empty()).then(|| Series {
+                label: c.clone(),
+                colour: clipper_colour(c),
+                points: pts,
+                paper: false,
+                spread,
+            })
         })
         .collect();
     Chart {
-        title: format!("bench, {group}: intersection time per call against subject size"),
+        title: format!("bench, {group}: intersection time per call against subject size (bars: 95% intervals)"),
         x_label: "subject polygon edges (log scale)".to_owned(),
         y_label: "time per call (µs, log scale)".to_owned(),
         log_x: true,
@@ -301,6 +335,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     }
     let memory = read_memory(out)?;
     let points = points(&rows);
+    write_csv(&out.join(POINTS_CSV), &point_records(&points))?;
     let groups = order(&rows, |r| r.workload.as_str());
     let clippers = order(&rows, |r| r.clipper.as_str());
     let ops = order(&rows, |r| r.op.as_str());
@@ -310,7 +345,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          Time per call (mean over the group's cases of the median over interleaved rounds), then `x` the ratio to \
          `{BASELINE}` measured in the same run (geometric mean over cases of the ratio of medians; below 1 is faster \
          than Clipper2). Each figure carries its 95% interval in brackets: a seeded bootstrap over the cases and \
-         the rounds, so two figures whose intervals overlap may not differ at all. Operands read under even-odd (`clipper1`, which reads only non-zero, is timed where every operand covers the same region under both rules). ¹ marks a point over the time cap, timed once; n/a: not run (the \
+         the rounds, so two figures whose intervals overlap may not differ at all (every point with its \
+         interval: `{POINTS_CSV}`; the plots draw the time's interval as a bar). Operands read under even-odd (`clipper1`, which reads only non-zero, is timed where every operand covers the same region under both rules). ¹ marks a point over the time cap, timed once; n/a: not run (the \
          clipper does not take that window, or it was skipped after the cap: see the notes). Every result timed \
          was checked first (the exact oracle, or its area against the exact area where the oracle's sweep is too \
          costly); \"wrong on k of n cases\" stands where a clipper answered wrongly, and its times there count in \
@@ -407,6 +443,12 @@ mod tests {
             text.contains("against clipper2 faster at 1 of 3 sizes, slower at 1, indistinguishable at 1"),
             "{text}"
         );
+        // The intervals reach bench-points.csv and the plot's bars.
+        let records = point_records(&p);
+        let vatti_at_4 = records.iter().find(|r| r.clipper == "vatti" && r.size == 4).unwrap();
+        assert!(vatti_at_4.ratio_high.is_some_and(|h| h < 1.0), "{vatti_at_4:?}");
+        let chart = chart(&p, "star", &["vatti".to_owned()]);
+        assert_eq!(chart.series[0].spread.len(), 3);
     }
 
     #[test]

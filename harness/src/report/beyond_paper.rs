@@ -221,6 +221,7 @@ pub fn chart(rows: &[Row], set: &str) -> Chart {
                 colour: clipper_colour(c),
                 points,
                 paper: false,
+                spread: Vec::new(),
             })
         })
         .collect();

@@ -141,6 +141,7 @@ pub fn chart(rows: &[Row]) -> Chart {
             colour: FACTORS[i],
             points: rows.iter().map(|r| (r.edges as f64, r.improvement[i])).collect(),
             paper: false,
+            spread: Vec::new(),
         });
     }
     for i in 0..3 {
@@ -149,6 +150,7 @@ pub fn chart(rows: &[Row]) -> Chart {
             colour: FACTORS[i],
             points: VATTI_TABLE3.iter().map(|r| (r.edges as f64, r.improvement[i])).collect(),
             paper: true,
+            spread: Vec::new(),
         });
     }
     Chart {
