@@ -8,6 +8,7 @@ use std::path::Path;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 
+use super::palette::{distinct, paper_tint};
 use crate::cli_error::CliError;
 
 /// One series of points.
@@ -101,14 +102,19 @@ impl Chart {
             .light_line_style(WHITE.mix(0.0))
             .bold_line_style(BLACK.mix(0.12))
             .draw()?;
-        for s in &self.series {
-            let colour = s.colour;
+        let wanted: Vec<RGBColor> =
+            self.series.iter().map(|s| if s.paper { paper_tint(s.colour) } else { s.colour }).collect();
+        for (s, colour) in self.series.iter().zip(distinct(&wanted)) {
             let line = colour.stroke_width(2);
             if s.paper {
                 ctx.draw_series(DashedLineSeries::new(s.points.clone(), 8, 5, line))?;
                 ctx.draw_series(s.points.iter().map(|&p| TriangleMarker::new(p, 7, line)))?
                     .label(s.label.as_str())
-                    .legend(move |(px, py)| TriangleMarker::new((px + 10, py), 6, colour.stroke_width(2)));
+                    .legend(move |(px, py)| {
+                        EmptyElement::at((px, py))
+                            + PathElement::new(vec![(0, 0), (20, 0)], colour.stroke_width(3))
+                            + TriangleMarker::new((10, 0), 6, colour.stroke_width(2))
+                    });
             } else {
                 ctx.draw_series(LineSeries::new(s.points.clone(), line))?
                     .label(s.label.as_str())
@@ -226,6 +232,42 @@ mod tests {
             assert!(svg.contains(text), "{text} missing");
         }
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn series_of_one_colour_are_drawn_in_distinct_ones() {
+        let dir = std::env::temp_dir().join(format!("clipbench-chart-colours-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("chart.svg");
+        let red = RGBColor(214, 39, 40);
+        let series = |label: &str, paper: bool| Series {
+            label: label.into(),
+            colour: red,
+            points: vec![(4.0, 1.0), (200.0, 50.0)],
+            paper,
+            spread: vec![(4.0, 0.5, 2.0)],
+        };
+        let chart = Chart {
+            title: "colours".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            log_x: true,
+            log_y: true,
+            x_ticks: Vec::new(),
+            series: vec![series("ours", false), series("paper", true), series("again", false)],
+        };
+        chart.write_svg(&path).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        // The legend swatches, one per series, are the lines 3 px wide.
+        let swatches: Vec<&str> = svg
+            .split("<polyline")
+            .filter(|e| e[..e.find('>').unwrap_or(e.len())].contains("stroke-width=\"3\""))
+            .filter_map(|e| e.split("stroke=\"").nth(1).map(|s| &s[..7]))
+            .collect();
+        assert_eq!(swatches.len(), 3, "{swatches:?}");
+        assert!(swatches[0] == "#D62728" && swatches[1] != swatches[0], "{swatches:?}");
+        assert!(swatches[2] != swatches[0] && swatches[2] != swatches[1], "{swatches:?}");
     }
 
     #[test]
