@@ -68,6 +68,17 @@ fn a_broken_clipper_fails_its_broken_cases_and_every_other_case_is_judged() {
                     .unwrap(),
             )
             .unwrap();
+            // The case also opens in a GIS: subject and clip as GeoJSON features.
+            let folder = dir.join("failures").join(c["folder"].as_str().unwrap());
+            let geojson: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(folder.join("case.geojson")).unwrap()).unwrap();
+            let roles: Vec<&str> = geojson["features"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|f| f["properties"]["role"].as_str().unwrap())
+                .collect();
+            assert!(roles.starts_with(&["subject", "clip"]), "{roles:?}");
             case["found"].as_str().unwrap().to_owned()
         })
         .collect();
