@@ -218,6 +218,14 @@ fn a_lying_clipper_and_an_empty_one_are_timed_marked_wrong_and_not_ranked() {
     let table = md.lines().find(|l| l.starts_with("| 20 |")).expect("a row at 20 edges");
     // Columns in first-seen order; both liars' cells say so, and no ratio stands beside them.
     assert_eq!(table.matches("wrong on 2 of 2 cases").count(), 2, "{table}");
+    // REPORT.md opens with the summary: every bench point of both liars wrong, no speed given.
+    let report = std::fs::read_to_string(out.join("REPORT.md")).unwrap();
+    let first_section = report.lines().find(|l| l.starts_with("## ")).unwrap();
+    assert!(first_section.starts_with("## Summary"), "{first_section}");
+    for liar in ["square", "empty"] {
+        let row = report.lines().find(|l| l.starts_with(&format!("| `{liar}` | external"))).unwrap();
+        assert!(row.ends_with("| **4 / 4** | – | – | – |"), "{row}");
+    }
     let notes = std::fs::read_to_string(out.join("bench.meta.json")).unwrap();
     assert!(notes.contains("square: wrong on") && notes.contains("empty: wrong on"), "{notes}");
 }
