@@ -209,6 +209,28 @@ pub fn check_polygon_result(
     Ok(xor_area)
 }
 
+/// Only the sample-point part of [`check_polygon_result`]: no validity check and no area sweep,
+/// for inputs whose exact sweep is too costly ([`region_area_work`]). Linear in the edges; it
+/// catches a result wrong around any sample point (a missing or extra piece, a fixed or empty
+/// answer), not a sliver between them.
+pub fn check_polygon_samples(
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+    output: &Polygons,
+    rules: &OutputRules,
+) -> Result<(), PolygonFailure> {
+    if let Some(p) = output.points().find(|p| !p.is_finite()) {
+        return Err(PolygonFailure::Invalid(format!("non-finite output vertex ({}, {})", p.x, p.y)));
+    }
+    let b = subject.bounds().union(clip.bounds()).union(output.bounds());
+    if b.is_empty() {
+        return Ok(());
+    }
+    check_sample_points(subject, clip, op, fill, output, rules, &b)
+}
+
 fn check_sample_points(
     subject: &Polygons,
     clip: &Polygons,

@@ -1,12 +1,13 @@
 //! The bench judges what it times: every clipper's result on every case is checked before its
 //! time counts. The exact oracle where its sweep is affordable; past that, the result's area
 //! against the exact area of the answer (one sweep of the operands, shared by every clipper);
-//! past that too, the result is left unchecked and says so.
+//! past that too (combs of 10^5 edges and more), the oracle's exact sample points alone, which
+//! are linear in the edges and say so.
 
 use std::collections::BTreeMap;
 
 use clip_core::{BoolOp, FillRule, Polygons};
-use clip_oracle::polygon::{region_area, region_area_work, tolerance};
+use clip_oracle::polygon::{check_polygon_samples, region_area, region_area_work, tolerance};
 use clip_testkit::workload::PolygonCase;
 
 use crate::checks::{output_rules, polygon_oracle};
@@ -21,9 +22,11 @@ pub const CHECK_WORK: u64 = 100_000_000;
 pub enum Verdict {
     /// It passed the oracle, or its area matched the exact area.
     Right,
+    /// Only the oracle's sample points were affordable, and it passed them.
+    RightAtSamples,
     /// It failed: why.
     Wrong(String),
-    /// Neither check was affordable: why.
+    /// No check was affordable (a bridged result too costly to measure): why.
     Unchecked(String),
 }
 
@@ -31,7 +34,7 @@ impl Verdict {
     /// The `correct` column of bench.csv: empty when unchecked.
     pub fn column(&self) -> Option<bool> {
         match self {
-            Verdict::Right => Some(true),
+            Verdict::Right | Verdict::RightAtSamples => Some(true),
             Verdict::Wrong(_) => Some(false),
             Verdict::Unchecked(_) => None,
         }
@@ -70,9 +73,10 @@ impl Judge {
             (region_area_work(&operands) <= CHECK_WORK).then(|| region_area(&operands, |i| op.apply(i[0], i[1])))
         });
         let Some(exact) = exact else {
-            return Verdict::Unchecked(format!(
-                "the exact answer's area would take over {CHECK_WORK} edge-slab pairs to measure"
-            ));
+            return match check_polygon_samples(subject, clip, op, fill, output, &rules) {
+                Ok(()) => Verdict::RightAtSamples,
+                Err(why) => Verdict::Wrong(why.to_string()),
+            };
         };
         let area = if rules.conventional {
             output.signed_area()
@@ -123,5 +127,34 @@ mod tests {
         assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &square), Verdict::Wrong(_)));
         assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &Polygons::default()), Verdict::Wrong(_)));
         assert_eq!(Verdict::Unchecked(String::new()).column(), None);
+    }
+
+    #[test]
+    fn past_the_area_sweep_the_sample_points_still_catch_a_liar() {
+        use clip_core::{Point, Ring};
+        // A comb of 20 000 teeth: a level line crosses every tooth, so every sweep is quadratic.
+        let teeth = 20_000;
+        let mut comb: Vec<Point> = (0..teeth)
+            .flat_map(|i| [Point::new(2.0 * i as f64, 1.0 + i as f64), Point::new(2.0 * i as f64 + 1.0, 0.0)])
+            .collect();
+        comb.extend([Point::new(2.0 * teeth as f64, -1.0), Point::new(0.0, -1.0)]);
+        let k = PolygonCase {
+            workload: "test",
+            seed: 1,
+            index: 0,
+            subject: Polygons::new(vec![Ring::new(comb)]),
+            clip: Polygons::from(Rect::new(-1.0, -2.0, 2.0 * teeth as f64 + 1.0, teeth as f64 + 2.0)),
+            description: String::new(),
+        };
+        let (op, fill) = (BoolOp::Intersection, FillRule::EvenOdd);
+        assert!(region_area_work(&[(&k.subject, fill), (&k.clip, fill)]) > CHECK_WORK);
+        let registry = registry();
+        let vatti = registry.find_polygon("vatti").unwrap();
+        let mut judge = Judge::default();
+        // The box holds the comb: the comb is the answer.
+        assert_eq!(judge.judge(vatti, 0, &k, op, fill, &k.subject), Verdict::RightAtSamples);
+        let square = Polygons::from(Rect::new(0.0, 0.0, 1000.0, 1000.0));
+        assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &square), Verdict::Wrong(_)));
+        assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &Polygons::default()), Verdict::Wrong(_)));
     }
 }

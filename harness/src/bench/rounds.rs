@@ -10,7 +10,7 @@ use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons};
 use clip_oracle::polygon::{region_area_work, same_region};
 use clip_testkit::workload::{PolygonCase, polygon_case_sized};
 
-use super::correctness::{Judge, Verdict};
+use super::correctness::{CHECK_WORK, Judge, Verdict};
 use super::memory_probe::Probe;
 use super::plan::Group;
 use crate::cli_error::CliError;
@@ -81,6 +81,7 @@ struct Tally {
     first_wrong: Option<String>,
     unchecked: usize,
     first_unchecked: Option<String>,
+    sampled: usize,
 }
 
 impl Tally {
@@ -88,6 +89,7 @@ impl Tally {
         self.judged += 1;
         match verdict {
             Verdict::Right => {}
+            Verdict::RightAtSamples => self.sampled += 1,
             Verdict::Wrong(why) => {
                 self.wrong += 1;
                 self.first_wrong.get_or_insert_with(|| format!("{}: {why}", at()));
@@ -107,6 +109,13 @@ impl Tally {
                 "{group}: {clipper}: wrong on {} of {} results checked; its times there are left out of the ratios \
                  (first: {first}).",
                 self.wrong, self.judged
+            ));
+        }
+        if self.sampled > 0 {
+            notes.push(format!(
+                "{group}: {clipper}: {} of {} results checked at the oracle's sample points only (the exact area \
+                 sweep would visit over {CHECK_WORK} edge-slab pairs).",
+                self.sampled, self.judged
             ));
         }
         if let Some(first) = &self.first_unchecked {
