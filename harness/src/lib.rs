@@ -16,6 +16,7 @@ pub mod checks;
 pub mod cli_error;
 pub mod clip;
 pub mod clip_curves;
+pub mod compare;
 pub mod conformance;
 pub mod console;
 pub mod curve_input;

@@ -8,7 +8,8 @@ use clap::{Parser, Subcommand};
 use clipbench::cli_error::CliError;
 use clipbench::registry::Registry;
 use clipbench::{
-    bench, checks, clip, conformance, external, hostile, referee, registry, report, reproduce, text_cmd, verify,
+    bench, checks, clip, compare, conformance, external, hostile, referee, registry, report, reproduce, text_cmd,
+    verify,
 };
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
@@ -42,6 +43,10 @@ enum Command {
     /// An exact external clipper (adapters/cgal) as a referee of the oracle: its result areas on
     /// the polygon workloads against the oracle's region areas, beyond what rounding accounts for.
     Referee(referee::RefereeArgs),
+    /// Compare two bench results folders: per point, each clipper's ratio to Clipper2 before and
+    /// after with intervals; regressions and improvements beyond the noise flagged; exit status 1
+    /// on a regression beyond --max-regression (for CI gates).
+    Compare(compare::CompareArgs),
     /// Recompute the tables and plots from the raw CSVs of a results folder into REPORT.md.
     Report(report::ReportArgs),
     /// One string clipped to a window by one of the lecture's text strategies, drawn as SVG.
@@ -70,6 +75,7 @@ fn main() -> ExitCode {
         }
         Command::Reproduce(args) => reproduce_then_report(args),
         Command::Bench(args) => bench_then_report(args, registry),
+        Command::Compare(args) => compare::run(args),
         Command::Report(args) => report::run(args),
         Command::Text(args) => text_cmd::run(args).map(|()| ExitCode::SUCCESS),
     };

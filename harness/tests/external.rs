@@ -68,6 +68,17 @@ fn a_broken_clipper_fails_its_broken_cases_and_every_other_case_is_judged() {
                     .unwrap(),
             )
             .unwrap();
+            // The case also opens in a GIS: subject and clip as GeoJSON features.
+            let folder = dir.join("failures").join(c["folder"].as_str().unwrap());
+            let geojson: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(folder.join("case.geojson")).unwrap()).unwrap();
+            let roles: Vec<&str> = geojson["features"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|f| f["properties"]["role"].as_str().unwrap())
+                .collect();
+            assert!(roles.starts_with(&["subject", "clip"]), "{roles:?}");
             case["found"].as_str().unwrap().to_owned()
         })
         .collect();
@@ -159,4 +170,62 @@ fn a_clippers_file_with_an_unknown_key_is_refused_with_its_line() {
     let e = text(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{e}");
     assert!(e.contains("clippers.toml: line 4") && e.contains("retries"), "{e}");
+}
+
+/// `--external NAME=...` running tests/lying_clipper.py in `mode` (`square` or `empty`).
+fn lying_clipper(name: &str, mode: &str) -> String {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("lying_clipper.py");
+    format!("{name}=python3 '{}' {mode}", script.display())
+}
+
+#[test]
+fn a_lying_clipper_and_an_empty_one_are_timed_marked_wrong_and_not_ranked() {
+    let dir = scratch("lying");
+    let out = dir.join("results");
+    let o = clipbench(&[
+        "bench",
+        "--quick",
+        "--workload",
+        "star",
+        "--op",
+        "intersection",
+        "--rounds",
+        "1",
+        "--external",
+        &lying_clipper("square", "square"),
+        "--external",
+        &lying_clipper("empty", "empty"),
+        "--clipper",
+        "square",
+        "--clipper",
+        "empty",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let mut reader = csv::Reader::from_path(out.join("bench.csv")).unwrap();
+    let header = reader.headers().unwrap().clone();
+    let column = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (clipper, correct) = (column("clipper"), column("correct"));
+    let rows: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    for name in ["square", "empty", "clipper2"] {
+        let verdicts: Vec<&str> = rows.iter().filter(|r| &r[clipper] == name).map(|r| &r[correct]).collect();
+        assert!(!verdicts.is_empty(), "{name} was timed");
+        let expected = if name == "clipper2" { "true" } else { "false" };
+        assert!(verdicts.iter().all(|v| *v == expected), "{name}: {verdicts:?}");
+    }
+    let md = std::fs::read_to_string(out.join("bench.md")).unwrap();
+    let table = md.lines().find(|l| l.starts_with("| 20 |")).expect("a row at 20 edges");
+    // Columns in first-seen order; both liars' cells say so, and no ratio stands beside them.
+    assert_eq!(table.matches("wrong on 2 of 2 cases").count(), 2, "{table}");
+    // REPORT.md opens with the summary: every bench point of both liars wrong, no speed given.
+    let report = std::fs::read_to_string(out.join("REPORT.md")).unwrap();
+    let first_section = report.lines().find(|l| l.starts_with("## ")).unwrap();
+    assert!(first_section.starts_with("## Summary"), "{first_section}");
+    for liar in ["square", "empty"] {
+        let row = report.lines().find(|l| l.starts_with(&format!("| `{liar}` | external"))).unwrap();
+        assert!(row.ends_with("| **4 / 4** | – | – | – |"), "{row}");
+    }
+    let notes = std::fs::read_to_string(out.join("bench.meta.json")).unwrap();
+    assert!(notes.contains("square: wrong on") && notes.contains("empty: wrong on"), "{notes}");
 }

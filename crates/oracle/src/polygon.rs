@@ -189,13 +189,7 @@ pub fn check_polygon_result(
     output: &Polygons,
     rules: &OutputRules,
 ) -> Result<f64, PolygonFailure> {
-    if let Some(p) = output.points().find(|p| !p.is_finite()) {
-        return Err(PolygonFailure::Invalid(format!("non-finite output vertex ({}, {})", p.x, p.y)));
-    }
-    let b = subject.bounds().union(clip.bounds()).union(output.bounds());
-    if b.is_empty() {
-        return Ok(0.0);
-    }
+    let Some(b) = finite_box(subject, clip, output)? else { return Ok(0.0) };
     if rules.conventional {
         check_valid_result_within(output, snap_distance(&b, rules.relative_tolerance), [subject, clip])?;
     }
@@ -207,6 +201,32 @@ pub fn check_polygon_result(
         return Err(PolygonFailure::WrongRegion { xor_area, tolerance: tol });
     }
     Ok(xor_area)
+}
+
+/// Only the sample-point part of [`check_polygon_result`]: no validity check and no area sweep,
+/// for inputs whose exact sweep is too costly ([`region_area_work`]). Linear in the edges; it
+/// catches a result wrong around any sample point (a missing or extra piece, a fixed or empty
+/// answer), not a sliver between them.
+pub fn check_polygon_samples(
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+    output: &Polygons,
+    rules: &OutputRules,
+) -> Result<(), PolygonFailure> {
+    let Some(b) = finite_box(subject, clip, output)? else { return Ok(()) };
+    check_sample_points(subject, clip, op, fill, output, rules, &b)
+}
+
+/// The first step of both checks: every output vertex finite, then the box of inputs and output;
+/// `None` when it is empty (nothing anywhere, so nothing to check).
+fn finite_box(subject: &Polygons, clip: &Polygons, output: &Polygons) -> Result<Option<Rect>, PolygonFailure> {
+    if let Some(p) = output.points().find(|p| !p.is_finite()) {
+        return Err(PolygonFailure::Invalid(format!("non-finite output vertex ({}, {})", p.x, p.y)));
+    }
+    let b = subject.bounds().union(clip.bounds()).union(output.bounds());
+    Ok((!b.is_empty()).then_some(b))
 }
 
 fn check_sample_points(

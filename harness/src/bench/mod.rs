@@ -4,9 +4,11 @@
 //! The `text` group times clip-text's strategies on a paragraph as the window shrinks.
 //! Writes the raw files only; `report` turns them into tables and plots.
 
+mod correctness;
 mod memory_probe;
 mod plan;
 mod rounds;
+mod slowed;
 mod text_rounds;
 
 use std::path::PathBuf;
@@ -84,12 +86,15 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
         return Err(CliError::usage("--rounds must be at least 1"));
     }
     let plan = Plan::new(args)?;
+    let mut slowed_note = None;
     let settings = rounds::Settings { seed: args.seed, rounds, cap_seconds: cap, quick: args.quick };
     let (registry, groups) = if plan.polygon {
         if registry.find_polygon(BASELINE).is_none() {
             return Err(CliError::failed(format!("the baseline clipper '{BASELINE}' is not registered")));
         }
         let registry = select_clippers(registry, &plan.polygon_clippers)?;
+        let mut registry = registry;
+        slowed_note = slowed::apply(&mut registry)?;
         let groups = plan::select(plan::groups(args.quick), &plan.polygon_groups, &args.ops)?;
         (registry, groups)
     } else {
@@ -147,6 +152,7 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
                 .to_owned(),
         );
     }
+    provenance.notes.extend(slowed_note);
     provenance.notes.extend(measured.notes);
     provenance.write(&out.join(META))?;
     Ok(out)

@@ -10,6 +10,7 @@ use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons};
 use clip_oracle::polygon::{region_area_work, same_region};
 use clip_testkit::workload::{PolygonCase, polygon_case_sized};
 
+use super::correctness::{CHECK_WORK, Judge, Verdict};
 use super::memory_probe::Probe;
 use super::plan::Group;
 use crate::cli_error::CliError;
@@ -71,6 +72,62 @@ struct Stopped {
     reason: String,
 }
 
+/// A clipper's verdicts in one group: results wrong and unchecked, out of those judged, and the
+/// first of each with where it happened.
+#[derive(Default)]
+struct Tally {
+    judged: usize,
+    wrong: usize,
+    first_wrong: Option<String>,
+    unchecked: usize,
+    first_unchecked: Option<String>,
+    sampled: usize,
+}
+
+impl Tally {
+    fn add(&mut self, verdict: &Verdict, at: impl FnOnce() -> String) {
+        self.judged += 1;
+        match verdict {
+            Verdict::Right => {}
+            Verdict::RightAtSamples => self.sampled += 1,
+            Verdict::Wrong(why) => {
+                self.wrong += 1;
+                self.first_wrong.get_or_insert_with(|| format!("{}: {why}", at()));
+            }
+            Verdict::Unchecked(why) => {
+                self.unchecked += 1;
+                self.first_unchecked.get_or_insert_with(|| format!("{}: {why}", at()));
+            }
+        }
+    }
+
+    /// The sidecar notes of one clipper in one group.
+    fn notes(&self, group: &str, clipper: &str) -> Vec<String> {
+        let mut notes = Vec::new();
+        if let Some(first) = &self.first_wrong {
+            notes.push(format!(
+                "{group}: {clipper}: wrong on {} of {} results checked; its times there are left out of the ratios \
+                 (first: {first}).",
+                self.wrong, self.judged
+            ));
+        }
+        if self.sampled > 0 {
+            notes.push(format!(
+                "{group}: {clipper}: {} of {} results checked at the oracle's sample points only (the exact area \
+                 sweep would visit over {CHECK_WORK} edge-slab pairs).",
+                self.sampled, self.judged
+            ));
+        }
+        if let Some(first) = &self.first_unchecked {
+            notes.push(format!(
+                "{group}: {clipper}: {} of {} results not checked (first: {first}).",
+                self.unchecked, self.judged
+            ));
+        }
+        notes
+    }
+}
+
 /// Runs every group.
 pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result<Measured, CliError> {
     let points: usize = groups.iter().map(|g| g.sizes.len() * g.ops.len()).sum();
@@ -82,6 +139,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
         // Last measured single-call time and size per clipper, to predict the next size.
         let mut last: BTreeMap<&'static str, (usize, Duration)> = BTreeMap::new();
         let mut earlier: BTreeMap<&'static str, (usize, Duration)> = BTreeMap::new();
+        let mut tallies: BTreeMap<&'static str, Tally> = BTreeMap::new();
         for &size in &group.sizes {
             let cases: Vec<PolygonCase> = group
                 .indices
@@ -90,6 +148,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 .collect::<Result<_, _>>()
                 .map_err(|e| CliError::failed(e.to_string()))?;
             let reads_alike = OnceCell::new();
+            let mut judge = Judge::default();
             for &op in &group.ops {
                 progress.set_message(format!("{} {size} {}", group.label, op.name()));
                 let clippers: Vec<(&PolygonEntry, FillRule)> = registry
@@ -137,7 +196,14 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                             continue;
                         }
                     }
-                    match calibrate(c, &cases, op, fill) {
+                    let tally = tallies.entry(c.name()).or_default();
+                    let mut verdicts = Vec::with_capacity(cases.len());
+                    let judged = calibrate(c, &cases, op, fill, |k, output| {
+                        let verdict = judge.judge(entry, k, &cases[k], op, fill, output);
+                        tally.add(&verdict, || format!("{size} edges, {}, case {}", op.name(), group.indices[k]));
+                        verdicts.push(verdict.column());
+                    });
+                    match judged {
                         Ok(single) => {
                             // Ops of one size share a size: only a smaller one shows growth.
                             if let Some(previous) = last.insert(c.name(), (size, single))
@@ -146,7 +212,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                                 earlier.insert(c.name(), previous);
                             }
                             let over = single.as_secs_f64() > settings.cap_seconds;
-                            timed_here.push((entry, fill, single, over));
+                            timed_here.push(Timed { entry, fill, single, over, correct: verdicts });
                             if over {
                                 let reason = format!(
                                     "one call took {single:.2?} at {size} edges, over the {} s cap",
@@ -163,7 +229,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
                 if group.measures_memory(size, op) {
                     // An external clipper's memory is its own process's, not this one's.
-                    for (c, fill, _, _) in timed_here.iter().filter(|(e, _, _, _)| e.own_time.is_none()) {
+                    for Timed { entry: c, fill, .. } in timed_here.iter().filter(|t| t.entry.own_time.is_none()) {
                         for index in &group.indices {
                             let probe = Probe {
                                 workload: group.workload.to_owned(),
@@ -200,6 +266,9 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
             };
             measured.notes.push(format!("{}: {name}: {}; {from}.", group.label, s.reason));
         }
+        for (name, tally) in tallies {
+            measured.notes.extend(tally.notes(group.label, name));
+        }
     }
     progress.finish();
     if !memory_available {
@@ -212,15 +281,33 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
     Ok(measured)
 }
 
-/// One untimed warm-up call per case, then the slowest case's time for one call.
-fn calibrate(c: &dyn PolygonClipper, cases: &[PolygonCase], op: BoolOp, fill: FillRule) -> Result<Duration, String> {
+/// One untimed warm-up call per case, whose result goes to `judge` with the case's position, then
+/// the slowest case's time for one call.
+fn calibrate(
+    c: &dyn PolygonClipper,
+    cases: &[PolygonCase],
+    op: BoolOp,
+    fill: FillRule,
+    mut judge: impl FnMut(usize, &Polygons),
+) -> Result<Duration, String> {
     let mut slowest = Duration::ZERO;
-    for case in cases {
+    for (k, case) in cases.iter().enumerate() {
         let (result, took) = timed(|| c.clip(&case.subject, &case.clip, op, fill));
-        result.map_err(|e| format!("{} on {}: {e}", c.name(), case.description))?;
+        let output = result.map_err(|e| format!("{} on {}: {e}", c.name(), case.description))?;
         slowest = slowest.max(took);
+        judge(k, &output);
     }
     Ok(slowest)
+}
+
+/// A clipper timed at one point: its fill rule, one call's time, whether that is over the cap,
+/// and each case's verdict (the `correct` column).
+struct Timed<'a> {
+    entry: &'a PolygonEntry,
+    fill: FillRule,
+    single: Duration,
+    over: bool,
+    correct: Vec<Option<bool>>,
 }
 
 /// Interleaved rounds over cases and clippers; a clipper over the cap is timed once. An external
@@ -230,7 +317,7 @@ fn measure_point(
     size: usize,
     op: BoolOp,
     cases: &[PolygonCase],
-    clippers: &[(&PolygonEntry, FillRule, Duration, bool)],
+    clippers: &[Timed],
     settings: &Settings,
     rows: &mut Vec<Measurement>,
 ) {
@@ -239,7 +326,7 @@ fn measure_point(
         for (k, (index, case)) in group.indices.iter().zip(cases).enumerate() {
             let n = clippers.len();
             for j in 0..n {
-                let (entry, fill, single, over) = clippers[(j + round + k) % n.max(1)];
+                let Timed { entry, fill, single, over, ref correct } = clippers[(j + round + k) % n.max(1)];
                 if over && round > 0 {
                     continue;
                 }
@@ -260,6 +347,7 @@ fn measure_point(
                     repetition: round,
                     iterations,
                     time_ns,
+                    correct: correct[k],
                 };
                 rows.push(row(c.name().to_owned(), time_ns));
                 if let Some(own_ns) = entry.own_time.as_ref().and_then(|own| own.take()) {

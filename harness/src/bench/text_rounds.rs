@@ -84,6 +84,7 @@ pub fn run(rows: &[&'static str], settings: &Settings) -> Result<TextMeasured, C
                     repetition: round,
                     iterations,
                     time_ns,
+                    correct: Some(true),
                 });
             }
         }

@@ -3,6 +3,7 @@
 
 pub mod cpu_time;
 pub mod git_revision;
+pub mod interval;
 pub mod out_dir;
 pub mod own_time;
 pub mod parallel;

@@ -31,6 +31,11 @@ pub struct Measurement {
     pub iterations: u32,
     /// Wall-clock nanoseconds per call.
     pub time_ns: f64,
+    /// Whether the timed call's result passed the check (bench: the exact oracle, or its area
+    /// against the exact area); empty where it was not checked (and in files written before the
+    /// column existed).
+    #[serde(default)]
+    pub correct: Option<bool>,
 }
 
 /// Writes `rows` as CSV with a header line.
@@ -70,6 +75,7 @@ mod tests {
             repetition: 3,
             iterations: 16,
             time_ns: 1234.5,
+            correct: Some(false),
         }];
         write_csv(&path, &rows).unwrap();
         let back: Vec<Measurement> = read_csv(&path).unwrap();

@@ -8,6 +8,7 @@ use std::path::Path;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 
+use super::palette::{distinct, paper_tint};
 use crate::cli_error::CliError;
 
 /// One series of points.
@@ -21,6 +22,8 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// A paper's own numbers (dashed, hollow triangles) rather than ours (solid, dots).
     pub paper: bool,
+    /// Error bars: `(x, low, high)`, the 95% interval at a point (empty: none drawn).
+    pub spread: Vec<(f64, f64, f64)>,
 }
 
 /// A chart: title, axis labels with units, axis scales and series.
@@ -48,7 +51,8 @@ const SIZE: (u32, u32) = (960, 620);
 impl Chart {
     /// Draws the chart into an SVG file at `path`.
     pub fn write_svg(&self, path: &Path) -> Result<(), CliError> {
-        let points: Vec<(f64, f64)> = self.series.iter().flat_map(|s| s.points.iter().copied()).collect();
+        let spread = self.series.iter().flat_map(|s| s.spread.iter().flat_map(|&(x, low, high)| [(x, low), (x, high)]));
+        let points: Vec<(f64, f64)> = self.series.iter().flat_map(|s| s.points.iter().copied()).chain(spread).collect();
         let points: Vec<(f64, f64)> = points.into_iter().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
         // Room on top for the legend: about one text line per series.
         let legend = (0.06 + 0.045 * self.series.len() as f64).min(0.5);
@@ -98,20 +102,33 @@ impl Chart {
             .light_line_style(WHITE.mix(0.0))
             .bold_line_style(BLACK.mix(0.12))
             .draw()?;
-        for s in &self.series {
-            let colour = s.colour;
+        let wanted: Vec<RGBColor> =
+            self.series.iter().map(|s| if s.paper { paper_tint(s.colour) } else { s.colour }).collect();
+        for (s, colour) in self.series.iter().zip(distinct(&wanted)) {
             let line = colour.stroke_width(2);
             if s.paper {
                 ctx.draw_series(DashedLineSeries::new(s.points.clone(), 8, 5, line))?;
                 ctx.draw_series(s.points.iter().map(|&p| TriangleMarker::new(p, 7, line)))?
                     .label(s.label.as_str())
-                    .legend(move |(px, py)| TriangleMarker::new((px + 10, py), 6, colour.stroke_width(2)));
+                    .legend(move |(px, py)| {
+                        EmptyElement::at((px, py))
+                            + PathElement::new(vec![(0, 0), (20, 0)], colour.stroke_width(3))
+                            + TriangleMarker::new((10, 0), 6, colour.stroke_width(2))
+                    });
             } else {
                 ctx.draw_series(LineSeries::new(s.points.clone(), line))?
                     .label(s.label.as_str())
                     .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], colour.stroke_width(3)));
                 ctx.draw_series(s.points.iter().map(|&p| Circle::new(p, 4, colour.filled())))?;
             }
+            // Each interval as a vertical whisker through its point.
+            let bar = colour.stroke_width(2);
+            ctx.draw_series(
+                s.spread
+                    .iter()
+                    .filter(|(_, low, high)| low.is_finite() && high.is_finite())
+                    .map(|&(x, low, high)| PathElement::new(vec![(x, low), (x, high)], bar)),
+            )?;
         }
         ctx.configure_series_labels()
             .position(SeriesLabelPosition::UpperLeft)
@@ -198,12 +215,14 @@ mod tests {
                     colour: RGBColor(1, 2, 3),
                     points: vec![(4.0, 1.0), (200.0, 50.0)],
                     paper: false,
+                    spread: Vec::new(),
                 },
                 Series {
                     label: "paper".into(),
                     colour: RGBColor(3, 2, 1),
                     points: vec![(4.0, 2.0), (200.0, 40.0)],
                     paper: true,
+                    spread: Vec::new(),
                 },
             ],
         };
@@ -213,6 +232,42 @@ mod tests {
             assert!(svg.contains(text), "{text} missing");
         }
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn series_of_one_colour_are_drawn_in_distinct_ones() {
+        let dir = std::env::temp_dir().join(format!("clipbench-chart-colours-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("chart.svg");
+        let red = RGBColor(214, 39, 40);
+        let series = |label: &str, paper: bool| Series {
+            label: label.into(),
+            colour: red,
+            points: vec![(4.0, 1.0), (200.0, 50.0)],
+            paper,
+            spread: vec![(4.0, 0.5, 2.0)],
+        };
+        let chart = Chart {
+            title: "colours".into(),
+            x_label: "x".into(),
+            y_label: "y".into(),
+            log_x: true,
+            log_y: true,
+            x_ticks: Vec::new(),
+            series: vec![series("ours", false), series("paper", true), series("again", false)],
+        };
+        chart.write_svg(&path).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        // The legend swatches, one per series, are the lines 3 px wide.
+        let swatches: Vec<&str> = svg
+            .split("<polyline")
+            .filter(|e| e[..e.find('>').unwrap_or(e.len())].contains("stroke-width=\"3\""))
+            .filter_map(|e| e.split("stroke=\"").nth(1).map(|s| &s[..7]))
+            .collect();
+        assert_eq!(swatches.len(), 3, "{swatches:?}");
+        assert!(swatches[0] == "#D62728" && swatches[1] != swatches[0], "{swatches:?}");
+        assert!(swatches[2] != swatches[0] && swatches[2] != swatches[1], "{swatches:?}");
     }
 
     #[test]

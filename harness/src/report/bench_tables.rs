@@ -4,14 +4,17 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
-use super::markdown::{duration_ns, header, num, table};
+use super::markdown::{duration_interval_ns, header, num, num_interval, table};
 use super::provenance_line::provenance_line;
+use super::wording::Sides;
 use crate::cli_error::CliError;
-use crate::measure::raw::{Measurement, read_csv};
-use crate::measure::timing::{geometric_mean, mean, median};
+use crate::measure::interval::{CaseSamples, Interval, bootstrap, geometric_mean_ratio, mean_time, seed_of};
+use crate::measure::raw::{Measurement, read_csv, write_csv};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
-use crate::results_files::bench::{BASELINE, CSV, META, MemoryRecord, TEXT_GROUP, read_memory};
+use crate::results_files::bench::{
+    BASELINE, CSV, META, MemoryRecord, POINTS_CSV, PointRecord, TEXT_GROUP, read_memory,
+};
 
 /// The markdown file.
 pub const MD: &str = "bench.md";
@@ -24,12 +27,25 @@ pub struct Point {
     /// Geometric mean over cases of (this clipper's median / Clipper2's median on the same case);
     /// NaN where Clipper2 has no time.
     pub ratio: f64,
+    /// [`Point::time_ns`] with its 95% bootstrap interval (over cases and rounds).
+    pub time_interval: Interval,
+    /// [`Point::ratio`] with its 95% bootstrap interval (over cases and both clippers' rounds).
+    pub ratio_interval: Interval,
     /// Rounds behind the medians (1 for a point over the cap).
     pub rounds: usize,
+    /// Cases behind the point.
+    pub cases: usize,
+    /// Cases whose result the bench's check found wrong (bench.csv's `correct` column): a point
+    /// with any is shown as "wrong on k of n cases", with no time or ratio.
+    pub wrong_cases: usize,
 }
 
-/// Each case's median time per call and rounds behind it: (case, ns, rounds).
-type CaseTimes = Vec<(String, f64, usize)>;
+impl Point {
+    /// Whether its time and ratio count: no case was found wrong.
+    pub fn trusted(&self) -> bool {
+        self.wrong_cases == 0
+    }
+}
 
 /// Points keyed by (group, op, size, clipper).
 pub type Points = BTreeMap<(String, String, usize, String), Point>;
@@ -39,33 +55,70 @@ pub fn plot_file(group: &str) -> String {
     format!("bench-{group}.svg")
 }
 
-/// Computes every point from raw rows.
+/// Computes every point from raw rows, with seeded bootstrap intervals over cases and rounds.
 pub fn points(rows: &[Measurement]) -> Points {
-    let mut per_case: BTreeMap<(String, String, usize, String, String), Vec<f64>> = BTreeMap::new();
+    // Per point, per case: the rounds' times and whether the result was found wrong.
+    type Cases = BTreeMap<String, (Vec<f64>, bool)>;
+    let mut grouped: BTreeMap<(String, String, usize, String), Cases> = BTreeMap::new();
     for r in rows {
-        per_case
-            .entry((r.workload.clone(), r.op.clone(), r.size, r.clipper.clone(), r.case.clone()))
-            .or_default()
-            .push(r.time_ns);
+        let point = grouped.entry((r.workload.clone(), r.op.clone(), r.size, r.clipper.clone())).or_default();
+        let case = point.entry(r.case.clone()).or_default();
+        case.0.push(r.time_ns);
+        case.1 |= r.correct == Some(false);
     }
-    let medians: BTreeMap<_, (f64, usize)> = per_case.into_iter().map(|(k, v)| (k, (median(&v), v.len()))).collect();
-    let mut grouped: BTreeMap<(String, String, usize, String), CaseTimes> = BTreeMap::new();
-    for ((g, op, size, clipper, case), (t, n)) in &medians {
-        grouped.entry((g.clone(), op.clone(), *size, clipper.clone())).or_default().push((case.clone(), *t, *n));
-    }
+    let none = Cases::new();
     grouped
-        .into_iter()
+        .iter()
         .map(|((g, op, size, clipper), cases)| {
-            let ratios: Vec<f64> = cases
+            let baseline = grouped.get(&(g.clone(), op.clone(), *size, BASELINE.to_owned())).unwrap_or(&none);
+            // A ratio needs a right answer on both sides of the case.
+            let samples: Vec<CaseSamples> = cases
                 .iter()
-                .filter_map(|(case, t, _)| {
-                    medians.get(&(g.clone(), op.clone(), size, BASELINE.to_owned(), case.clone())).map(|(b, _)| t / b)
+                .map(|(case, (times, wrong))| CaseSamples {
+                    times,
+                    baseline: baseline
+                        .get(case)
+                        .filter(|(_, base_wrong)| !*wrong && !*base_wrong)
+                        .map(|(b, _)| b.as_slice()),
                 })
                 .collect();
-            let ratio = if ratios.len() == cases.len() { geometric_mean(&ratios) } else { f64::NAN };
-            let time_ns = mean(&cases.iter().map(|c| c.1).collect::<Vec<_>>());
-            let rounds = cases.iter().map(|c| c.2).min().unwrap_or(0);
-            ((g, op, size, clipper), Point { time_ns, ratio, rounds })
+            let seed = seed_of(&format!("{g}/{op}/{size}/{clipper}"));
+            let nan = Interval::exact(f64::NAN);
+            let time_interval = bootstrap(&samples, seed, mean_time).unwrap_or(nan);
+            let ratio_interval = bootstrap(&samples, seed, geometric_mean_ratio).unwrap_or(nan);
+            let point = Point {
+                time_ns: time_interval.estimate,
+                ratio: ratio_interval.estimate,
+                time_interval,
+                ratio_interval,
+                rounds: cases.values().map(|c| c.0.len()).min().unwrap_or(0),
+                cases: cases.len(),
+                wrong_cases: cases.values().filter(|c| c.1).count(),
+            };
+            ((g.clone(), op.clone(), *size, clipper.clone()), point)
+        })
+        .collect()
+}
+
+/// The rows of [`POINTS_CSV`]: every point with its intervals.
+pub fn point_records(points: &Points) -> Vec<PointRecord> {
+    let finite = |v: f64| v.is_finite().then_some(v);
+    points
+        .iter()
+        .map(|((workload, op, size, clipper), p)| PointRecord {
+            workload: workload.clone(),
+            op: op.clone(),
+            size: *size,
+            clipper: clipper.clone(),
+            cases: p.cases,
+            wrong_cases: p.wrong_cases,
+            rounds: p.rounds,
+            time_ns: p.time_interval.estimate,
+            time_low_ns: p.time_interval.low,
+            time_high_ns: p.time_interval.high,
+            ratio: finite(p.ratio_interval.estimate),
+            ratio_low: finite(p.ratio_interval.low),
+            ratio_high: finite(p.ratio_interval.high),
         })
         .collect()
 }
@@ -91,15 +144,24 @@ fn group_table(points: &Points, group: &str, op: &str, clippers: &[String]) -> O
         return None;
     }
     let mut head = vec!["Edges".to_owned()];
-    head.extend(present.iter().map(|c| format!("{c} (x {BASELINE})")));
+    head.extend(present.iter().map(|c| format!("{c}: time; x {BASELINE}")));
     let body: Vec<Vec<String>> = sizes
         .iter()
         .map(|&s| {
             let mut cells = vec![s.to_string()];
             for c in &present {
                 cells.push(match points.get(&(group.to_owned(), op.to_owned(), s, (*c).clone())) {
-                    Some(p) if p.rounds <= 1 => format!("{} ({}) ¹", duration_ns(p.time_ns), num(p.ratio, 2)),
-                    Some(p) => format!("{} ({})", duration_ns(p.time_ns), num(p.ratio, 2)),
+                    Some(p) if !p.trusted() => format!("wrong on {} of {} cases", p.wrong_cases, p.cases),
+                    Some(p) if p.rounds <= 1 => {
+                        format!(
+                            "{}; x {} ¹",
+                            duration_interval_ns(&p.time_interval),
+                            num_interval(&p.ratio_interval, 2)
+                        )
+                    }
+                    Some(p) => {
+                        format!("{}; x {}", duration_interval_ns(&p.time_interval), num_interval(&p.ratio_interval, 2))
+                    }
                     None => "n/a".to_owned(),
                 });
             }
@@ -115,16 +177,25 @@ pub fn chart(points: &Points, group: &str, clippers: &[String]) -> Chart {
     let series = clippers
         .iter()
         .filter_map(|c| {
-            let pts: Vec<(f64, f64)> = points
+            let drawn: Vec<(f64, &Point)> = points
                 .iter()
-                .filter(|((g, o, _, k), _)| g == group && o == op && k == c)
-                .map(|((_, _, s, _), p)| (*s as f64, p.time_ns / 1e3))
+                .filter(|((g, o, _, k), p)| g == group && o == op && k == c && p.trusted())
+                .map(|((_, _, s, _), p)| (*s as f64, p))
                 .collect();
-            (!pts.is_empty()).then(|| Series { label: c.clone(), colour: clipper_colour(c), points: pts, paper: false })
+            let pts = drawn.iter().map(|(s, p)| (*s, p.time_ns / 1e3)).collect();
+            let spread =
+                drawn.iter().map(|(s, p)| (*s, p.time_interval.low / 1e3, p.time_interval.high / 1e3)).collect();
+            (!drawn.is_empty()).then(|| Series {
+                label: c.clone(),
+                colour: clipper_colour(c),
+                points: pts,
+                paper: false,
+                spread,
+            })
         })
         .collect();
     Chart {
-        title: format!("bench, {group}: intersection time per call against subject size"),
+        title: format!("bench, {group}: intersection time per call against subject size (bars: 95% intervals)"),
         x_label: "subject polygon edges (log scale)".to_owned(),
         y_label: "time per call (µs, log scale)".to_owned(),
         log_x: true,
@@ -141,8 +212,9 @@ pub fn chart(points: &Points, group: &str, clippers: &[String]) -> Chart {
     }
 }
 
-/// The ratios the issue asks to quote: `vatti` against Clipper2 and geo at 4, 20, 100, 200 edges
-/// and the largest size, per group, intersection.
+/// The ratios the issue asks to quote: `vatti` against Clipper2 (with its interval) and geo at 4,
+/// 20, 100, 200 edges and the largest size, per group, intersection; then at how many sizes
+/// `vatti` is faster than Clipper2, counting only sizes whose interval excludes 1.
 pub fn vatti_ratios(points: &Points, groups: &[String]) -> String {
     let op = "intersection";
     let mut text = String::new();
@@ -154,10 +226,27 @@ pub fn vatti_ratios(points: &Points, groups: &[String]) -> String {
         for s in [4, 20, 100, 200, largest].into_iter().filter(|s| sizes.contains(s)).collect::<BTreeSet<_>>() {
             let key = |c: &str| (g.clone(), op.to_owned(), s, c.to_owned());
             let (Some(v), Some(geo)) = (points.get(&key("vatti")), points.get(&key("geo"))) else { continue };
-            parts.push(format!("{s}: {} x clipper2, {} x geo", num(v.ratio, 2), num(v.time_ns / geo.time_ns, 2)));
+            if !(v.trusted() && geo.trusted()) {
+                continue;
+            }
+            parts.push(format!(
+                "{s}: {} x clipper2, {} x geo",
+                num_interval(&v.ratio_interval, 2),
+                num(v.time_ns / geo.time_ns, 2)
+            ));
         }
+        let ratios: Vec<&Interval> = points
+            .iter()
+            .filter(|((gg, o, _, c), p)| gg == g && o == op && c == "vatti" && p.trusted())
+            .map(|(_, p)| &p.ratio_interval)
+            .collect();
+        let sides = Sides::of_time_ratios(ratios);
         if !parts.is_empty() {
-            text.push_str(&format!("- {g}: vatti at {}.\n", parts.join("; ")));
+            text.push_str(&format!(
+                "- {g}: vatti at {}; against clipper2 {}.\n",
+                parts.join("; "),
+                sides.sentence("sizes")
+            ));
         }
     }
     text
@@ -176,10 +265,12 @@ pub fn rect_clip_ratios(points: &Points, groups: &[String]) -> String {
         let mut parts = Vec::new();
         for s in sizes {
             let key = |c: &str| (g.clone(), op.to_owned(), s, c.to_owned());
-            let Some(peer) = points.get(&key(RECT_PEER)) else { continue };
+            let Some(peer) = points.get(&key(RECT_PEER)).filter(|p| p.trusted()) else { continue };
             let ours: Vec<String> = ["sutherland-hodgman", "rect-four-state"]
                 .iter()
-                .filter_map(|c| points.get(&key(c)).map(|p| format!("{c} {}", num(p.ratio / peer.ratio, 2))))
+                .filter_map(|c| {
+                    points.get(&key(c)).filter(|p| p.trusted()).map(|p| format!("{c} {}", num(p.ratio / peer.ratio, 2)))
+                })
                 .collect();
             if !ours.is_empty() {
                 parts.push(format!("{s}: {}", ours.join(", ")));
@@ -244,16 +335,22 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     }
     let memory = read_memory(out)?;
     let points = points(&rows);
+    write_csv(&out.join(POINTS_CSV), &point_records(&points))?;
     let groups = order(&rows, |r| r.workload.as_str());
     let clippers = order(&rows, |r| r.clipper.as_str());
     let ops = order(&rows, |r| r.op.as_str());
     let (_, notes) = provenance_line(&out.join(META))?;
     let mut text = format!(
         "## Bench: the polygon clippers against geo and Clipper2\n\n\
-         Time per call (mean over the group's cases of the median over interleaved rounds) and, in brackets, the \
-         ratio to `{BASELINE}` measured in the same run (geometric mean over cases; below 1 is faster than \
-         Clipper2). Operands read under even-odd (`clipper1`, which reads only non-zero, is timed where every operand covers the same region under both rules). ¹ marks a point over the time cap, timed once; n/a: not run (the \
-         clipper does not take that window, or it was skipped after the cap: see the notes).\n\n\
+         Time per call (mean over the group's cases of the median over interleaved rounds), then `x` the ratio to \
+         `{BASELINE}` measured in the same run (geometric mean over cases of the ratio of medians; below 1 is faster \
+         than Clipper2). Each figure carries its 95% interval in brackets: a seeded bootstrap over the cases and \
+         the rounds, so two figures whose intervals overlap may not differ at all (every point with its \
+         interval: `{POINTS_CSV}`; the plots draw the time's interval as a bar). Operands read under even-odd (`clipper1`, which reads only non-zero, is timed where every operand covers the same region under both rules). ¹ marks a point over the time cap, timed once; n/a: not run (the \
+         clipper does not take that window, or it was skipped after the cap: see the notes). Every result timed \
+         was checked first (the exact oracle, or its area against the exact area where the oracle's sweep is too \
+         costly); \"wrong on k of n cases\" stands where a clipper answered wrongly, and its times there count in \
+         no ratio.\n\n\
          Ratios of `vatti` at 4, 20, 100, 200 edges and the largest size (intersection):\n\n{}\n\
          Sutherland-Hodgman and four-state on rectangle windows against Clipper2's rectangle clipper \
          (`clipper2-rect`, RectClip64), measured in the same run:\n\n{}\n{notes}\n",
@@ -295,6 +392,7 @@ mod tests {
             repetition: rep,
             iterations: 1,
             time_ns: ns,
+            correct: None,
         }
     }
 
@@ -313,7 +411,67 @@ mod tests {
         assert!((v.ratio - 1.0).abs() < 1e-12, "geometric mean of 0.5 and 2");
         assert_eq!(v.time_ns, 1025.0);
         let text = vatti_ratios(&p, &["star".to_owned()]);
-        assert!(text.contains("20: 1.00 x clipper2, 0.47 x geo"), "{text}");
+        // Two cases at 0.5 and 2: a resample of cases can hold either twice.
+        assert!(text.contains("20: 1.00 (0.50-2.00) x clipper2, 0.47 x geo"), "{text}");
+    }
+
+    #[test]
+    fn faster_at_k_of_n_counts_only_sizes_whose_interval_excludes_one() {
+        // A synthetic bench.csv: vatti at half Clipper2's time at 4 edges, twice at 100, and at
+        // 20 edges 0.9 on the median but with rounds from 0.6 to 1.4: not a win.
+        let mut rows = Vec::new();
+        let noisy = [0.6, 0.9, 1.4, 0.7, 1.3, 0.8, 1.2];
+        for (size, factors) in [(4, [0.5; 7]), (20, noisy), (100, [2.0; 7])] {
+            for case in ["0", "1", "2"] {
+                for (rep, f) in factors.iter().enumerate() {
+                    let at = |clipper: &str, ns: f64| Measurement { size, ..m(clipper, case, rep, ns) };
+                    rows.extend([at("clipper2", 1000.0), at("vatti", 1000.0 * f), at("geo", 3000.0)]);
+                }
+            }
+        }
+        let dir = std::env::temp_dir().join(format!("clipbench-wording-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        crate::measure::raw::write_csv(&dir.join(CSV), &rows).unwrap();
+        let read: Vec<Measurement> = read_csv(&dir.join(CSV)).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let p = points(&read);
+        let at = |size| p[&("star".to_owned(), "intersection".to_owned(), size, "vatti".to_owned())].ratio_interval;
+        assert!(at(4).below(1.0) && at(100).above(1.0), "{:?} {:?}", at(4), at(100));
+        assert!(at(20).estimate < 1.0 && at(20).low < 1.0 && at(20).high > 1.0, "{:?}", at(20));
+        let text = vatti_ratios(&p, &["star".to_owned()]);
+        assert!(
+            text.contains("against clipper2 faster at 1 of 3 sizes, slower at 1, indistinguishable at 1"),
+            "{text}"
+        );
+        // The intervals reach bench-points.csv and the plot's bars.
+        let records = point_records(&p);
+        let vatti_at_4 = records.iter().find(|r| r.clipper == "vatti" && r.size == 4).unwrap();
+        assert!(vatti_at_4.ratio_high.is_some_and(|h| h < 1.0), "{vatti_at_4:?}");
+        let chart = chart(&p, "star", &["vatti".to_owned()]);
+        assert_eq!(chart.series[0].spread.len(), 3);
+    }
+
+    #[test]
+    fn a_wrong_case_takes_the_point_out_of_the_ratios_and_tables() {
+        let wrong = |r: Measurement| Measurement { correct: Some(false), ..r };
+        let rows = vec![
+            m("clipper2", "0", 0, 100.0),
+            m("clipper2", "1", 0, 1000.0),
+            m("vatti", "0", 0, 50.0),
+            wrong(m("vatti", "1", 0, 20.0)),
+            m("geo", "0", 0, 400.0),
+            m("geo", "1", 0, 4000.0),
+        ];
+        let p = points(&rows);
+        let v = &p[&("star".into(), "intersection".into(), 20, "vatti".into())];
+        assert!(!v.trusted() && v.ratio.is_nan() && v.wrong_cases == 1 && v.cases == 2, "{v:?}");
+        assert!(p[&("star".into(), "intersection".into(), 20, "geo".into())].trusted());
+        assert_eq!(vatti_ratios(&p, &["star".to_owned()]), "");
+        let clippers = ["clipper2", "vatti", "geo"].map(String::from);
+        let t = group_table(&p, "star", "intersection", &clippers).unwrap();
+        assert!(t.contains("| wrong on 1 of 2 cases |"), "{t}");
+        let chart = chart(&p, "star", &clippers);
+        assert!(chart.series.iter().all(|s| s.label != "vatti"), "a wrong point is not drawn");
     }
 
     #[test]

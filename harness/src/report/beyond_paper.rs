@@ -221,6 +221,7 @@ pub fn chart(rows: &[Row], set: &str) -> Chart {
                 colour: clipper_colour(c),
                 points,
                 paper: false,
+                spread: Vec::new(),
             })
         })
         .collect();
@@ -351,6 +352,7 @@ mod tests {
             repetition: 0,
             iterations: 100,
             time_ns: ns,
+            correct: None,
         }
     }
 

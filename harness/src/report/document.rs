@@ -2,7 +2,9 @@
 
 use std::path::Path;
 
-use super::{bench_tables, beyond_paper, lecture_curves, lecture_sh, lecture_text, oracle_failures, table3, table4};
+use super::{
+    bench_tables, beyond_paper, lecture_curves, lecture_sh, lecture_text, oracle_failures, summary, table3, table4,
+};
 use crate::cli_error::CliError;
 use crate::write::write_file;
 
@@ -11,8 +13,9 @@ pub const REPORT_FILE: &str = "REPORT.md";
 
 /// Writes REPORT.md from the CSVs in `out` (re-drawing the plots it links).
 pub fn write(out: &Path) -> Result<(), CliError> {
-    // The oracle failures first: the table a user opens to learn which clipper to trust.
+    // The summary first (trust and speed side by side), then the oracle failures behind it.
     let sections: Vec<String> = [
+        summary::section(out)?,
         oracle_failures::section(out)?,
         table3::section(out)?,
         table4::section(out)?,

@@ -230,7 +230,7 @@ pub fn chart(timings: &[CurveTiming], workload: &str, window: &str) -> Chart {
                     Some(((lo * hi).sqrt(), m.0))
                 })
                 .collect();
-            Series { label, colour: clipper_colour(&colour_name), points, paper: false }
+            Series { label, colour: clipper_colour(&colour_name), points, paper: false, spread: Vec::new() }
         })
         .collect();
     Chart {

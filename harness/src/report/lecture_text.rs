@@ -29,7 +29,13 @@ pub fn chart(rows: &[TextTiming]) -> Chart {
             let mut points: Vec<(f64, f64)> =
                 rows.iter().filter(|r| r.strategy == s).map(|r| (r.window_side, r.ns_per_char)).collect();
             points.sort_by(|a, b| a.0.total_cmp(&b.0));
-            Series { label: s.to_owned(), colour: clipper_colour(s), points, paper: false }
+            Series {
+                label: s.to_owned(),
+                colour: clipper_colour(&format!("text-{s}")),
+                points,
+                paper: false,
+                spread: Vec::new(),
+            }
         })
         .collect();
     Chart {
@@ -214,6 +220,7 @@ mod tests {
             repetition: rep,
             iterations: 1,
             time_ns: ns,
+            correct: None,
         }
     }
 

@@ -1,5 +1,7 @@
 //! Markdown tables and number formats shared by the report sections.
 
+use crate::measure::interval::Interval;
+
 /// A markdown table: a header row and body rows, every cell already formatted.
 pub fn table(header: &[String], rows: &[Vec<String>]) -> String {
     let line = |cells: &[String]| format!("| {} |\n", cells.join(" | "));
@@ -38,6 +40,35 @@ pub fn duration_ns(ns: f64) -> String {
     }
 }
 
+/// A figure with its interval, `0.82 (0.79-0.85)`, or "n/a".
+pub fn num_interval(i: &Interval, decimals: usize) -> String {
+    if i.estimate.is_nan() {
+        "n/a".to_owned()
+    } else {
+        format!("{} ({}-{})", num(i.estimate, decimals), num(i.low, decimals), num(i.high, decimals))
+    }
+}
+
+/// A time in nanoseconds with its interval in the estimate's unit, `1.5 µs (1.4-1.7)`.
+pub fn duration_interval_ns(i: &Interval) -> String {
+    let shown = duration_ns(i.estimate);
+    let Some((_, unit)) = shown.split_once(' ') else { return shown };
+    let scale = match unit {
+        "s" => 1e9,
+        "ms" => 1e6,
+        "µs" => 1e3,
+        _ => 1.0,
+    };
+    let decimals = if unit == "µs" {
+        1
+    } else if unit == "ns" {
+        0
+    } else {
+        2
+    };
+    format!("{shown} ({}-{})", num(i.low / scale, decimals), num(i.high / scale, decimals))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -51,5 +82,9 @@ mod tests {
         assert_eq!(duration_ns(1_500.0), "1.5 µs");
         assert_eq!(duration_ns(2_340_000.0), "2.34 ms");
         assert_eq!(duration_ns(12.0), "12 ns");
+        let i = Interval { estimate: 0.82, low: 0.79, high: 0.851 };
+        assert_eq!(num_interval(&i, 2), "0.82 (0.79-0.85)");
+        assert_eq!(duration_interval_ns(&i.scaled(2e3)), "1.6 µs (1.6-1.7)");
+        assert_eq!(num_interval(&Interval::exact(f64::NAN), 2), "n/a");
     }
 }

@@ -10,8 +10,10 @@ pub mod lecture_text;
 pub mod markdown;
 mod oracle_failures;
 mod provenance_line;
+pub mod summary;
 pub mod table3;
 pub mod table4;
+pub mod wording;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

@@ -4,9 +4,11 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use super::markdown::{header, num, table};
+use super::markdown::{header, num, num_interval, table};
 use super::provenance_line::provenance_line;
+use super::wording::Sides;
 use crate::cli_error::CliError;
+use crate::measure::interval::{CaseSamples, Interval, bootstrap, mean_ratio, seed_of};
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::{mean, median};
 use crate::papers::{VATTI_TABLE3, vatti_row};
@@ -32,17 +34,19 @@ pub struct Row {
     pub method2: [f64; 3],
     /// Method 2 / Method 1 per case, averaged over cases (as the paper averages): clip, fill, total.
     pub improvement: [f64; 3],
+    /// [`Row::improvement`] with 95% bootstrap intervals over cases and repetitions.
+    pub improvement_interval: [Interval; 3],
 }
 
-/// Method 1's and Method 2's clip, fill and total medians on one case.
-type MethodPair = ([f64; 3], [f64; 3]);
+/// Method 1's and Method 2's clip, fill and total repetitions on one case.
+type MethodPair = ([Vec<f64>; 3], [Vec<f64>; 3]);
 
 /// Method 1's and Method 2's raw rows of one case.
 type CaseRows<'a> = (Vec<&'a Measurement>, Vec<&'a Measurement>);
 
-/// The medians of one method on one case: clip, fill, total (µs). Total is the median of the
-/// per-repetition sums, the two phases of one repetition having run back to back.
-fn case_medians(rows: &[&Measurement]) -> [f64; 3] {
+/// The repetitions of one method on one case: clip, fill, total (µs). Total is the per-repetition
+/// sum, the two phases of one repetition having run back to back.
+fn case_samples(rows: &[&Measurement]) -> [Vec<f64>; 3] {
     let mut clip = BTreeMap::new();
     let mut fill = BTreeMap::new();
     for r in rows {
@@ -52,7 +56,7 @@ fn case_medians(rows: &[&Measurement]) -> [f64; 3] {
     let totals: Vec<f64> = clip.iter().filter_map(|(k, c)| fill.get(k).map(|f| c + f)).collect();
     let clip: Vec<f64> = clip.into_values().collect();
     let fill: Vec<f64> = fill.into_values().collect();
-    [median(&clip), median(&fill), median(&totals)]
+    [clip, fill, totals]
 }
 
 /// Computes the table from raw rows.
@@ -69,19 +73,26 @@ pub fn rows(measurements: &[Measurement]) -> Vec<Row> {
     let mut by_size: BTreeMap<usize, Vec<MethodPair>> = BTreeMap::new();
     for ((size, _), (m1, m2)) in &by_case {
         if !m1.is_empty() && !m2.is_empty() {
-            by_size.entry(*size).or_default().push((case_medians(m1), case_medians(m2)));
+            by_size.entry(*size).or_default().push((case_samples(m1), case_samples(m2)));
         }
     }
     by_size
         .into_iter()
         .map(|(edges, cases)| {
             let avg = |f: &dyn Fn(&MethodPair) -> f64| mean(&cases.iter().map(f).collect::<Vec<_>>());
+            let improvement_interval = [0, 1, 2].map(|i| {
+                let samples: Vec<CaseSamples> =
+                    cases.iter().map(|c| CaseSamples { times: &c.1[i], baseline: Some(&c.0[i]) }).collect();
+                bootstrap(&samples, seed_of(&format!("vatti-t3/{edges}/{i}")), mean_ratio)
+                    .unwrap_or(Interval::exact(f64::NAN))
+            });
             Row {
                 edges,
                 cases: cases.len(),
-                method1: [0, 1, 2].map(|i| avg(&|c| c.0[i])),
-                method2: [0, 1, 2].map(|i| avg(&|c| c.1[i])),
-                improvement: [0, 1, 2].map(|i| avg(&|c| c.1[i] / c.0[i])),
+                method1: [0, 1, 2].map(|i| avg(&|c| median(&c.0[i]))),
+                method2: [0, 1, 2].map(|i| avg(&|c| median(&c.1[i]))),
+                improvement: improvement_interval.map(|i| i.estimate),
+                improvement_interval,
             }
         })
         .collect()
@@ -110,8 +121,8 @@ pub fn markdown_table(rows: &[Row]) -> String {
             let paper = vatti_row(r.edges).map_or([f64::NAN; 3], |p| p.improvement);
             let mut cells = vec![r.edges.to_string()];
             cells.extend(r.method1.iter().chain(&r.method2).map(|v| num(*v, 1)));
-            for (ours, theirs) in r.improvement.iter().zip(paper) {
-                cells.push(format!("**{}**", num(*ours, 2)));
+            for (ours, theirs) in r.improvement_interval.iter().zip(paper) {
+                cells.push(format!("**{}**", num_interval(ours, 2)));
                 cells.push(num(theirs, 2));
             }
             cells
@@ -130,6 +141,7 @@ pub fn chart(rows: &[Row]) -> Chart {
             colour: FACTORS[i],
             points: rows.iter().map(|r| (r.edges as f64, r.improvement[i])).collect(),
             paper: false,
+            spread: Vec::new(),
         });
     }
     for i in 0..3 {
@@ -138,6 +150,7 @@ pub fn chart(rows: &[Row]) -> Chart {
             colour: FACTORS[i],
             points: VATTI_TABLE3.iter().map(|r| (r.edges as f64, r.improvement[i])).collect(),
             paper: true,
+            spread: Vec::new(),
         });
     }
     Chart {
@@ -167,27 +180,34 @@ pub fn reading(rows: &[Row]) -> String {
             "stays about level"
         }
     };
+    // Ours moves only when the two sizes' intervals do not overlap.
+    let our_trend = |a: &Interval, b: &Interval| {
+        if b.low > a.high {
+            "grows"
+        } else if b.high < a.low {
+            "falls"
+        } else {
+            "does not move beyond its intervals"
+        }
+    };
     let mut text = String::new();
     for (i, name) in ["clip", "fill", "total"].iter().enumerate() {
-        let (a, b) = (first.improvement[i], last.improvement[i]);
+        let (a, b) = (&first.improvement_interval[i], &last.improvement_interval[i]);
         let (pa, pb) = (paper(first.edges, i), paper(last.edges, i));
         text.push_str(&format!(
             "- Our {name} improvement factor {} from {} at {} edges to {} at {}; the paper's {} from {} to {}.\n",
-            trend(a, b),
-            num(a, 2),
+            our_trend(a, b),
+            num_interval(a, 2),
             first.edges,
-            num(b, 2),
+            num_interval(b, 2),
             last.edges,
             trend(pa, pb),
             num(pa, 2),
             num(pb, 2)
         ));
     }
-    let wins = rows.iter().filter(|r| r.improvement[2] > 1.0).count();
-    text.push_str(&format!(
-        "- Method 1 is faster in total at {wins} of {} sizes (the paper: at all six).\n",
-        rows.len()
-    ));
+    let totals = Sides::of_speedups(rows.iter().map(|r| &r.improvement_interval[2]));
+    text.push_str(&format!("- In total, Method 1 is {} (the paper: faster at all six).\n", totals.sentence("sizes")));
     let beats_fill = rows.iter().filter(|r| r.method1[2] < r.method2[1]).count();
     text.push_str(&format!(
         "- The paper notes that Method 1's clip and fill together take less than Method 2's fill alone; here that holds \
@@ -245,7 +265,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          (intersection, even-odd) by one fixed convex window: {window}. Method 1: `vatti` trapezoids + \
          `clip_raster::fill_trapezoids`. Method 2: `sutherland-hodgman` + `clip_raster::fill_polygons`. Times are the \
          median over {reps} interleaved repetitions, averaged over the cases; factors are Method 2 / Method 1 per case, \
-         averaged over the cases as in the paper (its times are machine cycles on a MIPS R2000, so only its factors \
+         averaged over the cases as in the paper, each with its 95% interval in brackets (a seeded bootstrap over the \
+         cases and repetitions; a size counts as faster only where the interval excludes 1) (its times are machine cycles on a MIPS R2000, so only its factors \
          compare). Both pipelines were checked to light identical pixels at every size before timing \
          (`{PIXELS_CSV}`).\n\n{}\n![improvement factors against edges]({PLOT})\n\n{}\n{}\n",
         markdown_table(&rows),
@@ -270,6 +291,7 @@ mod tests {
             repetition,
             iterations: 1,
             time_ns,
+            correct: None,
         }
     }
 
@@ -293,6 +315,7 @@ mod tests {
         assert_eq!(rows[0].method1, [2.0, 2.0, 4.0]);
         assert_eq!(rows[0].cases, 2);
         let text = reading(&rows);
-        assert!(text.contains("at 1 of 1 sizes"), "{text}");
+        // Every repetition alike: the intervals are the figures themselves.
+        assert!(text.contains("faster at 1 of 1 sizes, slower at 0, indistinguishable at 0"), "{text}");
     }
 }

@@ -381,6 +381,7 @@ pub fn chart(rows: &[Row]) -> Chart {
             colour: SIZE_ROWS[i],
             points: ours,
             paper: false,
+            spread: Vec::new(),
         });
     }
     for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
@@ -390,6 +391,7 @@ pub fn chart(rows: &[Row]) -> Chart {
             colour: SIZE_ROWS[i],
             points: paper,
             paper: true,
+            spread: Vec::new(),
         });
     }
     Chart {
@@ -544,6 +546,7 @@ mod tests {
             repetition: rep,
             iterations: 1,
             time_ns: ms * 1e6,
+            correct: None,
         }
     }
 

@@ -134,6 +134,7 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
                         repetition,
                         iterations: batch.len() as u32,
                         time_ns: took.as_nanos() as f64 / batch.len() as f64,
+                        correct: None,
                     });
                 }
             }

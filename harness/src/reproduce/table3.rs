@@ -83,6 +83,7 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
                     repetition,
                     iterations,
                     time_ns,
+                    correct: None,
                 };
                 rows.push(row("clip", clip_ns, case.clip_iterations[method]));
                 rows.push(row("fill", fill_ns, 1));

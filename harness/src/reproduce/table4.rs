@@ -114,6 +114,7 @@ pub fn measure(settings: &Settings, out: &Path) -> Result<(), CliError> {
                     repetition,
                     iterations: 1,
                     time_ns: took.as_nanos() as f64,
+                    correct: None,
                 });
             }
         }

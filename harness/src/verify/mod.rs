@@ -2,6 +2,7 @@
 //! supports, against the exact oracles and against each other, in parallel and deterministic per
 //! seed whatever the thread count.
 
+mod case_geojson;
 mod curve_runs;
 mod finding;
 mod line_runs;

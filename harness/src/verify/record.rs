@@ -1,5 +1,6 @@
 //! Turns a failure into a folder a person can look at and replay: the case regenerated and
-//! shrunk, inputs and every clipper's output as WKT, a case file, an SVG picture, a replay line.
+//! shrunk, inputs and every clipper's output as WKT, a case file, an SVG picture, the case as
+//! GeoJSON (`case.geojson`, for QGIS or geojson.io), a replay line.
 
 use std::path::{Path, PathBuf};
 
@@ -9,6 +10,7 @@ use clip_testkit::shrink::{shrink_polygons, shrink_segments};
 use clip_testkit::workload::{CURVES_PER_CASE, curve_case, line_case, polygon_case};
 use serde::{Deserialize, Serialize};
 
+use super::case_geojson::{Layer, case_geojson};
 use super::curve_runs::{case_objects, curve_failure, run_objects};
 use super::finding::{Finding, Kind, window_name};
 use super::polygon_runs::takes;
@@ -184,6 +186,9 @@ fn polygon_files(
     }
     let named: Vec<(&str, &Polygons)> = outputs.iter().map(|(n, p)| (n.as_str(), p)).collect();
     files.push(("picture.svg".into(), polygons_svg(&subject, &clip, &named)));
+    let mut layers = vec![Layer::Rings("subject", "subject", &subject), Layer::Rings("clip", "clip", &clip)];
+    layers.extend(named.iter().map(|(n, p)| Layer::Rings("output", n, p)));
+    files.push(("case.geojson".into(), case_geojson(&layers, Some(fill.name()))));
     Ok(files)
 }
 
@@ -220,6 +225,12 @@ fn line_files(
     }
     let named: Vec<(&str, &[VisiblePiece])> = outputs.iter().map(|(n, p)| (*n, p.as_slice())).collect();
     files.push(("picture.svg".into(), lines_svg(&window, &segments, &named)));
+    let pieces: Vec<(&str, Vec<Segment>)> =
+        named.iter().map(|(n, p)| (*n, p.iter().map(|v| v.piece).collect())).collect();
+    let mut layers =
+        vec![Layer::Rings("window", "window", &window), Layer::Segments("segments", "segments", &segments)];
+    layers.extend(pieces.iter().map(|(n, p)| Layer::Segments("output", n, p)));
+    files.push(("case.geojson".into(), case_geojson(&layers, None)));
     Ok(files)
 }
 
