@@ -241,14 +241,17 @@ pub fn line_oracle(
     })
 }
 
-/// Whether two line clippers see the same visible intervals, within the looser tolerance.
+/// Whether two line clippers see the same visible intervals in `window`, within the looser
+/// tolerance.
 pub fn lines_agree(
     x: (&LineEntry, &[VisiblePiece]),
     y: (&LineEntry, &[VisiblePiece]),
+    window: &Polygons,
     segments: &[Segment],
 ) -> Result<(), Failure> {
     let allowed = x.0.tolerance.max(y.0.tolerance);
-    let (a, b) = (pieces_to_intervals(segments, x.1), pieces_to_intervals(segments, y.1));
+    let bounds = window.bounds();
+    let (a, b) = (pieces_to_intervals(&bounds, segments, x.1), pieces_to_intervals(&bounds, segments, y.1));
     for (i, (ia, ib)) in a.iter().zip(&b).enumerate() {
         let close = ia.len() == ib.len()
             && ia.iter().zip(ib).all(|(p, q)| (p.0 - q.0).abs() <= allowed && (p.1 - q.1).abs() <= allowed);

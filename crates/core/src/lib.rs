@@ -86,7 +86,7 @@ pub use polygons::Polygons;
 pub use predicates::{LineSide, Orientation, SegmentIntersection, orient, segment_intersection};
 pub use rect::Rect;
 pub use ring::Ring;
-pub use segment::Segment;
+pub use segment::{FAR_REACH, Segment};
 pub use trapezoid::Trapezoid;
 pub use winding::{Location, edge_winding, locate, ring_winding, winding_number};
 pub use window_rings::WindowRings;

@@ -68,7 +68,7 @@ impl LinePlan<'_> {
                     let (Some(px), Some(py)) = (&outputs[x], &outputs[y]) else { continue };
                     // A pair where one result failed the oracle is that result's failure.
                     let verdict = if passed[x] && passed[y] {
-                        lines_agree((self.entries[x], px), (self.entries[y], py), &case.segments)
+                        lines_agree((self.entries[x], px), (self.entries[y], py), &case.window, &case.segments)
                     } else {
                         Ok(())
                     };

@@ -84,7 +84,7 @@ pub fn line_failure(registry: &Registry, target: Target, window: &Polygons, segm
                 return None;
             }
             let (a, b) = (checked(entry).ok()?, checked(other).ok()?);
-            lines_agree((entry, &a), (other, &b), segments).err()
+            lines_agree((entry, &a), (other, &b), window, segments).err()
         }
     }
 }
