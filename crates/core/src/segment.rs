@@ -119,32 +119,39 @@ impl Segment {
         }
         let e = bounds.extent();
         let (lo, hi) = (Point::new(bounds.min.x - e, bounds.min.y - e), Point::new(bounds.max.x + e, bounds.max.y + e));
-        let corners = [lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)];
-        let f = corners.map(|c| crate::predicates::orient2d(self.a, self.b, c));
         let d = self.b - self.a;
-        // Order along the segment by its major coordinate (monotone along the line).
-        let key = |p: Point| if d.x.abs() >= d.y.abs() { p.x * d.x.signum() } else { p.y * d.y.signum() };
-        let (mut first, mut last): (Option<Point>, Option<Point>) = (None, None);
-        for i in 0..4 {
-            let (c, next, fc, fnext) = (corners[i], corners[(i + 1) % 4], f[i], f[(i + 1) % 4]);
-            let crossing = if fc == 0.0 {
-                c
-            } else if fnext != 0.0 && (fc > 0.0) != (fnext > 0.0) {
-                c.lerp(next, fc / (fc - fnext))
-            } else {
-                continue;
-            };
-            if first.is_none_or(|p| key(crossing) < key(p)) {
-                first = Some(crossing);
-            }
-            if last.is_none_or(|p| key(crossing) > key(p)) {
-                last = Some(crossing);
-            }
-        }
-        let (Some(enter), Some(leave)) = (first, last) else { return *self };
-        let start = if key(self.a) > key(enter) { self.a } else { enter };
-        let end = if key(self.b) < key(leave) { self.b } else { leave };
-        if key(start) >= key(end) {
+        let crossings: Vec<Point> = if d.y == 0.0 {
+            // An axis-parallel line crosses the box at its own y (or x), exactly.
+            let on = (lo.y..=hi.y).contains(&self.a.y);
+            if on { vec![Point::new(lo.x, self.a.y), Point::new(hi.x, self.a.y)] } else { Vec::new() }
+        } else if d.x == 0.0 {
+            let on = (lo.x..=hi.x).contains(&self.a.x);
+            if on { vec![Point::new(self.a.x, lo.y), Point::new(self.a.x, hi.y)] } else { Vec::new() }
+        } else {
+            let corners = [lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)];
+            let f = corners.map(|c| crate::predicates::orient2d(self.a, self.b, c));
+            (0..4)
+                .filter_map(|i| {
+                    let (c, next, fc, fnext) = (corners[i], corners[(i + 1) % 4], f[i], f[(i + 1) % 4]);
+                    if fc == 0.0 {
+                        Some(c)
+                    } else if fnext != 0.0 && (fc > 0.0) != (fnext > 0.0) {
+                        Some(c.lerp(next, fc / (fc - fnext)))
+                    } else {
+                        None
+                    }
+                })
+                .collect()
+        };
+        // Ordered along the segment by its major coordinate (monotone along the line).
+        let key = |p: &Point| if d.x.abs() >= d.y.abs() { p.x * d.x.signum() } else { p.y * d.y.signum() };
+        let by_key = |p: &&Point, q: &&Point| key(p).total_cmp(&key(q));
+        let (Some(&enter), Some(&leave)) = (crossings.iter().min_by(by_key), crossings.iter().max_by(by_key)) else {
+            return *self;
+        };
+        let start = if key(&self.a) > key(&enter) { self.a } else { enter };
+        let end = if key(&self.b) < key(&leave) { self.b } else { leave };
+        if key(&start) >= key(&end) {
             return *self;
         }
         Segment::new(start, end)
