@@ -6,7 +6,7 @@ its own, so its output is declared "bridged"), and segments against rectangle wi
 (Liang-Barsky, boundary included), except on some requests, counted across all its restarts in
 a state file: on the CRASH-th it exits, on the HANG-th it never answers, on the GARBAGE-th it
 writes a line that is not JSON, on the WRONG_ID-th it answers with another request's id, on the
-BAD_TIME-th it reports its own time as -5 ns, and from the LIE-th on it answers every polygon
+BAD_TIME-th it answers right but reports its own time as -5 ns, and from the LIE-th on it answers every polygon
 request with the subject unclipped (with LIE it declares all four operations, so that its area
 identities are checked too). 0 (or leaving the last ones out) turns a fault off.
 
@@ -134,7 +134,9 @@ def main():
             print(json.dumps({"id": request["id"] + 1000, "rings": []}), flush=True)
             continue
         if n == bad_time:
-            print(json.dumps({"id": request["id"], "rings": [], "time_ns": -5}), flush=True)
+            # A right answer: only its time is impossible.
+            key, result = ("pieces", clip_lines(request)) if "segments" in request else ("rings", clip(request))
+            print(json.dumps({"id": request["id"], key: result, "time_ns": -5}), flush=True)
             continue
         if lie and n >= lie and "subject" in request:
             print(json.dumps({"id": request["id"], "rings": request["subject"]}), flush=True)
