@@ -63,7 +63,7 @@ pub fn run(args: &MergeArgs) -> Result<ExitCode, CliError> {
         for row in &part.results.rows {
             match rows.iter_mut().find(|r| r.clipper == row.clipper && r.kind == row.kind && r.workload == row.workload)
             {
-                Some(r) => add_row(r, row),
+                Some(r) => r.add(row),
                 None => rows.push(row.clone()),
             }
         }
@@ -188,19 +188,6 @@ fn without_partition(parameters: &serde_json::Value) -> serde_json::Value {
         map.remove("partition");
     }
     p
-}
-
-fn add_row(into: &mut VerifyRow, row: &VerifyRow) {
-    into.cases += row.cases;
-    into.runs += row.runs;
-    into.oracle_failures += row.oracle_failures;
-    into.identity_failures += row.identity_failures;
-    for (name, n) in &row.disagreements {
-        *into.disagreements.entry(name.clone()).or_default() += n;
-    }
-    if let Some(b) = row.bridges {
-        into.bridges = Some(into.bridges.unwrap_or(0) + b);
-    }
 }
 
 /// Copies a failure folder from a part's failures folder `from` into `to`, its replay command

@@ -67,6 +67,22 @@ pub struct VerifyRow {
     pub bridges: Option<usize>,
 }
 
+impl VerifyRow {
+    /// Adds another part's counts of the same clipper, kind and workload.
+    pub fn add(&mut self, other: &VerifyRow) {
+        self.cases += other.cases;
+        self.runs += other.runs;
+        self.oracle_failures += other.oracle_failures;
+        self.identity_failures += other.identity_failures;
+        for (name, n) in &other.disagreements {
+            *self.disagreements.entry(name.clone()).or_default() += n;
+        }
+        if let Some(b) = other.bridges {
+            self.bridges = Some(self.bridges.unwrap_or(0) + b);
+        }
+    }
+}
+
 /// One shrunk failure case written under [`FAILURES`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CaseEntry {
