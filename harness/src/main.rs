@@ -7,7 +7,9 @@ use clap::{Parser, Subcommand};
 
 use clipbench::cli_error::CliError;
 use clipbench::registry::Registry;
-use clipbench::{bench, checks, clip, conformance, external, merge, registry, report, reproduce, text_cmd, verify};
+use clipbench::{
+    bench, checks, clip, conformance, external, hostile, merge, referee, registry, report, reproduce, text_cmd, verify,
+};
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
 /// Clipper2), and one-off clipping of WKT/GeoJSON files.
@@ -37,6 +39,12 @@ enum Command {
     /// Every polygon clipper against geo and Clipper2 on the workloads, as ratios measured in one
     /// run, with log-log scaling plots and peak memory of the large cases.
     Bench(bench::BenchArgs),
+    /// Every polygon clipper on the fixed hostile and degenerate set: how often each is right,
+    /// wrong, refuses, crashes or hangs.
+    Hostile(hostile::HostileArgs),
+    /// An exact external clipper (adapters/cgal) as a referee of the oracle: its result areas on
+    /// the polygon workloads against the oracle's region areas, beyond what rounding accounts for.
+    Referee(referee::RefereeArgs),
     /// Recompute the tables and plots from the raw CSVs of a results folder into REPORT.md.
     Report(report::ReportArgs),
     /// One string clipped to a window by one of the lecture's text strategies, drawn as SVG.
@@ -57,6 +65,12 @@ fn main() -> ExitCode {
         Command::Clip(args) => external::add_external(registry, &args.external)
             .and_then(|registry| clip::run(args, &registry))
             .map(|()| ExitCode::SUCCESS),
+        Command::Hostile(args) => {
+            external::add_external(registry, &args.external).and_then(|registry| hostile::run(args, registry))
+        }
+        Command::Referee(args) => {
+            external::add_external(registry, &args.external).and_then(|registry| referee::run(args, &registry))
+        }
         Command::Reproduce(args) => reproduce_then_report(args),
         Command::Bench(args) => bench_then_report(args, registry),
         Command::Report(args) => report::run(args),

@@ -21,7 +21,7 @@ use clip_peers::{
 };
 use clip_rect_four_state::FourState;
 use clip_sutherland_hodgman::SutherlandHodgman;
-use clip_vatti::{Vatti, VattiPrepared};
+use clip_vatti::{FixedSweep, Sweep, Vatti, VattiPrepared};
 use clip_virtual_box::VirtualBox;
 
 use crate::cli_error::CliError;
@@ -35,6 +35,7 @@ pub fn registry() -> Registry {
     Registry::default()
         .polygon(Origin::Ours, REGION_TOLERANCE, Vatti)
         .polygon(Origin::Ours, REGION_TOLERANCE, VattiPrepared)
+        .polygon(Origin::Ours, REGION_TOLERANCE, FixedSweep(Sweep::Scanbeam))
         .polygon(Origin::Ours, REGION_TOLERANCE, SutherlandHodgman::default())
         .polygon(Origin::Ours, REGION_TOLERANCE, SutherlandHodgman::SPLIT)
         .polygon(Origin::Ours, REGION_TOLERANCE, FourState)

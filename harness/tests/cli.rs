@@ -1128,3 +1128,56 @@ fn bench_help_says_why_it_is_not_partitioned() {
         stdout(&o)
     );
 }
+
+#[test]
+fn hostile_sorts_every_call_of_each_clipper_into_one_outcome() {
+    let dir = scratch("hostile");
+    let json = dir.join("hostile.json");
+    let o = clipbench(&["hostile", "--clipper", "vatti", "--clipper", "clipper1", "--json", json.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let file: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let cases = clip_testkit::workload::hard_cases().len() as u64;
+    for t in file["tallies"].as_array().unwrap() {
+        let count = |k: &str| t[k].as_u64().unwrap();
+        // vatti: all four operations under all four rules; Clipper 1 (geo-clipper): non-zero only.
+        let fills = if t["clipper"] == "vatti" { 4 } else { 1 };
+        assert_eq!(count("runs"), cases * 4 * fills, "{t}");
+        assert_eq!(
+            count("runs"),
+            ["right", "wrong", "refused", "crashed", "hung"].iter().map(|k| count(k)).sum::<u64>(),
+            "{t}"
+        );
+    }
+    let vatti = &file["tallies"][0];
+    assert_eq!(
+        (vatti["clipper"].as_str(), vatti["right"].as_u64()),
+        (Some("vatti"), vatti["runs"].as_u64()),
+        "{}",
+        stdout(&o)
+    );
+}
+
+#[test]
+fn referee_sets_a_clippers_areas_against_the_oracle_within_rounding() {
+    let dir = scratch("referee");
+    let json = dir.join("referee.json");
+    let o = clipbench(&[
+        "referee",
+        "--referee",
+        "vatti",
+        "--workload",
+        "star",
+        "--cases",
+        "3",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}\n{}", stdout(&o), stderr(&o));
+    let file: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let star = &file["workloads"][0];
+    assert_eq!((star["cases"].as_u64(), star["compared"].as_u64()), (Some(3), Some(48)), "{star}");
+    assert!(star["largest_of_bound"].as_f64().unwrap() <= 1.0, "{star}");
+    let unknown = clipbench(&["referee", "--referee", "no-such", "--cases", "1"]);
+    assert_eq!(unknown.status.code(), Some(2));
+    assert!(stderr(&unknown).contains("no-such"), "{}", stderr(&unknown));
+}

@@ -8,7 +8,8 @@
 //!   `rand_pcg::Pcg64` from a hash of the three, so cases do not depend on iteration order or
 //!   thread count. Polygon workloads [`workload::POLYGON_WORKLOADS`] (`vatti-t3`, `star`,
 //!   `scribble`, `scribble-rect`, `holes`, `multi`, `grid`, `large`, `spiky-box`,
-//!   `many-subjects`), line workloads [`workload::LINE_WORKLOADS`]
+//!   `many-subjects`, and the sweep stresses `comb`, i_overlay's performance suite and `maps`,
+//!   which reads the world map in `testdata/world`), line workloads [`workload::LINE_WORKLOADS`]
 //!   (`wang-t4`, `lines-degenerate`, `lines-large`), curve workloads
 //!   [`workload::CURVE_WORKLOADS`] (`circles`, `ellipses`), and [`workload::hard_cases`], inputs
 //!   the mature clippers' bug trackers are full of.
@@ -62,7 +63,8 @@ pub mod shrink;
 pub mod workload;
 
 /// The repository's `testdata/` folder (Clipper2's suites in `clipper2/`, geo's fixtures in
-/// `geo/`), found from this crate's source directory, or the folder `CLIPBENCH_TESTDATA` names.
+/// `geo/`, the world map in `world/`), found from this crate's source directory, or the folder
+/// `CLIPBENCH_TESTDATA` names.
 pub fn testdata_dir() -> PathBuf {
     match std::env::var_os("CLIPBENCH_TESTDATA") {
         Some(dir) => PathBuf::from(dir),

@@ -1,15 +1,19 @@
 //! Seeded workload generators: every case is a pure function of (workload name, seed, index).
 
+mod comb;
 mod curves;
 mod degenerate_lines;
 mod extensions;
 mod hard_cases;
 mod large_lines;
+mod maps;
+mod overlay_suite;
 mod shapes;
 mod text;
 mod text_paragraph;
 mod wang;
 mod windows;
+mod world_map;
 
 pub use curves::{CURVE_FRAME, CURVE_WORKLOADS, CURVES_PER_CASE, CurveCase, curve_case, filled_object};
 pub use extensions::MANY_SUBJECTS_CLIP_EDGES;
@@ -17,6 +21,7 @@ pub use hard_cases::{HardCase, hard_cases, invalid_inputs, mirrored};
 pub use large_lines::{
     BEYOND_EDGES, LINES_LARGE_EDGES, beyond_window, lines_large_segments, lines_large_window, short_segments,
 };
+pub use maps::MAP_CASE_EDGES;
 pub use shapes::convex_hull;
 pub use text::{TEXT_CHARSET, TextCase, text_case};
 pub use text_paragraph::{
@@ -24,9 +29,11 @@ pub use text_paragraph::{
     paragraph_window,
 };
 pub use wang::{WANG_EDGES, WANG_SCREEN, WangSize, wang_box, wang_measure, wang_rectangle, wang_segments, wang_window};
+pub use world_map::{Country, MapDataError, MapScale, WorldMap, parse_world_map, world_map};
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, WindowKind};
 use core::fmt;
+use overlay_suite::SuiteTest;
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 use shapes::{checkerboard, edge_count, grid_ring, scribble, smooth, star};
@@ -44,7 +51,26 @@ pub const POLYGON_WORKLOADS: &[&str] = &[
     "large",
     "spiky-box",
     "many-subjects",
+    "comb",
+    "nested",
+    "concentric",
+    "spiral",
+    "windows",
+    "corrosion",
+    "lines-net",
+    "checkerboard",
+    "not-overlap",
+    "wind-mill",
+    "maps",
 ];
+
+/// The polygon workloads that stress a sweep (the last of [`POLYGON_WORKLOADS`]): many edges
+/// span a level line at once, so a sweep that visits every active edge in every scanbeam goes
+/// quadratic on them.
+pub const SWEEP_WORKLOADS: &[&str] = {
+    let all = POLYGON_WORKLOADS;
+    all.split_at(all.len() - 11).1
+};
 
 /// How far `star-far` moves `star`'s cases: UTM-like magnitudes, where one ulp of a coordinate
 /// (about 1.2e-7) is no longer small beside the 1e-9 relative area tolerance of a 1000-unit box.
@@ -81,6 +107,39 @@ impl fmt::Display for UnknownWorkload {
 }
 
 impl std::error::Error for UnknownWorkload {}
+
+/// Why a polygon case could not be made: an unknown workload name, or (`maps`) a world map file
+/// that could not be read.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum WorkloadError {
+    /// No polygon workload has this name.
+    Unknown(UnknownWorkload),
+    /// The world map the `maps` workload reads is missing or malformed.
+    MapData(MapDataError),
+}
+
+impl fmt::Display for WorkloadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            WorkloadError::Unknown(e) => e.fmt(f),
+            WorkloadError::MapData(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for WorkloadError {}
+
+impl From<UnknownWorkload> for WorkloadError {
+    fn from(e: UnknownWorkload) -> WorkloadError {
+        WorkloadError::Unknown(e)
+    }
+}
+
+impl From<MapDataError> for WorkloadError {
+    fn from(e: MapDataError) -> WorkloadError {
+        WorkloadError::MapData(e)
+    }
+}
 
 /// One polygon case: a subject and a clip operand to run under every op and fill rule.
 #[derive(Clone, Debug, PartialEq)]
@@ -152,12 +211,15 @@ fn polygon_name(workload: &str) -> Result<&'static str, UnknownWorkload> {
 /// on any subject under every fill rule; `many-subjects` is a subject of 4-40 edges over one clip polygon of
 /// [`MANY_SUBJECTS_CLIP_EDGES`] edges that is the same for every index of a seed (a sized case
 /// sizes that clip); the others draw 6-200 edges per operand, log-uniformly.
-pub fn polygon_case(
-    workload: &str,
-    seed: u64,
-    index: usize,
-    window: WindowKind,
-) -> Result<PolygonCase, UnknownWorkload> {
+///
+/// The workloads that stress a sweep (a sized case gives their edge count over both operands):
+/// `comb` (even indices a comb against a comb shifted half a tooth, odd ones a comb against a
+/// box of 1% of its area over its teeth), i_overlay's performance suite (`nested`, `concentric`,
+/// `spiral`, `windows`, `corrosion`, `lines-net`, `checkerboard`, `not-overlap`, `wind-mill`),
+/// drawing 6-200 edges in all; and `maps`, real borders from `testdata/world` (index mod 3: a
+/// dissolve, tiles, a country minus its neighbours), here around one country at 1:110m with at
+/// most [`MAP_CASE_EDGES`] edges, sized over the whole map at the [`MapScale`] nearest in edges.
+pub fn polygon_case(workload: &str, seed: u64, index: usize, window: WindowKind) -> Result<PolygonCase, WorkloadError> {
     let name = polygon_name(workload)?;
     let edges = match name {
         "vatti-t3" => VATTI_EDGES[index % VATTI_EDGES.len()],
@@ -171,13 +233,15 @@ pub fn polygon_case(
 /// A case of a given size: `edges` for the subject, and for the clip where the workload sizes
 /// it (all but `vatti-t3`, whose window is fixed, and windows constrained to convex or
 /// rectangle). For benches and `reproduce`: `vatti-t3` at 4..200 edges, `large` at 10^3..10^6.
+/// For `comb`, i_overlay's suite and `maps`, `edges` counts both operands (their clip is not the
+/// subject's size): the generator's count nearest to it, the map scale nearest to it.
 pub fn polygon_case_sized(
     workload: &str,
     seed: u64,
     index: usize,
     edges: usize,
     window: WindowKind,
-) -> Result<PolygonCase, UnknownWorkload> {
+) -> Result<PolygonCase, WorkloadError> {
     make_polygon_case(polygon_name(workload)?, seed, index, Some(edges.max(3)), window)
 }
 
@@ -187,11 +251,11 @@ fn make_polygon_case(
     index: usize,
     edges: Option<usize>,
     window: WindowKind,
-) -> Result<PolygonCase, UnknownWorkload> {
+) -> Result<PolygonCase, WorkloadError> {
     let mut rng = stream_rng(name, seed, index as u64);
     let size = |rng: &mut Pcg64| edges.unwrap_or_else(|| edge_count(rng));
-    let (subject, own_clip, what) = match name {
-        "vatti-t3" => {
+    let (subject, own_clip, what) = match (name, SuiteTest::of(name)) {
+        ("vatti-t3", _) => {
             let n = size(&mut rng);
             let c = VATTI_FRAME.max * 0.5;
             let subject =
@@ -200,7 +264,7 @@ fn make_polygon_case(
             let what = format!("vatti-t3 star subject {n} edges vs fixed {} window", window_word(window));
             return Ok(PolygonCase { workload: name, seed, index, subject, clip, description: what });
         }
-        "star" | "star-far" => {
+        ("star" | "star-far", _) => {
             let (n, m) = (size(&mut rng), size(&mut rng));
             let far = if name == "star-far" { FAR_OFFSET } else { Point::ZERO };
             let s = star(&mut rng, n, Point::new(500.0, 500.0) + far, 400.0, 400.0, 0.2);
@@ -208,25 +272,25 @@ fn make_polygon_case(
             let c = star(&mut rng, m, o + far, 350.0, 350.0, 0.2);
             (s.into(), c.into(), format!("{name} subject {n} edges vs star clip {m} edges"))
         }
-        "spiky-box" => {
+        ("spiky-box", _) => {
             let n = size(&mut rng);
             let (s, c) = extensions::spiky_box(&mut rng, n);
             (s, c, format!("spiky-box star subject {n} edges vs a box of 1% of its area inside it"))
         }
-        "many-subjects" => {
+        ("many-subjects", _) => {
             let m = size(&mut rng);
             let s = extensions::many_subjects_subject(&mut rng, index);
             let what = format!("many-subjects subject {} edges over a fixed star clip of {m} edges", s.len());
             (s.into(), extensions::many_subjects_clip(seed, m).into(), what)
         }
-        "scribble" => {
+        ("scribble", _) => {
             let (n, m) = (size(&mut rng), size(&mut rng));
             let s = scribble(&mut rng, n, Rect::new(100.0, 100.0, 900.0, 900.0));
             let o = offset_center(&mut rng);
             let c = scribble(&mut rng, m, Rect::new(o.x - 350.0, o.y - 350.0, o.x + 350.0, o.y + 350.0));
             (s.into(), c.into(), format!("scribble subject {n} edges vs scribble clip {m} edges"))
         }
-        "scribble-rect" => {
+        ("scribble-rect", _) => {
             let n = size(&mut rng);
             let s = scribble(&mut rng, n, Rect::new(100.0, 100.0, 900.0, 900.0));
             let r = windows::rectangle_over(&mut rng, &s.bounds(), false);
@@ -235,7 +299,7 @@ fn make_polygon_case(
             let way = if cw { "clockwise" } else { "counter-clockwise" };
             (s.into(), c, format!("scribble-rect subject {n} edges vs a {way} rectangle"))
         }
-        "holes" => {
+        ("holes", _) => {
             let (n, m) = (size(&mut rng), size(&mut rng));
             let s = with_holes(&mut rng, n, Point::new(500.0, 500.0), 420.0);
             let o = offset_center(&mut rng);
@@ -247,7 +311,7 @@ fn make_polygon_case(
             );
             (s, c, what)
         }
-        "multi" => {
+        ("multi", _) => {
             let (n, m) = (size(&mut rng), size(&mut rng));
             let s = several_parts(&mut rng, n);
             let c = several_parts(&mut rng, m);
@@ -258,7 +322,35 @@ fn make_polygon_case(
             );
             (s, c, what)
         }
-        "grid" => {
+        ("comb", _) => {
+            let total = size(&mut rng);
+            if index.is_multiple_of(2) {
+                let teeth = (total / 8).max(1);
+                let (s, c) = comb::comb_pair(&mut rng, teeth);
+                (s, c, format!("comb of {teeth} teeth ({} edges) vs comb shifted half a tooth", 4 * teeth))
+            } else {
+                let teeth = (total.saturating_sub(4) / 4).max(1);
+                let (s, c) = comb::comb_box(&mut rng, teeth);
+                (s, c, format!("comb of {teeth} teeth ({} edges) vs a box of 1% of its area", 4 * teeth))
+            }
+        }
+        ("maps", _) => match edges {
+            Some(e) => maps::whole_map(world_map(MapScale::nearest(e))?, index),
+            None => maps::around_a_country(world_map(MapScale::Small)?, &mut rng, index),
+        },
+        (_, Some(test)) => {
+            let n = test.count_for(size(&mut rng));
+            let (s, c) = test.operands(n);
+            let what = format!(
+                "{name} (i_overlay's suite) at n = {n}: subject {} edges in {} rings, clip {} edges in {} rings",
+                s.vertex_count(),
+                s.rings.len(),
+                c.vertex_count(),
+                c.rings.len()
+            );
+            (s, c, what)
+        }
+        ("grid", _) => {
             let (n, m) = (size(&mut rng), size(&mut rng));
             let g = (4 + n.max(m) / 8).min(24) as i32;
             let s = grid_rings(&mut rng, n, g);
@@ -283,7 +375,7 @@ fn make_polygon_case(
             }
         }
     };
-    let integer = name == "grid";
+    let integer = name == "grid" || name == "comb" || SuiteTest::of(name).is_some_and(SuiteTest::on_integers);
     let bounds = subject.bounds();
     let (clip, what) = match window {
         WindowKind::Any => (own_clip, what),

@@ -12,8 +12,7 @@ mod case_args;
 
 use std::process::ExitCode;
 
-use clip_core::{FillRule, PolygonClipper};
-use clip_vatti::Vatti;
+use clip_core::FillRule;
 
 #[global_allocator]
 static ALLOC: dhat::Alloc = dhat::Alloc;
@@ -28,9 +27,10 @@ fn main() -> ExitCode {
     };
     let _profiler = dhat::Profiler::builder().testing().build();
     let before = dhat::HeapStats::get();
-    let out = Vatti.clip(&a.case.subject, &a.case.clip, a.op, FillRule::EvenOdd);
+    let clipper = a.clipper();
+    let out = clipper.clip(&a.case.subject, &a.case.clip, a.op, FillRule::EvenOdd);
     for _ in 1..a.repetitions {
-        drop(Vatti.clip(&a.case.subject, &a.case.clip, a.op, FillRule::EvenOdd));
+        drop(clipper.clip(&a.case.subject, &a.case.clip, a.op, FillRule::EvenOdd));
     }
     let after = dhat::HeapStats::get();
     let out = match out {

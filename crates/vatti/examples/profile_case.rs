@@ -8,7 +8,8 @@
 //!
 //! Arguments: workload (a clip-testkit workload; `large` case 0 is the bench's `large-smooth`,
 //! case 1 `large-checkerboard`), subject edges, operation, repetitions, then optionally the case
-//! index (default 0) and `rect` for a rectangle window; seed 1 and even-odd, as in the bench.
+//! index (default 0), `rect` for a rectangle window and `scanbeam` or `events` to fix the sweep;
+//! seed 1 and even-odd, as in the bench.
 //! Allocations are counted by the `alloc_case` example, so this binary runs on the plain
 //! system allocator, as the bench does.
 
@@ -18,8 +19,7 @@ use std::hint::black_box;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use clip_core::{FillRule, PolygonClipper};
-use clip_vatti::Vatti;
+use clip_core::FillRule;
 
 fn main() -> ExitCode {
     let a = match case_args::parse("profile_case") {
@@ -30,7 +30,8 @@ fn main() -> ExitCode {
         }
     };
     let (s, c) = (&a.case.subject, &a.case.clip);
-    let out = match Vatti.clip(s, c, a.op, FillRule::EvenOdd) {
+    let clipper = a.clipper();
+    let out = match clipper.clip(s, c, a.op, FillRule::EvenOdd) {
         Ok(out) => out,
         Err(e) => {
             eprintln!("profile_case: {e}");
@@ -40,7 +41,7 @@ fn main() -> ExitCode {
     let out_vertices: usize = out.rings.iter().map(|r| r.points.len()).sum();
     let start = Instant::now();
     for _ in 0..a.repetitions {
-        black_box(Vatti.clip(black_box(s), c, a.op, FillRule::EvenOdd).ok());
+        black_box(clipper.clip(black_box(s), c, a.op, FillRule::EvenOdd).ok());
     }
     let per_call = start.elapsed().as_secs_f64() / a.repetitions.max(1) as f64;
     println!(

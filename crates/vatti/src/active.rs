@@ -1,9 +1,15 @@
-//! The active edge table (the paper's AET): the edges crossing the current scanbeam, ordered by x.
+//! The active edge table (the paper's AET): the edges crossing the current scanline, ordered by x.
 
 use clip_core::Point;
 use clip_core::predicates::{Orientation, orient};
 
 use crate::bounds::NONE;
+use crate::order_index::OrderIndex;
+
+/// Tables of at most this many edges are searched by a walk: a search tree over a table this
+/// short costs more to keep than it saves. The scanbeam sweep, which walks the whole table in
+/// every scanbeam anyway, never builds one.
+const LINEAR_SEARCH_UP_TO: usize = 16;
 
 /// Relative distance within which a computed crossing point counts as on an edge: a few dozen
 /// ulps, the rounding of one crossing computation.
@@ -18,8 +24,9 @@ pub(crate) struct Edge {
     pub top: Point,
     /// Magnitudes of the ends, kept with them for the tolerance tests (see [`Edge::set_ends`]).
     pub magnitude: EndMagnitudes,
-    /// x at the current scanline (the paper's `xbot`).
+    /// x at scanline `curr_y` (the paper's `xbot`), or where a sliding edge is.
     pub curr_x: f64,
+    pub curr_y: f64,
     /// x at height `next_y`, computed once per scanbeam for its top (NaN height: none).
     pub next_x: f64,
     pub next_y: f64,
@@ -40,8 +47,11 @@ pub(crate) struct Edge {
     pub alive: bool,
     /// True while the edge waits to slide along a horizontal at the current scanline.
     pub moving: bool,
-    /// Index in the active edge table.
-    pub pos: u32,
+    /// Neighbours in the active edge table (`NONE` at the ends).
+    pub prev: u32,
+    pub next: u32,
+    /// The last batch of new pairs this edge was returned in as a left edge.
+    pub batch: u32,
 }
 
 /// Magnitudes of an edge's ends, computed once per edge rather than per test.
@@ -82,7 +92,7 @@ impl Edge {
 
     /// Winding numbers `w` after crossing this edge left to right. Both lanes are computed, none
     /// stored by index: a 4-byte store into the pair by a variable index, read back as 8 bytes,
-    /// defeats store forwarding and stalled `Sweep::cross` (about a quarter of scribble 20 ∩'s
+    /// defeats store forwarding and stalled `SweepLine::cross` (about a quarter of scribble 20 ∩'s
     /// time in `perf`, under 1 % of its instructions).
     #[inline]
     pub(crate) fn crossed(&self, w: [i32; 2]) -> [i32; 2] {
@@ -134,12 +144,46 @@ impl Edge {
         ((x - p.x).abs(), scale)
     }
 
-    /// True when `p`, on the current scanline, is certainly off the edge: `curr_x`, the edge's
-    /// x there, is farther from `p.x` than its rounding can be (x_at errs by under 6 ulps of the
-    /// ends' magnitude; the slack is ten times that). Spares the exact test for far edges.
+    /// True when `p`, on a scanline where the edge's x is `x` (computed), is certainly off the
+    /// edge: `x` is farther from `p.x` than its rounding can be (x_at errs by under 6 ulps of
+    /// the ends' magnitude; the slack is ten times that). Spares the exact test for far edges.
     #[inline]
-    pub(crate) fn clearly_off_scanline(&self, p: Point) -> bool {
-        (self.curr_x - p.x).abs() > 64.0 * f64::EPSILON * self.magnitude.x_max
+    pub(crate) fn clearly_off(&self, x: f64, p: Point) -> bool {
+        (x - p.x).abs() > 64.0 * f64::EPSILON * self.magnitude.x_max
+    }
+
+    /// Where this edge and `other` cross, computed once and kept inside `[yb, yt]`: y clamped
+    /// there (x then taken on the steeper edge), x clamped to the span of `xs`, the two edges'
+    /// x at `yb` and `yt`.
+    pub(crate) fn crossing_with(&self, other: &Edge, yb: f64, yt: f64, xs: [f64; 4]) -> Point {
+        let (d1, d2) = (self.top - self.bot, other.top - other.bot);
+        let den = d1.cross(d2);
+        let num = (other.bot - self.bot).cross(d2);
+        // Division last: exact whenever the true point is representable and the products fit.
+        let mut p = Point::new((self.bot.x * den + num * d1.x) / den, (self.bot.y * den + num * d1.y) / den);
+        if !p.is_finite() {
+            let s = num / den;
+            p = Point::new(self.bot.x + s * d1.x, self.bot.y + s * d1.y);
+        }
+        if !(p.y >= yb && p.y <= yt) {
+            let y = if p.y > yt { yt } else { yb };
+            let steeper = if (d1.x / d1.y).abs() <= (d2.x / d2.y).abs() { self } else { other };
+            p = Point::new(steeper.x_at(y), y);
+        }
+        let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y)
+    }
+
+    /// True when this edge, left of `right` where both are active now, is right of it at the
+    /// lower of their tops: they cross before either ends. Exact.
+    #[inline]
+    pub(crate) fn crosses_before_top(&self, right: &Edge) -> bool {
+        if self.top.y <= right.top.y {
+            orient(right.bot, right.top, self.top) == Orientation::Clockwise
+        } else {
+            orient(self.bot, self.top, right.top) == Orientation::CounterClockwise
+        }
     }
 
     /// True when the edge ends at or below `y`.
@@ -155,27 +199,46 @@ impl Edge {
     }
 }
 
-/// The active edges: an arena of edge records and their x order. A bound's record is reused
-/// for a later bound once the bound has ended and its scanline is done, so the arena is as large
-/// as the widest active edge table, not one record per bound.
+/// The active edges: an arena of edge records, their left-to-right order as a doubly linked
+/// list (neighbours in O(1)), and a search tree over that order (`order_index`) where new edges
+/// find their place in O(log n). A bound's record is reused for a later bound once the bound has
+/// ended and its scanline is done, so the arena is as large as the widest active edge table, not
+/// one record per bound.
 #[derive(Debug, Default)]
 pub(crate) struct ActiveEdges {
     pub edges: Vec<Edge>,
-    pub order: Vec<u32>,
+    first: u32,
+    len: usize,
+    /// The search tree over the order, kept only by the event sweep and only while the table
+    /// is longer than [`LINEAR_SEARCH_UP_TO`] (built when it first is).
+    index: OrderIndex,
+    indexed: bool,
     /// Records free for new edges.
     free: Vec<u32>,
     /// Records of edges that ended on the current scanline: the scanline's work lists may still
     /// name them (and check `alive`), so they are freed only when it is done.
     ended: Vec<u32>,
+    /// When set, the left edges of pairs that became adjacent (`new_pairs`), for the event
+    /// sweep's crossing tests.
+    track: bool,
+    new_pairs: Vec<u32>,
+    /// The batch of [`ActiveEdges::take_new_pairs`], stamped on the edges it returned.
+    batch: u32,
 }
 
 impl ActiveEdges {
-    /// Empties the table, keeping its buffers.
-    pub(crate) fn reset(&mut self) {
+    /// Empties the table, keeping its buffers; `track` records the edges whose neighbours change.
+    pub(crate) fn reset(&mut self, track: bool) {
         self.edges.clear();
-        self.order.clear();
+        self.first = NONE;
+        self.len = 0;
+        self.index.reset();
+        self.indexed = false;
         self.free.clear();
         self.ended.clear();
+        self.track = track;
+        self.new_pairs.clear();
+        self.batch = 0;
     }
 
     /// The current scanline is done: the records of the edges that ended on it are free.
@@ -189,7 +252,8 @@ impl ActiveEdges {
     /// Bytes of capacity the table holds.
     pub(crate) fn held_bytes(&self) -> usize {
         self.edges.capacity() * std::mem::size_of::<Edge>()
-            + 4 * (self.order.capacity() + self.free.capacity() + self.ended.capacity())
+            + self.index.held_bytes()
+            + 4 * (self.free.capacity() + self.ended.capacity() + self.new_pairs.capacity())
     }
 
     /// A new edge in the arena (not yet in the order).
@@ -199,6 +263,7 @@ impl ActiveEdges {
             top,
             magnitude: EndMagnitudes::of(bot, top),
             curr_x: bot.x,
+            curr_y: bot.y,
             next_x: bot.x,
             next_y: f64::NAN,
             kind,
@@ -209,7 +274,9 @@ impl ActiveEdges {
             forward,
             alive: true,
             moving: false,
-            pos: NONE,
+            prev: NONE,
+            next: NONE,
+            batch: 0,
         };
         if let Some(id) = self.free.pop() {
             self.edges[id as usize] = edge;
@@ -230,96 +297,241 @@ impl ActiveEdges {
         &mut self.edges[id as usize]
     }
 
-    #[inline]
-    pub(crate) fn at(&self, pos: usize) -> u32 {
-        self.order[pos]
-    }
-
+    /// Number of edges in the order.
     #[inline]
     pub(crate) fn len(&self) -> usize {
-        self.order.len()
+        self.len
     }
 
+    /// The leftmost edge, or `NONE`.
     #[inline]
-    pub(crate) fn pos(&self, id: u32) -> usize {
-        self.edges[id as usize].pos as usize
+    pub(crate) fn first(&self) -> u32 {
+        self.first
     }
 
-    /// Winding numbers just right of position `pos - 1`: the region a new edge at `pos` has on
-    /// its left.
+    /// The edge right of `id`, or `NONE`.
     #[inline]
-    pub(crate) fn wind_before(&self, pos: usize) -> [i32; 2] {
-        if pos == 0 { [0, 0] } else { self.get(self.order[pos - 1]).wind_right() }
+    pub(crate) fn next(&self, id: u32) -> u32 {
+        self.edges[id as usize].next
     }
 
-    /// Puts edge `id` at `pos`.
-    pub(crate) fn insert(&mut self, pos: usize, id: u32) {
-        self.order.insert(pos, id);
-        self.renumber(pos);
+    /// The edge left of `id`, or `NONE`.
+    #[inline]
+    pub(crate) fn prev(&self, id: u32) -> u32 {
+        self.edges[id as usize].prev
+    }
+
+    /// The edges left to right.
+    pub(crate) fn iter(&self) -> impl Iterator<Item = u32> + '_ {
+        std::iter::successors((self.first != NONE).then_some(self.first), |&id| {
+            let n = self.next(id);
+            (n != NONE).then_some(n)
+        })
+    }
+
+    /// Winding numbers just right of `left` (`NONE`: the outside, [0, 0]).
+    #[inline]
+    pub(crate) fn wind_right_of(&self, left: u32) -> [i32; 2] {
+        if left == NONE { [0, 0] } else { self.get(left).wind_right() }
+    }
+
+    /// Records that `left` and its right neighbour `right` became adjacent.
+    #[inline]
+    fn paired(&mut self, left: u32, right: u32) {
+        if self.track && left != NONE && right != NONE {
+            self.new_pairs.push(left);
+        }
+    }
+
+    /// The left edges of the adjacent pairs made since the last call, each once and still
+    /// active with a right neighbour, into `out` (emptied first).
+    pub(crate) fn take_new_pairs(&mut self, out: &mut Vec<u32>) {
+        out.clear();
+        self.batch = self.batch.wrapping_add(1);
+        for &id in &self.new_pairs {
+            let e = &mut self.edges[id as usize];
+            if e.alive && e.next != NONE && e.batch != self.batch {
+                e.batch = self.batch;
+                out.push(id);
+            }
+        }
+        self.new_pairs.clear();
+    }
+
+    /// Links `id` into the list between `left` and `right` (neighbours, either `NONE`).
+    fn link(&mut self, id: u32, left: u32, right: u32) {
+        self.edges[id as usize].prev = left;
+        self.edges[id as usize].next = right;
+        if left == NONE {
+            self.first = id;
+        } else {
+            self.edges[left as usize].next = id;
+        }
+        if right != NONE {
+            self.edges[right as usize].prev = id;
+        }
+        self.len += 1;
+        self.paired(left, id);
+        self.paired(id, right);
+    }
+
+    /// Puts a new edge from `p` (on the current scanline) towards `toward` where it belongs:
+    /// before the first edge that passes right of `p`, or through `p` heading right of the new
+    /// edge. Exact; a search of the order, which is sorted at the scanline: through the tree
+    /// when there is one, else a walk from the left, which a short table makes cheaper.
+    pub(crate) fn insert_at(&mut self, id: u32, p: Point, toward: Point) {
+        let before = |e: &Edge| match e.side_of(p) {
+            Orientation::Clockwise => true,
+            Orientation::CounterClockwise => false,
+            Orientation::Collinear => orient(p, toward, e.top) != Orientation::Clockwise,
+        };
+        let (left, right) = if self.indexed {
+            let edges = &self.edges;
+            self.index.insert_by(id, |k| before(&edges[k as usize]))
+        } else {
+            let (mut left, mut right) = (NONE, self.first);
+            while right != NONE && before(&self.edges[right as usize]) {
+                left = right;
+                right = self.next(right);
+            }
+            (left, right)
+        };
+        self.link(id, left, right);
+        self.index_if_long();
+    }
+
+    /// Puts a new edge right after `left` (first when `NONE`).
+    pub(crate) fn insert_after(&mut self, id: u32, left: u32) {
+        if self.indexed {
+            self.index.insert_after(id, left);
+        }
+        let right = if left == NONE { self.first } else { self.next(left) };
+        self.link(id, left, right);
+        self.index_if_long();
+    }
+
+    /// Builds the search tree when the event sweep's table first grows past
+    /// [`LINEAR_SEARCH_UP_TO`].
+    #[inline]
+    fn index_if_long(&mut self) {
+        if self.track && !self.indexed && self.len > LINEAR_SEARCH_UP_TO {
+            self.indexed = true;
+            let mut left = NONE;
+            let mut id = self.first;
+            while id != NONE {
+                self.index.insert_after(id, left);
+                left = id;
+                id = self.next(id);
+            }
+        }
     }
 
     /// The active edge whose bound runs the other way from `id`'s and ends at vertex `v` (its
-    /// partner at a local maximum): searched outward from `id`, next to which it lies but for
-    /// edges passing through the maximum.
-    pub(crate) fn partner(&self, id: u32, v: u32) -> Option<u32> {
-        let (pos, forward) = (self.pos(id), self.get(id).forward);
+    /// partner at a local maximum), and whether it lies right of `id`: searched outward from
+    /// `id`, next to which it lies but for edges passing through the maximum.
+    pub(crate) fn partner(&self, id: u32, v: u32) -> Option<(u32, bool)> {
+        let forward = self.get(id).forward;
         let is_partner = |k: u32| {
             let e = self.get(k);
             e.top_vertex == v && e.forward != forward
         };
-        let n = self.order.len();
-        for d in 1..n.max(1) {
-            if d > pos && pos + d >= n {
-                break;
+        let (mut l, mut r) = (self.prev(id), self.next(id));
+        while l != NONE || r != NONE {
+            if l != NONE {
+                if is_partner(l) {
+                    return Some((l, false));
+                }
+                l = self.prev(l);
             }
-            if d <= pos && is_partner(self.order[pos - d]) {
-                return Some(self.order[pos - d]);
-            }
-            if pos + d < n && is_partner(self.order[pos + d]) {
-                return Some(self.order[pos + d]);
+            if r != NONE {
+                if is_partner(r) {
+                    return Some((r, true));
+                }
+                r = self.next(r);
             }
         }
         None
     }
 
-    /// Removes the two edges at `pos` and `pos + 1`.
-    pub(crate) fn remove_pair(&mut self, pos: usize) {
-        for id in [self.order[pos], self.order[pos + 1]] {
-            self.edges[id as usize].alive = false;
+    /// Removes the adjacent edges `a` and `b = next(a)`.
+    pub(crate) fn remove_pair(&mut self, a: u32) {
+        let b = self.next(a);
+        let (left, right) = (self.prev(a), self.next(b));
+        for id in [a, b] {
+            if self.indexed {
+                self.index.remove(id);
+            }
+            let e = &mut self.edges[id as usize];
+            e.alive = false;
+            e.prev = NONE;
+            e.next = NONE;
             self.ended.push(id);
         }
-        let n = self.order.len();
-        self.order.copy_within(pos + 2..n, pos);
-        self.order.truncate(n - 2);
-        self.renumber(pos);
-    }
-
-    /// Swaps the adjacent edges at `pos` and `pos + 1`.
-    #[inline]
-    pub(crate) fn swap(&mut self, pos: usize) {
-        self.order.swap(pos, pos + 1);
-        let (a, b) = (self.order[pos], self.order[pos + 1]);
-        self.edges[a as usize].pos = pos as u32;
-        self.edges[b as usize].pos = pos as u32 + 1;
-    }
-
-    fn renumber(&mut self, from: usize) {
-        for (i, &id) in self.order.iter().enumerate().skip(from) {
-            self.edges[id as usize].pos = i as u32;
+        if left == NONE {
+            self.first = right;
+        } else {
+            self.edges[left as usize].next = right;
         }
+        if right != NONE {
+            self.edges[right as usize].prev = left;
+        }
+        self.len -= 2;
+        self.paired(left, right);
     }
 
-    /// Where a new edge from `p` (on the current scanline) towards `toward` goes: before the
-    /// first edge that passes right of `p`, or through `p` heading right of the new edge.
-    /// Exact; binary search over an order that is sorted at the scanline.
-    pub(crate) fn insert_position(&self, p: Point, toward: Point) -> usize {
-        self.order.partition_point(|&id| {
-            let e = self.get(id);
-            match e.side_of(p) {
-                Orientation::Clockwise => true,
-                Orientation::CounterClockwise => false,
-                Orientation::Collinear => orient(p, toward, e.top) != Orientation::Clockwise,
-            }
-        })
+    /// Swaps `a` and its right neighbour.
+    #[inline]
+    pub(crate) fn swap(&mut self, a: u32) {
+        let b = self.next(a);
+        let (left, right) = (self.prev(a), self.next(b));
+        if self.indexed {
+            self.index.swap(a, b);
+        }
+        if left == NONE {
+            self.first = b;
+        } else {
+            self.edges[left as usize].next = b;
+        }
+        if right != NONE {
+            self.edges[right as usize].prev = a;
+        }
+        let ea = &mut self.edges[a as usize];
+        ea.prev = b;
+        ea.next = right;
+        let eb = &mut self.edges[b as usize];
+        eb.prev = left;
+        eb.next = a;
+        // Not b and a, which crossed (see `recheck`).
+        self.paired(left, b);
+        self.paired(a, right);
+    }
+
+    /// `left` and its right neighbour, just swapped at a scanline without crossing (an edge
+    /// sliding along a horizontal past another), are tested again: their segments may still
+    /// cross above it.
+    #[inline]
+    pub(crate) fn recheck(&mut self, left: u32) {
+        let right = self.next(left);
+        self.paired(left, right);
+    }
+
+    /// `id`'s segment changed in place (a bound's next edge): both its pairs are new.
+    #[inline]
+    pub(crate) fn segment_changed(&mut self, id: u32) {
+        let (left, right) = (self.prev(id), self.next(id));
+        self.paired(left, id);
+        self.paired(id, right);
+    }
+
+    /// x of edge `id` on scanline `y`: where it slides for a sliding edge, else on its line,
+    /// cached per scanline.
+    #[inline]
+    pub(crate) fn x_on(&mut self, id: u32, y: f64) -> f64 {
+        let e = &mut self.edges[id as usize];
+        if e.curr_y != y && !e.moving {
+            e.curr_x = e.x_at(y);
+            e.curr_y = y;
+        }
+        e.curr_x
     }
 }

@@ -133,6 +133,25 @@ impl Envelope {
         }
     }
 
+    /// The corners passed going along the border from `from` to `to` the way that passes fewer
+    /// (counter-clockwise on a tie). A path the other way round would wind once more around the
+    /// box, which the caller's border loops take back: either keeps every winding inside it, but
+    /// a ring whose missed stretches each went all the way round (a comb's gaps walked right to
+    /// left, below a box over its teeth) gave the sweep a full border of edges per stretch, all
+    /// on the same four lines.
+    fn nearer_corners_between(&self, from: Point, to: Point, out: &mut Vec<Point>) {
+        let start = out.len();
+        self.corners_between(from, to, out);
+        if out.len() - start <= 2 {
+            return;
+        }
+        out.truncate(start);
+        // Clockwise: the corners passed counter-clockwise from `to` back to `from`, reversed,
+        // or none on one side.
+        self.corners_between(to, from, out);
+        out[start..].reverse();
+    }
+
     /// The corners passed going counter-clockwise along the border from `from` to `to`.
     pub(crate) fn corners_between(&self, from: Point, to: Point, out: &mut Vec<Point>) {
         let ((mut k, kp), (sq, kq)) = (self.place(from), self.place(to));
@@ -190,7 +209,7 @@ impl Envelope {
         let (pc, qc) = (self.clamp(p), self.clamp(q));
         path.clear();
         path.extend([p, pc]);
-        self.corners_between(pc, qc, path);
+        self.nearer_corners_between(pc, qc, path);
         path.push(qc);
         out.extend_from_slice(path);
         path.push(q);

@@ -19,16 +19,8 @@ use std::collections::HashMap;
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{BoolOp, FillRule, MIN_COORDINATE, Point, Polygons, Rect, Ring};
 
-use crate::Vatti;
 use crate::edge_blocks::EdgeBlocks;
 use crate::envelope::{Envelope, Stretch, grown, sunday};
-use crate::simplify::{is_simplified, simplify_ring};
-use crate::star_shaped::certified_simple;
-
-/// The fewest edges a ring needs, and how many times the other operand's vertices, before
-/// [`splice_big_ring`] tries to certify it: below that the whole sweep is cheap.
-const BIG_RING_EDGES: usize = 64;
-const BIG_RING_FACTOR: usize = 4;
 
 /// An operand in conventional form (outers counter-clockwise, holes clockwise, nothing crossing),
 /// with edge blocks over its rings when it was prepared.
@@ -71,13 +63,14 @@ struct Run {
 
 /// `near op far` (∪ or ⊕ for either role, − when the far operand is the subject), or `None`
 /// when the splice does not apply and everything must be swept. `far_is_subject` gives the
-/// roles; `near` must be valid.
+/// roles; `near` must be valid. `sweep(a, b, op)` is the clean sweep of `a op b`.
 pub(crate) fn splice(
     near: &Polygons,
     far: Far<'_>,
     far_is_subject: bool,
     op: BoolOp,
     fill: FillRule,
+    sweep: impl FnOnce(&Polygons, &Polygons, BoolOp) -> Polygons,
 ) -> Option<Polygons> {
     let passes = match op {
         BoolOp::Union | BoolOp::Xor => true,
@@ -97,55 +90,8 @@ pub(crate) fn splice(
     if fill == FillRule::Negative {
         local.rings.iter_mut().for_each(|r| *r = r.reversed());
     }
-    let swept = if far_is_subject {
-        Vatti::sweep_polygons(&local, near, op, fill)
-    } else {
-        Vatti::sweep_polygons(near, &local, op, fill)
-    };
+    let swept = if far_is_subject { sweep(&local, near, op) } else { sweep(near, &local, op) };
     join(&env, far.rings, &cut.chains, &cut.far_rings, cut.far_winding, &swept)
-}
-
-/// `subject op clip` for ∪, ⊕ and − when the subject (or, with `clip_far`, for ∪ and ⊕ the clip)
-/// is one big ring certified simple ([`certified_simple`]), which is then its own conventional
-/// form: spliced around the other operand, so the big ring is never swept. `None` when that does
-/// not apply. Both operands must be valid.
-pub(crate) fn splice_big_ring(
-    subject: &Polygons,
-    clip: &Polygons,
-    clip_far: bool,
-    op: BoolOp,
-    fill: FillRule,
-) -> Option<Polygons> {
-    let try_far = |far: &Polygons, near: &Polygons, far_is_subject: bool| {
-        let [ring] = far.rings.as_slice() else { return None };
-        let n = ring.points.len();
-        if n < BIG_RING_EDGES || n < BIG_RING_FACTOR * near.vertex_count() {
-            return None;
-        }
-        // A ring already simplified and counter-clockwise is spliced as it is: at 10^6 vertices
-        // a copy is 16 MB for the allocator to fault in on every call.
-        let (ccw, copy) = if is_simplified(&ring.points) && ring.signed_area() > 0.0 {
-            (true, None)
-        } else {
-            let simple = Ring { points: simplify_ring(&ring.points) };
-            let ccw = simple.signed_area() > 0.0;
-            (ccw, Some(Polygons::new(vec![if ccw { simple } else { simple.reversed() }])))
-        };
-        let far = copy.as_ref().unwrap_or(far);
-        let points = &far.rings[0].points;
-        // A ring the fill rule leaves empty is rare: the whole sweep takes it.
-        if points.len() < 3 || !fill.is_inside(if ccw { 1 } else { -1 }) || !certified_simple(points) {
-            return None;
-        }
-        splice(near, Far { rings: far, blocks: None }, far_is_subject, op, fill)
-    };
-    match op {
-        BoolOp::Intersection => None,
-        BoolOp::Difference => try_far(subject, clip, true),
-        BoolOp::Union | BoolOp::Xor => {
-            try_far(subject, clip, true).or_else(|| if clip_far { try_far(clip, subject, false) } else { None })
-        }
-    }
 }
 
 /// The far operand cut to the box: the local rings to sweep, the chains outside to splice back,
@@ -503,6 +449,7 @@ fn visits_twice(ring: &[Point]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::{Route, Vatti};
     use clip_core::WindowKind;
     use clip_oracle::polygon::{REGION_TOLERANCE, same_region, tolerance};
     use clip_testkit::workload::polygon_case;
@@ -513,15 +460,17 @@ mod tests {
         for index in 0..40 {
             let case = polygon_case("many-subjects", 3, index, WindowKind::Any).unwrap();
             for fill in FillRule::ALL {
-                let far = Vatti::sweep_polygons(&case.clip, &Polygons::default(), BoolOp::Union, fill);
+                let far = Vatti::prepare(&case.clip, fill).unwrap().resolved().rings.clone();
                 let blocks: Vec<EdgeBlocks> = far.rings.iter().map(|r| EdgeBlocks::new(&r.points)).collect();
                 for op in [BoolOp::Union, BoolOp::Xor] {
-                    let Some(out) = splice(&case.subject, Far { rings: &far, blocks: Some(&blocks) }, false, op, fill)
-                    else {
+                    let far = Far { rings: &far, blocks: Some(&blocks) };
+                    let sweep =
+                        |a: &Polygons, b: &Polygons, op| Vatti.clip_along(Route::Whole, None, a, b, op, fill).unwrap();
+                    let Some(out) = splice(&case.subject, far, false, op, fill, sweep) else {
                         continue;
                     };
                     spliced += 1;
-                    let plain = Vatti.clip_unfiltered(&case.subject, &case.clip, op, fill).unwrap();
+                    let plain = Vatti.clip_along(Route::Whole, None, &case.subject, &case.clip, op, fill).unwrap();
                     let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
                     let same = same_region((&out, FillRule::NonZero), (&plain, FillRule::NonZero), tol);
                     assert!(same.is_ok(), "case {index} {op:?} {fill:?}: {:?}", same.unwrap_err());
@@ -530,42 +479,5 @@ mod tests {
         }
         // Under positive and negative fill one of the two orientations leaves the clip empty.
         assert!(spliced >= 200, "spliced only {spliced} of 320");
-    }
-}
-
-#[cfg(test)]
-mod big_ring_tests {
-    use super::*;
-    use clip_core::WindowKind;
-    use clip_oracle::polygon::{REGION_TOLERANCE, same_region, tolerance};
-    use clip_testkit::workload::{polygon_case, polygon_case_sized};
-
-    #[test]
-    fn verify_sized_spiky_boxes_take_the_splice() {
-        // verify draws 6-200 star edges: the big stars among them are spliced, so verify checks the path.
-        let taken = (0..40)
-            .filter_map(|i| polygon_case("spiky-box", 1, i, WindowKind::Any).ok())
-            .filter(|c| splice_big_ring(&c.subject, &c.clip, true, BoolOp::Union, FillRule::NonZero).is_some())
-            .count();
-        assert!(taken >= 5, "only {taken} of 40 spliced");
-    }
-
-    #[test]
-    fn spiky_stars_splice_around_the_box_for_union_difference_and_xor() {
-        for (index, edges) in [(0, 1_000), (1, 5_000)] {
-            let case = polygon_case_sized("spiky-box", 2, index, edges, WindowKind::Any).unwrap();
-            for fill in FillRule::ALL {
-                for op in [BoolOp::Union, BoolOp::Difference, BoolOp::Xor] {
-                    let out = splice_big_ring(&case.subject, &case.clip, true, op, fill);
-                    // The star runs counter-clockwise: negative fill leaves it empty.
-                    assert_eq!(out.is_some(), fill != FillRule::Negative, "{op:?} {fill:?}");
-                    let Some(out) = out else { continue };
-                    let plain = Vatti.clip_unfiltered(&case.subject, &case.clip, op, fill).unwrap();
-                    let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
-                    let same = same_region((&out, FillRule::NonZero), (&plain, FillRule::NonZero), tol);
-                    assert!(same.is_ok(), "{edges} {op:?} {fill:?}: {:?}", same.unwrap_err());
-                }
-            }
-        }
     }
 }

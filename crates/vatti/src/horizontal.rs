@@ -5,43 +5,46 @@ use clip_core::Point;
 use clip_core::predicates::Orientation;
 use clip_core::predicates::orient;
 
-use crate::sweep::{Slide, Sweep};
+use crate::bounds::NONE;
+use crate::sweep::{Slide, SweepLine};
 
-impl Sweep<'_> {
+impl SweepLine<'_> {
     /// Slides `s.edge` along the scanline `y` from `s.from_x` to `s.to_x`, crossing every edge
     /// met on the way (each crossing at the other edge's x on the scanline). At the far end it
     /// passes edges through that point that head left of it (moving right) or right of it
     /// (moving left), decided exactly. Each step moves one place in one direction, so at most
     /// the table's length steps are taken.
     pub(crate) fn slide(&mut self, s: Slide, y: f64) {
-        let (lo, hi) = (s.from_x.min(s.to_x), s.from_x.max(s.to_x));
+        let (mut lo, mut hi) = (s.from_x.min(s.to_x), s.from_x.max(s.to_x));
         let rightwards = s.to_x > s.from_x;
         let end = Point::new(s.to_x, y);
         let top = self.ael.get(s.edge).top;
         for _ in 0..self.ael.len() {
-            let pos = self.ael.pos(s.edge);
-            let neighbour = if rightwards {
-                (pos + 1 < self.ael.len()).then(|| self.ael.at(pos + 1))
-            } else {
-                pos.checked_sub(1).map(|p| self.ael.at(p))
-            };
-            let Some(k) = neighbour else { break };
-            if !self.passes(k, end, top, rightwards) {
+            let k = if rightwards { self.ael.next(s.edge) } else { self.ael.prev(s.edge) };
+            if k == NONE || !self.passes(k, end, top, rightwards) {
                 break;
             }
+            let xk = self.ael.x_on(k, y);
             let ek = self.ael.get(k);
-            let p = Point::new(ek.curr_x.clamp(lo, hi), y);
+            let p = Point::new(xk.clamp(lo, hi), y);
             // k's x on the scanline is computed unless p is one of its ends: other edges through
             // the exact crossing lie within rounding of it, and take it too.
-            self.rounded_crossing = p.x == ek.curr_x && p != ek.bot && p != ek.top;
-            if rightwards {
-                self.cross(pos, p);
-            } else {
-                self.cross(pos - 1, p);
-            }
+            self.rounded_crossing = p.x == xk && p != ek.bot && p != ek.top;
+            let left = if rightwards { s.edge } else { k };
+            self.cross(left, p);
+            self.ael.recheck(self.ael.prev(left));
             self.rounded_crossing = false;
+            // The crossings come in order along the horizontal even where two edges' rounded x
+            // on the scanline are an ulp out of their order.
+            if rightwards {
+                lo = p.x;
+            } else {
+                hi = p.x;
+            }
         }
-        self.ael.get_mut(s.edge).curr_x = s.to_x;
+        let e = self.ael.get_mut(s.edge);
+        e.curr_x = s.to_x;
+        e.curr_y = y;
     }
 
     /// True when an edge sliding towards `end` (and heading to `top` from there) must pass `k`.
@@ -50,11 +53,12 @@ impl Sweep<'_> {
     /// the edges entering the table are placed (a fuzz input's edge from x = -2.9 came out 9e-17
     /// right of a horizontal's end it passes 3e-16 left of, and the crossing was missed). The x
     /// of an edge ending here or sliding is an exact input coordinate.
-    fn passes(&self, k: u32, end: Point, top: Point, rightwards: bool) -> bool {
+    fn passes(&mut self, k: u32, end: Point, top: Point, rightwards: bool) -> bool {
+        let x = self.ael.x_on(k, end.y);
         let e = self.ael.get(k);
         let exact_x = e.ends_by(end.y) || e.moving;
-        if e.curr_x != end.x && (exact_x || e.clearly_off_scanline(end)) {
-            return (e.curr_x < end.x) == rightwards;
+        if x != end.x && (exact_x || e.clearly_off(x, end)) {
+            return (x < end.x) == rightwards;
         }
         if exact_x {
             return false;

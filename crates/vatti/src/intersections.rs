@@ -1,14 +1,16 @@
-//! Edge crossings inside a scanbeam: the paper's sorted edge table (ST) finds them from the
-//! edges' x at the top, the intersection table (IT) holds them sorted by y, and they are
-//! processed so that only adjacent edges are ever swapped.
+//! The paper's crossings inside a scanbeam: the sorted edge table (ST) finds them from every
+//! active edge's x at the top of the beam, and the intersection table (IT) holds them sorted by
+//! y, to be processed so that only adjacent edges are ever swapped. Every active edge is visited
+//! in every scanbeam: Θ(n) per beam where n edges span it (the event sweep's `crossing_queue`
+//! does without).
 
 use clip_core::Point;
 use clip_core::predicates::{Orientation, orient};
 
-use crate::active::ROUNDING;
+use crate::active::{ActiveEdges, ROUNDING};
+use crate::bounds::NONE;
 use crate::scanbeam::height_key;
 use crate::small_sort::insertion_sorted_by;
-use crate::sweep::Sweep;
 
 /// An entry of the intersection table: `left` precedes `right` in the active edge table.
 #[derive(Clone, Copy, Debug)]
@@ -23,159 +25,150 @@ pub(crate) struct Intersection {
 /// An active edge's x at the top of the beam and the magnitude of its ends' x, which scales
 /// the rounding allowance.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct TopX {
-    pub x: f64,
-    pub magnitude: f64,
+struct TopX {
+    x: f64,
+    magnitude: f64,
 }
 
-impl Sweep<'_> {
-    /// Finds and processes every crossing in the scanbeam `[yb, yt]`, emitting trapezoids
-    /// between consecutive crossing heights when asked.
-    pub(crate) fn process_intersections(&mut self, yb: f64, yt: f64) {
-        let mut table = self.intersection_table(yb, yt);
-        let mut y_prev = yb;
-        for i in 0..table.len() {
-            if !self.adjacent(&table[i]) {
-                // Crossings at (nearly) one height may come in any order; take the next one that
-                // is adjacent now. One always is: the table holds exactly the inversions left.
-                match (i + 1..table.len()).find(|&j| self.adjacent(&table[j])) {
-                    Some(j) => table.swap(i, j),
-                    None => break,
-                }
-            }
-            let node = table[i];
-            if self.traps.is_some() && node.pt.y > y_prev {
-                self.emit_slab(y_prev, node.pt.y);
-                y_prev = node.pt.y;
-            }
-            let pos = self.ael.pos(node.left);
-            self.rounded_crossing = true;
-            self.cross(pos, node.pt);
-            self.rounded_crossing = false;
-        }
-        if self.traps.is_some() && yt > y_prev {
-            self.emit_slab(y_prev, yt);
-        }
-        table.clear();
-        self.table = table;
+/// The tables' buffers, reused between scanbeams.
+#[derive(Debug, Default)]
+pub(crate) struct IntersectionTable {
+    order: Vec<u32>,
+    xtop: Vec<TopX>,
+    sorted: Vec<u32>,
+    pub table: Vec<Intersection>,
+}
+
+impl IntersectionTable {
+    /// Bytes of capacity held.
+    pub(crate) fn held_bytes(&self) -> usize {
+        4 * (self.order.capacity() + self.sorted.capacity())
+            + self.xtop.capacity() * size_of::<TopX>()
+            + self.table.capacity() * size_of::<Intersection>()
     }
 
-    #[inline]
-    fn adjacent(&self, node: &Intersection) -> bool {
-        self.ael.pos(node.left) + 1 == self.ael.pos(node.right)
+    /// Empties the buffers.
+    pub(crate) fn clear(&mut self) {
+        self.order.clear();
+        self.xtop.clear();
+        self.sorted.clear();
+        self.table.clear();
     }
 
-    /// Builds the intersection table: the active edges are inserted right to left by their x
-    /// at `yt`; each edge an edge has to jump over is a crossing (the paper's ST pass).
-    fn intersection_table(&mut self, yb: f64, yt: f64) -> Vec<Intersection> {
-        let n = self.ael.len();
-        let mut table = std::mem::take(&mut self.table);
+    /// Fills `table` with the crossings of the scanbeam `[yb, yt]`: the active edges are inserted
+    /// right to left by their x at `yt`; each edge an edge has to jump over is a crossing (the
+    /// paper's ST pass). Sorted by height, ties in the order found. Every edge's `curr_x` must be
+    /// its x at `yb`.
+    pub(crate) fn build(&mut self, ael: &mut ActiveEdges, yb: f64, yt: f64) {
+        self.table.clear();
+        let n = ael.len();
         if n < 2 {
-            return table;
+            return;
         }
-        let mut xtop = std::mem::take(&mut self.xtop);
-        xtop.clear();
-        // Extended from the order's exact-length iterator: no capacity test per edge.
-        let edges = &mut self.ael.edges;
-        xtop.extend(self.ael.order.iter().map(|&id| {
-            let e = &mut edges[id as usize];
+        // Most beams have no crossing: then no edge passes its left neighbour at the top, and
+        // the tables below would find nothing. Until the first edge that does, only x at the
+        // top is computed and compared; from there the edges are listed for the sorted edge table.
+        self.order.clear();
+        self.xtop.clear();
+        let (mut id, mut prev) = (ael.first(), NONE);
+        let mut prev_top = TopX { x: f64::NEG_INFINITY, magnitude: 0.0 };
+        let mut first = None;
+        let mut i = 0;
+        while id != NONE {
+            let e = ael.get_mut(id);
             e.next_x = e.x_at(yt);
             e.next_y = yt;
-            TopX { x: e.next_x, magnitude: e.magnitude.x_max }
-        }));
-        // Most beams have no crossing: then no edge passes its left neighbour, and the
-        // insertion sort below would find nothing. Before the first edge that does, the
-        // insertion sort would only confirm the order, so it starts there.
-        let Some(first) = (1..n).find(|&i| self.left_at_top(i, xtop[i], i - 1, xtop[i - 1], yt)) else {
-            self.xtop = xtop;
-            return table;
-        };
-        // Sorted edge table: positions in the active edge table, by x at the top.
-        let mut st = std::mem::take(&mut self.sorted);
+            let top = TopX { x: e.next_x, magnitude: e.magnitude.x_max };
+            let next = e.next;
+            if first.is_none() && prev != NONE && left_at_top_of(ael, id, top, prev, prev_top, yt) {
+                first = Some(i);
+                // Every edge before this one, for the table.
+                let mut k = ael.first();
+                while k != id {
+                    self.order.push(k);
+                    let ek = ael.get(k);
+                    self.xtop.push(TopX { x: ek.next_x, magnitude: ek.magnitude.x_max });
+                    k = ek.next;
+                }
+            }
+            if first.is_some() {
+                self.order.push(id);
+                self.xtop.push(top);
+            }
+            (prev, prev_top) = (id, top);
+            id = next;
+            i += 1;
+        }
+        let Some(first) = first else { return };
+        let (order, xtop) = (&self.order, &self.xtop);
+        let st = &mut self.sorted;
         st.clear();
         st.extend(0..first as u32);
         for i in first..n {
             let mut j = st.len();
             st.push(i as u32);
-            while j > 0 && self.left_at_top(i, xtop[i], st[j - 1] as usize, xtop[st[j - 1] as usize], yt) {
-                let (left, right) = (self.ael.at(st[j - 1] as usize), self.ael.at(i));
-                let pt = self.crossing_point(left, right, yb, yt);
-                table.push(Intersection { left, right, pt, y_key: height_key(pt.y) });
+            while j > 0 && left_at_top(ael, order, i, xtop[i], st[j - 1] as usize, xtop[st[j - 1] as usize], yt) {
+                let (left, right) = (order[st[j - 1] as usize], order[i]);
+                let pt = scanbeam_crossing(ael, left, right, yb, yt);
+                self.table.push(Intersection { left, right, pt, y_key: height_key(pt.y) });
                 st[j] = st[j - 1];
                 j -= 1;
             }
             st[j] = i as u32;
         }
-        self.xtop = xtop;
-        self.sorted = st;
-        // By height, ties in the order found.
-        if !insertion_sorted_by(&mut table, |a, b| a.y_key < b.y_key) {
-            table.sort_by_key(|a| a.y_key);
+        if !insertion_sorted_by(&mut self.table, |a, b| a.y_key < b.y_key) {
+            self.table.sort_by_key(|a| a.y_key);
         }
-        table
     }
+}
 
-    /// True when the edge at active position `i` lies strictly left of the one at `k` at the
-    /// beam's top `yt`, given their rounded x there (`xi`, `xk`). Where those are within rounding
-    /// of each other, decided exactly in the cases where rounding would invent a crossing that
-    /// cannot exist: edges from one bottom vertex, and an edge ending at `yt` (its top is an
-    /// exact input vertex) beside one passing it. (Found by the `vatti` fuzz target: a sliver
-    /// triangle whose two bounds leave its lowest vertex 1e-16 apart in slope was swapped by a
-    /// rounded x and came out clockwise.) Two edges passing `yt` keep the rounded order: a crossing
-    /// within rounding of `yt` is then taken in this beam or the next, at most ulps away.
-    #[inline(always)]
-    fn left_at_top(&self, i: usize, ti: TopX, k: usize, tk: TopX, yt: f64) -> bool {
-        let (xi, xk) = (ti.x, tk.x);
-        if (xi - xk).abs() > ROUNDING * ti.magnitude.max(tk.magnitude) {
-            return xi < xk;
-        }
-        self.left_at_top_near(i, xi, k, xk, yt)
-    }
+/// True when the edge at active position `i` lies strictly left of the one at `k` at the
+/// beam's top `yt`, given their rounded x there (`xi`, `xk`). Where those are within rounding
+/// of each other, decided exactly in the cases where rounding would invent a crossing that
+/// cannot exist: edges from one bottom vertex, and an edge ending at `yt` (its top is an
+/// exact input vertex) beside one passing it. (Found by the `vatti` fuzz target: a sliver
+/// triangle whose two bounds leave its lowest vertex 1e-16 apart in slope was swapped by a
+/// rounded x and came out clockwise.) Two edges passing `yt` keep the rounded order: a crossing
+/// within rounding of `yt` is then taken in this beam or the next, at most ulps away.
+#[inline(always)]
+fn left_at_top(ael: &ActiveEdges, order: &[u32], i: usize, ti: TopX, k: usize, tk: TopX, yt: f64) -> bool {
+    left_at_top_of(ael, order[i], ti, order[k], tk, yt)
+}
 
-    /// [`Sweep::left_at_top`] for x values within rounding of each other: rare, so kept out of
-    /// line to leave the comparison loops tight.
-    #[cold]
-    #[inline(never)]
-    fn left_at_top_near(&self, i: usize, xi: f64, k: usize, xk: f64, yt: f64) -> bool {
-        let (a, b) = (self.ael.get(self.ael.at(i)), self.ael.get(self.ael.at(k)));
-        let left = Orientation::CounterClockwise;
-        if a.bot == b.bot {
-            orient(a.bot, b.top, a.top) == left
-        } else if a.top.y == yt && b.top.y != yt {
-            orient(b.bot, b.top, a.top) == left
-        } else if b.top.y == yt && a.top.y != yt {
-            orient(a.bot, a.top, b.top) == Orientation::Clockwise
-        } else {
-            xi < xk
-        }
+/// [`left_at_top`] of edges `i` and `k` by id.
+#[inline(always)]
+fn left_at_top_of(ael: &ActiveEdges, i: u32, ti: TopX, k: u32, tk: TopX, yt: f64) -> bool {
+    let (xi, xk) = (ti.x, tk.x);
+    if (xi - xk).abs() > ROUNDING * ti.magnitude.max(tk.magnitude) {
+        return xi < xk;
     }
+    left_at_top_near(ael, i, xi, k, xk, yt)
+}
 
-    /// Where edges `a` and `b` cross, computed once and kept inside the scanbeam: y clamped to
-    /// `[yb, yt]` (x then taken on the steeper edge), x clamped to the edges' span in the beam.
-    fn crossing_point(&self, a: u32, b: u32, yb: f64, yt: f64) -> Point {
-        let (ea, eb) = (self.ael.get(a), self.ael.get(b));
-        let (d1, d2) = (ea.top - ea.bot, eb.top - eb.bot);
-        let den = d1.cross(d2);
-        let num = (eb.bot - ea.bot).cross(d2);
-        // Division last: exact whenever the true point is representable and the products fit.
-        let mut p = Point::new((ea.bot.x * den + num * d1.x) / den, (ea.bot.y * den + num * d1.y) / den);
-        if !p.is_finite() {
-            let s = num / den;
-            p = Point::new(ea.bot.x + s * d1.x, ea.bot.y + s * d1.y);
-        }
-        if !(p.y >= yb && p.y <= yt) {
-            let y = if p.y > yt { yt } else { yb };
-            let steeper = if (d1.x / d1.y).abs() <= (d2.x / d2.y).abs() { ea } else { eb };
-            p = Point::new(steeper.x_at(y), y);
-        }
-        // At the beam's bottom every active edge's `curr_x` is its `x_at(yb)`, computed when the
-        // scanline was processed: taking it spares two divisions per crossing.
-        // Their x at the top was cached for this beam by `intersection_table`.
-        debug_assert!(ea.curr_x == ea.x_at(yb) && eb.curr_x == eb.x_at(yb));
-        debug_assert!(ea.next_y == yt && eb.next_y == yt);
-        let xs = [ea.curr_x, ea.next_x, eb.curr_x, eb.next_x];
-        let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y)
+/// [`left_at_top`] for x values within rounding of each other: rare, so kept out of line to
+/// leave the comparison loops tight.
+#[cold]
+#[inline(never)]
+fn left_at_top_near(ael: &ActiveEdges, i: u32, xi: f64, k: u32, xk: f64, yt: f64) -> bool {
+    let (a, b) = (ael.get(i), ael.get(k));
+    let left = Orientation::CounterClockwise;
+    if a.bot == b.bot {
+        orient(a.bot, b.top, a.top) == left
+    } else if a.top.y == yt && b.top.y != yt {
+        orient(b.bot, b.top, a.top) == left
+    } else if b.top.y == yt && a.top.y != yt {
+        orient(a.bot, a.top, b.top) == Orientation::Clockwise
+    } else {
+        xi < xk
     }
+}
+
+/// Where edges `a` and `b` cross, kept inside the scanbeam `[yb, yt]`, from their x at both
+/// ends of the beam (`curr_x` at the bottom, computed when the scanline was processed, and
+/// `next_x` at the top, cached by [`IntersectionTable::build`]: no division spent on them).
+fn scanbeam_crossing(ael: &ActiveEdges, a: u32, b: u32, yb: f64, yt: f64) -> Point {
+    let (ea, eb) = (ael.get(a), ael.get(b));
+    debug_assert!(ea.curr_x == ea.x_at(yb) && eb.curr_x == eb.x_at(yb));
+    debug_assert!(ea.next_y == yt && eb.next_y == yt);
+    ea.crossing_with(eb, yb, yt, [ea.curr_x, ea.next_x, eb.curr_x, eb.next_x])
 }

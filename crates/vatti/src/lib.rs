@@ -10,9 +10,9 @@
 //! | paper | here |
 //! | --- | --- |
 //! | bounds, local minima table (LMT) | `bounds::Bounds`, `bounds::LocalMinimum` |
-//! | scanbeam table (SBT), MarkSBT | `scanbeam::Scanbeams` (every vertex height, sorted once) |
-//! | active edge table (AET), edge record (Table 1) | `active::ActiveEdges`, `active::Edge` |
-//! | sorted edge table (ST), intersection table (IT) | `intersections` |
+//! | scanbeam table (SBT), MarkSBT | `scanbeam::Scanbeams` (every vertex height, sorted once), or `edge_tops` (the active edges' tops in a heap) |
+//! | active edge table (AET), edge record (Table 1) | `active::ActiveEdges` (a linked list with a search tree, `order_index`), `active::Edge` |
+//! | sorted edge table (ST), intersection table (IT) | `intersections`, or `crossing_queue` |
 //! | contributing edge, left/right side, rules 1-6 | `contribution` (derived from winding counts) |
 //! | AddLocalMin, AddLeft/AddRight, AddLocalMax, AppendPolygon | `output::OutputBuilder` |
 //! | horizontal edges (Extensions) | `horizontal` (edges slide along the scanline) |
@@ -25,59 +25,66 @@
 //! from this, and so does xor, which the paper does not give: see `contribution` for the
 //! derivation. Non-zero, positive and negative fill only change `fill`.
 //!
-//! # The paper's Extensions: prepared clip, rectangular clip bounds, envelope pre-filter
+//! # Two sweeps
 //!
-//! The paper's Extensions section names two optimisations it does not describe: "clipping
-//! several subject polygons against a constant clip polygon by preassigning the edges of the
-//! clip polygon to the LMT", and that "the algorithm can be optimized for rectangular clip
-//! bounds, which is a typical usage of clipping". A third comes from GEOS's overlay: never sweep
-//! what cannot reach the other operand.
+//! The sweep keeps the paper's model: local minima start pairs of bounds, edges carry their
+//! winding numbers and output chains, and the output is built at local minima, intermediate
+//! vertices, crossings and local maxima. What happens between scanlines can be found two ways
+//! ([`Sweep`]), with the same output:
 //!
-//! - **Envelope pre-filter** (`envelope`), taken by [`PolygonClipper::clip`] by itself for
-//!   operands of more than 64 edges in all (smaller ones are swept whole, which is cheaper): for ∩
-//!   the subject is cut to the clip's bounding box (grown by an eighth), then the clip to the
-//!   cut subject's; for − the clip to the subject's. A stretch of edges that misses the box is
-//!   replaced by a path around it and the loops it wound around the box are added back as
-//!   border loops, so every winding number inside the box is unchanged and no point is
-//!   rounded. A spiky star of 10^6 edges against a small box inside it sweeps a handful of
-//!   edges. When no edge of the other operand reaches the box, that operand is all or nothing
-//!   there, and only the subject (or nothing) is swept.
-//! - **Splice** (`far_splice`), for ∪, ⊕ and − of a big subject: outside the other operand's
-//!   box the result is an operand itself, so when that operand is already in conventional form
-//!   its chains there pass through unchanged. Only its part inside the box (cut exactly, windings
-//!   kept) is swept with the other operand, and the chains are joined back where it crosses the
-//!   box's border (exact crossing tests; the rounded crossing points are never output). Vatti's
-//!   `clip` takes it when an operand is one big ring certified simple (`star_shaped`: a point it
-//!   is star-shaped from, found by linear programming and checked exactly), so a spiky star's
-//!   quadratic sweep is never run; a big ring that is simple but not star-shaped is still swept.
-//!   Anything degenerate at the box's border falls back to the whole sweep.
-//! - **Lone small simple ring** (`simple_ring`): a ring of at most 24 vertices swept alone (the
-//!   rectangle path's cut subject, a subject the pre-filter found all inside) whose edges meet
-//!   only at shared vertices (every pair tested exactly) is its own conventional form.
-//! - **Rectangle path** (`rect_path`): ∩ with a clip that is one axis-aligned rectangle cuts
-//!   the subject to it side by side (Sutherland-Hodgman against each side's half-plane, which
-//!   keeps the winding numbers inside) and sweeps the cut subject alone, for any subject and
-//!   fill rule. The crossings with the sides are rounded to f64, as the sweep rounds them.
-//! - **Prepared clip** ([`Vatti::prepare`], [`PreparedClip`], `Send + Sync`): the clip is
-//!   validated once and its rings get boxes over runs of edges (`edge_blocks`), so for ∩ and −
-//!   each subject's sweep takes only the clip edges near it, found without visiting the others.
-//!   For ∪ and ⊕ the clip's region under the fill rule is resolved once into conventional rings
-//!   (on the first such call), which each subject splices into: only their part inside its
-//!   grown box is swept. The clip's local minima are
-//!   not kept between calls: the sweep's tables are built from the cut operands, which are small. [`VattiPrepared`] puts it behind [`PolygonClipper`]
-//!   (`vatti-prepared` in the harness), keeping each thread's last prepared clip.
+//! - [`Sweep::Scanbeam`], the paper's: every vertex height is a scanline, and in every scanbeam
+//!   every active edge's x at the top is computed and sorted to find the crossings. That is
+//!   Θ(n) per scanbeam with n edges active, so Θ(n²) where many edges span many scanbeams
+//!   (nested or concentric rings, combs, long spirals).
+//! - [`Sweep::Events`], after Bentley and Ottmann (1979): an edge is touched only where it
+//!   starts, where it ends and where it crosses a neighbour. The active edges' tops wait in a
+//!   heap, a pair of edges is tested (exactly) for a crossing only when it becomes adjacent,
+//!   and crossings wait in a second heap; a new edge finds its place in a search tree over the
+//!   table. O((n + k) log n) for n edges and k crossings.
 //!
-//! [`Vatti::clip_unfiltered`] keeps the plain sweep reachable; the tests compare every path with
-//! it and with the exact oracle.
+//! [`Vatti`] takes the event sweep; [`FixedSweep`] fixes either (`vatti-scanbeam` in the
+//! harness reproduces the paper's cost).
+//!
+//! # Routes: the paper's Extensions and a pre-filter
+//!
+//! The paper's Extensions name two optimisations they do not describe: "clipping several
+//! subject polygons against a constant clip polygon by preassigning the edges of the clip
+//! polygon to the LMT", and rectangular clip bounds. A third comes from GEOS's overlay: never
+//! sweep what cannot reach the other operand. What a clip does around the sweep is a [`Route`],
+//! chosen by one function (`route::Plan::of`) from one block of limits (`route::limits`):
+//!
+//! - [`Route::Whole`]: both operands swept as given; ∪ and ⊕, and operands of at most 64 edges
+//!   in all, where cutting costs more than it saves.
+//! - [`Route::Envelope`] (`envelope`): for ∩ the subject is cut to the clip's bounding box
+//!   (grown by an eighth), then the clip to the cut subject's; for − the clip to the subject's.
+//!   A stretch of edges that misses the box is replaced by a path around it and the loops it
+//!   wound around the box are added back as border loops, so every winding number inside the
+//!   box is unchanged and no point is rounded. A spiky star of 10^6 edges against a small box
+//!   inside it sweeps a handful of edges; a rectangular clip is the box itself. When no edge of
+//!   the other operand reaches the box, that operand is all or nothing there, and only the
+//!   subject (or nothing) is swept.
+//! - [`Route::Splice`] (`far_splice`), for ∪ and ⊕ with a prepared clip ([`Vatti::prepare`],
+//!   [`PreparedClip`], `Send + Sync`): outside the subject's grown box the result is the clip's
+//!   region, which preparing resolved once into conventional rings, so its chains there pass
+//!   through unchanged; only the subject with the clip's part inside the box (cut exactly,
+//!   windings kept) is swept, and the chains are joined back where they cross the box's border
+//!   (exact crossing tests; the rounded crossing points are never output). Anything degenerate
+//!   at the border sweeps whole. For ∩ and − the prepared clip's rings have boxes over runs of
+//!   edges (`edge_blocks`), so the envelope finds the clip edges near a subject without visiting
+//!   the others. [`VattiPrepared`] puts it behind [`PolygonClipper`] (`vatti-prepared` in the
+//!   harness), keeping each thread's last prepared clip.
+//!
+//! [`Vatti::clip_along`] and [`PreparedClip::clip_along`] take any route and sweep; the tests
+//! run every one on the same inputs against each other and the exact oracle.
 //!
 //! # Exactness and limits
 //!
 //! - Every in/out and ordering decision at a vertex (where a new edge enters the table, which
-//!   way edges leave a shared point, where a horizontal stops) uses `clip_core::predicates`.
-//!   Crossings inside a scanbeam are found from the edges' x at its top, computed once, clamped
-//!   into the scanbeam, and processed so only adjacent edges swap. Points of crossings are
-//!   rounded to f64: the output is exact for inputs whose crossings are representable (integer
-//!   grids) and within a few ulps of the true region otherwise.
+//!   way edges leave a shared point, where a horizontal stops) uses `clip_core::predicates`, and
+//!   so does the event sweep's test of whether two adjacent edges cross. Crossing points are
+//!   computed once, kept inside the scanbeam, and processed so only adjacent edges swap. They
+//!   are rounded to f64: the output is exact for inputs whose crossings are representable
+//!   (integer grids) and within a few ulps of the true region otherwise.
 //! - Input rings lose repeated and collinear vertices (zero-area spikes included) first: that
 //!   leaves every winding number off the ring unchanged.
 //! - Output vertices are shared exactly between chains that meet: a point emitted at an event
@@ -149,24 +156,25 @@ mod active;
 mod bounds;
 mod cleanup;
 mod contribution;
+mod crossing_queue;
 mod edge_blocks;
+mod edge_tops;
 mod envelope;
 mod far_splice;
 mod form_check;
 mod horizontal;
 mod intersections;
+mod order_index;
 mod output;
 mod prepared;
 mod prepared_reuse;
 mod raw_rings;
-mod rect_path;
 mod repair;
+mod route;
 mod scanbeam;
 mod scratch;
-mod simple_ring;
 mod simplify;
 mod small_sort;
-mod star_shaped;
 mod sweep;
 mod touches;
 mod trapezoids;
@@ -175,43 +183,41 @@ mod turns;
 use std::borrow::Cow;
 
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Rect, Trapezoid,
-    validate_polygons,
+    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, validate_polygons,
 };
 
 pub use crate::prepared::PreparedClip;
 pub use crate::prepared_reuse::VattiPrepared;
+pub use crate::route::Route;
+pub use crate::sweep::Sweep;
 
 use crate::contribution::Rules;
-use crate::edge_blocks::EdgeBlocks;
 use crate::raw_rings::RawRings;
+use crate::route::{Plan, edge_count};
 use crate::scratch::Scratch;
-use crate::sweep::Sweep;
+use crate::sweep::SweepLine;
 use crate::touches::Touches;
 use crate::turns::Turns;
 
-/// Operands of at most this many edges in all are swept whole, not cut to each other's boxes
-/// first: at 4-40 edges the cut cost more than the edges it removed saved (callgrind: grid 20 ∩
-/// 70.9 K to 43.2 K instructions per call, star 20 ∩ 65.3 K to 56.7 K), and its box paths
-/// and border loops add edges of their own.
-const SWEPT_WHOLE_UP_TO: usize = 64;
-
-/// Edges (vertices) of all rings.
-fn edge_count(p: &Polygons) -> usize {
-    p.rings.iter().map(|r| r.points.len()).sum()
-}
-
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
-/// operands, polygon or trapezoid output.
+/// operands, polygon or trapezoid output. Its route and sweep are chosen by the operands'
+/// sizes and the operation ([`Route`], [`Sweep`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Vatti;
 
+/// [`Vatti`] with its sweep fixed: `vatti-scanbeam` (the paper's sweep, whatever the input) and
+/// `vatti-events` in the harness. The same output as [`Vatti`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FixedSweep(pub Sweep);
+
 impl Vatti {
-    /// `subject op clip` by the plain sweep, without the rectangle path and the envelope
-    /// pre-filter that [`PolygonClipper::clip`] takes where they apply: every input edge enters
-    /// the tables. The same region; for comparing the paths.
-    pub fn clip_unfiltered(
+    /// `subject op clip` along the given route, by the given sweep (chosen by size when
+    /// `None`): for comparing the paths, which give the same region. A [`Route::Splice`] needs
+    /// a prepared clip ([`PreparedClip::clip_along`]); here it is [`Route::Envelope`].
+    pub fn clip_along(
         &self,
+        route: Route,
+        sweep: Option<Sweep>,
         subject: &Polygons,
         clip: &Polygons,
         op: BoolOp,
@@ -219,84 +225,13 @@ impl Vatti {
     ) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        Ok(Vatti::sweep_polygons(subject, clip, op, fill))
-    }
-
-    /// `subject op clip` with the rectangle path and the envelope pre-filter wherever they
-    /// apply, small operands included (which [`PolygonClipper::clip`] sweeps whole). The same
-    /// region; for comparing the paths.
-    pub fn clip_prefiltered(
-        &self,
-        subject: &Polygons,
-        clip: &Polygons,
-        op: BoolOp,
-        fill: FillRule,
-    ) -> Result<Polygons, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        let (a, b, op) = Vatti::reduced(subject, clip, clip.bounds(), None, op, fill);
-        Ok(Vatti::sweep_polygons(&a, &b, op, fill))
-    }
-
-    /// What the sweep is given for valid operands: with one rectangle as the clip of ∩, the
-    /// subject cut to it alone (`rect_path`); otherwise both operands with what cannot reach the
-    /// result cut away (`envelope`). The region of `subject op clip` is that of the returned
-    /// `a op' b`. `clip_blocks` are the clip's edge blocks when it was prepared.
-    fn reduced<'a>(
-        subject: &'a Polygons,
-        clip: &'a Polygons,
-        clip_bounds: Rect,
-        clip_blocks: Option<&[EdgeBlocks]>,
-        op: BoolOp,
-        fill: FillRule,
-    ) -> (Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp) {
-        if let Some((r, inside)) = rect_path::rectangle_clip(clip, op, fill) {
-            // Outside the clip both operands wind zero, so ∩ becomes the cut subject ∪ nothing.
-            let a = if inside { rect_path::cut_to_rectangle(subject, r) } else { Polygons::default() };
-            return (Cow::Owned(a), Cow::Owned(Polygons::default()), BoolOp::Union);
-        }
-        envelope::prefilter(subject, clip, clip_bounds, clip_blocks, op, fill)
-    }
-
-    /// [`Vatti::reduced`] of valid operands, except that small ones (at most
-    /// [`SWEPT_WHOLE_UP_TO`] edges in all) skip the envelope pre-filter: swept whole.
-    fn reduced_unless_small<'a>(
-        subject: &'a Polygons,
-        clip: &'a Polygons,
-        op: BoolOp,
-        fill: FillRule,
-    ) -> (Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp) {
-        if edge_count(subject) + edge_count(clip) <= SWEPT_WHOLE_UP_TO
-            && rect_path::rectangle_clip(clip, op, fill).is_none()
-        {
-            return (Cow::Borrowed(subject), Cow::Borrowed(clip), op);
-        }
-        Vatti::reduced(subject, clip, clip.bounds(), None, op, fill)
-    }
-
-    /// Validates both operands and reduces them ([`Vatti::reduced_unless_small`]).
-    fn filtered<'a>(
-        subject: &'a Polygons,
-        clip: &'a Polygons,
-        op: BoolOp,
-        fill: FillRule,
-    ) -> Result<(Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp), ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        Ok(Vatti::reduced_unless_small(subject, clip, op, fill))
+        Ok(clip_planned(subject, clip, None, op, fill, Plan { route, sweep }))
     }
 
     /// The sweep's conventional rings of valid operands, repaired where rounding broke their form.
-    fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Polygons {
-        // A small simple ring alone (the rectangle path's cut subject, often) needs no sweep.
-        if clip.rings.is_empty()
-            && op != BoolOp::Intersection
-            && let Some(out) = simple_ring::alone(subject, fill)
-        {
-            return out;
-        }
+    fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
         let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, strict: bool| {
-            Vatti::sweep(a, b, op, fill, false, |rings, touches, turns, _| {
+            Vatti::sweep(sweep, a, b, op, fill, false, |rings, touches, turns, _| {
                 cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
                     form_check::raw_near_rounding(a, b, rings)
                 })
@@ -315,14 +250,11 @@ impl Vatti {
         }))
     }
 
-    /// The sweep's trapezoids of valid operands.
-    fn sweep_trapezoids(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Vec<Trapezoid> {
-        Vatti::sweep(subject, clip, op, fill, true, |_, _, _, traps| traps)
-    }
-
     /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings
     /// and trapezoids to `finish`.
+    #[allow(clippy::too_many_arguments)]
     fn sweep<T>(
+        sweep: Sweep,
         subject: &Polygons,
         clip: &Polygons,
         op: BoolOp,
@@ -333,14 +265,72 @@ impl Vatti {
         Scratch::with(|scratch| {
             scratch.bounds.rebuild(subject, clip);
             let buffers = std::mem::take(&mut scratch.sweep);
-            let mut sweep = Sweep::new(&scratch.bounds, Rules::new(op, fill), trapezoids, buffers);
-            sweep.run();
-            sweep.out.rings_into(&mut scratch.raw);
-            let traps = sweep.traps.take().unwrap_or_default();
-            scratch.sweep = sweep.into_buffers();
+            let mut line = SweepLine::new(sweep, &scratch.bounds, Rules::new(op, fill), trapezoids, buffers);
+            line.run();
+            line.out.rings_into(&mut scratch.raw);
+            let traps = line.traps.take().unwrap_or_default();
+            scratch.sweep = line.into_buffers();
             finish(&scratch.raw, &mut scratch.touches, &mut scratch.turns, traps)
         })
     }
+}
+
+/// The operands the sweep is given along `route` (of valid operands), and the operation
+/// between them: the region of `subject op clip` is that of `a op' b`. `prepared` is the clip's
+/// preparation when it has one.
+fn reduced<'a>(
+    route: Route,
+    subject: &'a Polygons,
+    clip: &'a Polygons,
+    prepared: Option<&PreparedClip>,
+    op: BoolOp,
+    fill: FillRule,
+) -> (Cow<'a, Polygons>, Cow<'a, Polygons>, BoolOp) {
+    match route {
+        Route::Whole => (Cow::Borrowed(subject), Cow::Borrowed(clip), op),
+        Route::Envelope | Route::Splice => match prepared {
+            Some(p) => envelope::prefilter(subject, clip, p.bounds(), Some(p.blocks()), op, fill),
+            None => envelope::prefilter(subject, clip, clip.bounds(), None, op, fill),
+        },
+    }
+}
+
+/// `subject op clip` of valid operands along `plan`; `prepared` is the clip's preparation when
+/// it has one.
+fn clip_planned(
+    subject: &Polygons,
+    clip: &Polygons,
+    prepared: Option<&PreparedClip>,
+    op: BoolOp,
+    fill: FillRule,
+    plan: Plan,
+) -> Polygons {
+    if plan.route == Route::Splice
+        && let Some(out) = prepared.and_then(|p| p.splice(subject, op, |a, b, op| swept(a, b, op, fill, plan)))
+    {
+        return out;
+    }
+    let (a, b, op) = reduced(plan.route, subject, clip, prepared, op, fill);
+    swept(&a, &b, op, fill, plan)
+}
+
+/// The sweep's clean output for `a op b` (valid operands), by the plan's sweep.
+fn swept(a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, plan: Plan) -> Polygons {
+    Vatti::sweep_polygons(a, b, op, fill, plan.sweep_for(edge_count(a) + edge_count(b)))
+}
+
+/// `subject op clip` as trapezoids along `plan`.
+fn trapezoids_planned(
+    subject: &Polygons,
+    clip: &Polygons,
+    prepared: Option<&PreparedClip>,
+    op: BoolOp,
+    fill: FillRule,
+    plan: Plan,
+) -> Vec<Trapezoid> {
+    let (a, b, op) = reduced(plan.route, subject, clip, prepared, op, fill);
+    let sweep = plan.sweep_for(edge_count(&a) + edge_count(&b));
+    Vatti::sweep(sweep, &a, &b, op, fill, true, |_, _, _, traps| traps)
 }
 
 impl PolygonClipper for Vatti {
@@ -355,11 +345,7 @@ impl PolygonClipper for Vatti {
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        if let Some(out) = far_splice::splice_big_ring(subject, clip, true, op, fill) {
-            return Ok(out);
-        }
-        let (a, b, op) = Vatti::reduced_unless_small(subject, clip, op, fill);
-        Ok(Vatti::sweep_polygons(&a, &b, op, fill))
+        Ok(clip_planned(subject, clip, None, op, fill, Plan::of(subject, clip, op, false)))
     }
 
     fn clip_trapezoids(
@@ -369,7 +355,41 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        let (a, b, op) = Vatti::filtered(subject, clip, op, fill)?;
-        Ok(Vatti::sweep_trapezoids(&a, &b, op, fill))
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        Ok(trapezoids_planned(subject, clip, None, op, fill, Plan::of(subject, clip, op, false)))
+    }
+}
+
+impl PolygonClipper for FixedSweep {
+    fn name(&self) -> &'static str {
+        match self.0 {
+            Sweep::Scanbeam => "vatti-scanbeam",
+            Sweep::Events => "vatti-events",
+        }
+    }
+
+    fn capabilities(&self) -> PolygonCapabilities {
+        Vatti.capabilities()
+    }
+
+    fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        let plan = Plan { sweep: Some(self.0), ..Plan::of(subject, clip, op, false) };
+        Ok(clip_planned(subject, clip, None, op, fill, plan))
+    }
+
+    fn clip_trapezoids(
+        &self,
+        subject: &Polygons,
+        clip: &Polygons,
+        op: BoolOp,
+        fill: FillRule,
+    ) -> Result<Vec<Trapezoid>, ClipError> {
+        validate_polygons(subject, Operand::Subject)?;
+        validate_polygons(clip, Operand::Clip)?;
+        let plan = Plan { sweep: Some(self.0), ..Plan::of(subject, clip, op, false) };
+        Ok(trapezoids_planned(subject, clip, None, op, fill, plan))
     }
 }

@@ -6,14 +6,17 @@ use std::sync::OnceLock;
 
 use clip_core::{BoolOp, ClipError, FillRule, Operand, Polygons, Rect, Trapezoid, validate_polygons};
 
-use crate::Vatti;
 use crate::edge_blocks::EdgeBlocks;
 use crate::far_splice::{Far, splice};
+use crate::route::{Plan, Route};
+use crate::sweep::Sweep;
+use crate::{Vatti, clip_planned, trapezoids_planned};
 
 /// A clip operand and fill rule fixed for many subjects. Each [`PreparedClip::clip`] validates
 /// only the subject and, for ∩ and −, sweeps only the clip edges that can reach the subject's
-/// box, found through the edge blocks without visiting the others. It is `Send + Sync`: one
-/// value serves every thread.
+/// box, found through the edge blocks without visiting the others; for ∪ and ⊕ it splices the
+/// subject's neighbourhood into the clip's region, resolved once ([`Route::Splice`]). It is
+/// `Send + Sync`: one value serves every thread.
 ///
 /// ```
 /// use clip_core::{BoolOp, FillRule, Polygons, Rect};
@@ -62,28 +65,64 @@ impl PreparedClip {
 
     /// `subject op clip`, as [`Vatti`]'s `clip` gives it.
     pub fn clip(&self, subject: &Polygons, op: BoolOp) -> Result<Polygons, ClipError> {
+        self.clip_along(Plan::of(subject, &self.clip, op, true).route, None, subject, op)
+    }
+
+    /// `subject op clip` along the given route and sweep (chosen by size when `None`), for
+    /// comparing the paths: the same region.
+    pub fn clip_along(
+        &self,
+        route: Route,
+        sweep: Option<Sweep>,
+        subject: &Polygons,
+        op: BoolOp,
+    ) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
-        if let Some(out) = crate::far_splice::splice_big_ring(subject, &self.clip, false, op, self.fill) {
-            return Ok(out);
+        Ok(clip_planned(subject, &self.clip, Some(self), op, self.fill, Plan { route, sweep }))
+    }
+
+    /// `subject op clip` as trapezoids, as [`Vatti`]'s `clip_trapezoids` gives them.
+    pub fn clip_trapezoids(&self, subject: &Polygons, op: BoolOp) -> Result<Vec<Trapezoid>, ClipError> {
+        validate_polygons(subject, Operand::Subject)?;
+        let plan = Plan::of(subject, &self.clip, op, true);
+        Ok(trapezoids_planned(subject, &self.clip, Some(self), op, self.fill, plan))
+    }
+
+    /// The clip's bounding box.
+    pub(crate) fn bounds(&self) -> Rect {
+        self.bounds
+    }
+
+    /// The clip's edge blocks, one per ring.
+    pub(crate) fn blocks(&self) -> &[EdgeBlocks] {
+        &self.blocks
+    }
+
+    /// `subject op clip` for ∪ and ⊕ spliced into the clip's resolved region (see
+    /// [`Route::Splice`]), `sweep(a, b, op)` sweeping the subject's neighbourhood; `None` where
+    /// that does not apply.
+    pub(crate) fn splice(
+        &self,
+        subject: &Polygons,
+        op: BoolOp,
+        sweep: impl FnOnce(&Polygons, &Polygons, BoolOp) -> Polygons,
+    ) -> Option<Polygons> {
+        if !matches!(op, BoolOp::Union | BoolOp::Xor) {
+            return None;
         }
-        if matches!(op, BoolOp::Union | BoolOp::Xor) {
-            let resolved = self.resolved();
-            // A region with rounded crossings of the clip's own edges would round twice.
-            if resolved.exact {
-                let far = Far { rings: &resolved.rings, blocks: Some(&resolved.blocks) };
-                if let Some(out) = splice(subject, far, false, op, self.fill) {
-                    return Ok(out);
-                }
-            }
+        let resolved = self.resolved();
+        // A region with rounded crossings of the clip's own edges would round twice.
+        if !resolved.exact {
+            return None;
         }
-        let (a, b, op) = Vatti::reduced(subject, &self.clip, self.bounds, Some(&self.blocks), op, self.fill);
-        Ok(Vatti::sweep_polygons(&a, &b, op, self.fill))
+        let far = Far { rings: &resolved.rings, blocks: Some(&resolved.blocks) };
+        splice(subject, far, false, op, self.fill, sweep)
     }
 
     /// The clip's region in conventional form, resolved once.
-    fn resolved(&self) -> &Resolved {
+    pub(crate) fn resolved(&self) -> &Resolved {
         self.resolved.get_or_init(|| {
-            let rings = Vatti::sweep_polygons(&self.clip, &Polygons::default(), BoolOp::Union, self.fill);
+            let rings = clip_planned(&self.clip, &Polygons::default(), None, BoolOp::Union, self.fill, Plan::WHOLE);
             let blocks = rings.rings.iter().map(|r| EdgeBlocks::new(&r.points)).collect();
             let given: HashSet<(u64, u64)> =
                 self.clip.rings.iter().flat_map(|r| &r.points).map(|p| (p.x.to_bits(), p.y.to_bits())).collect();
@@ -92,19 +131,12 @@ impl PreparedClip {
             Resolved { rings, blocks, exact }
         })
     }
-
-    /// `subject op clip` as trapezoids, as [`Vatti`]'s `clip_trapezoids` gives them.
-    pub fn clip_trapezoids(&self, subject: &Polygons, op: BoolOp) -> Result<Vec<Trapezoid>, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        let (a, b, op) = Vatti::reduced(subject, &self.clip, self.bounds, Some(&self.blocks), op, self.fill);
-        Ok(Vatti::sweep_trapezoids(&a, &b, op, self.fill))
-    }
 }
 
 /// The clip's region in conventional form, with its edge blocks.
 #[derive(Clone, Debug)]
-struct Resolved {
-    rings: Polygons,
+pub(crate) struct Resolved {
+    pub(crate) rings: Polygons,
     blocks: Vec<EdgeBlocks>,
     /// Every vertex is one of the clip's own: resolving it rounded no crossing, so the region's
     /// edges lie exactly on the clip's and splicing around it rounds only once, as the sweep does.

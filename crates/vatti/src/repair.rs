@@ -87,6 +87,7 @@ mod tests {
     /// non-zero, judged by the clean-up (not strict).
     fn repair_sweep(out: &Polygons) -> Result<CleanRings, ClipError> {
         Ok(Vatti::sweep(
+            crate::Sweep::Events,
             out,
             &Polygons::default(),
             BoolOp::Union,

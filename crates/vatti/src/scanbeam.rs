@@ -28,7 +28,7 @@ pub(crate) fn height_key(y: f64) -> i64 {
 
 /// The inverse of [`height_key`].
 #[inline]
-fn height(k: i64) -> f64 {
+pub(crate) fn height(k: i64) -> f64 {
     f64::from_bits((k ^ (((k >> 63) as u64) >> 1) as i64) as u64)
 }
 

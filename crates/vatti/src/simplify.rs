@@ -37,18 +37,6 @@ pub(crate) fn simplify_ring_into(points: &[Point], out: &mut Vec<Point>) {
     }
 }
 
-/// True when [`simplify_ring`] would return `points` unchanged: at least three vertices and no
-/// vertex collinear with its two neighbours (cyclically), which rules out repeats too. Lets a
-/// caller borrow a big ring instead of copying it.
-pub(crate) fn is_simplified(points: &[Point]) -> bool {
-    let n = points.len();
-    n >= 3
-        && (0..n).all(|i| {
-            let (a, b, c) = (points[(i + n - 1) % n], points[i], points[(i + 1) % n]);
-            orient(a, b, c) != Orientation::Collinear
-        })
-}
-
 /// Appends `p`, first popping every vertex that `p` makes collinear or repeated.
 fn push_vertex(out: &mut Vec<Point>, p: Point) {
     loop {
@@ -78,23 +66,6 @@ mod tests {
         let ring =
             pts(&[(0.0, 0.0), (1.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 2.0), (2.0, 3.0), (2.0, 1.0), (0.0, 2.0)]);
         assert_eq!(simplify_ring(&ring), pts(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (0.0, 2.0)]));
-    }
-
-    #[test]
-    fn simplified_rings_are_the_ones_simplify_leaves_alone() {
-        let rings = [
-            pts(&[(0.0, 0.0), (1.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 2.0), (2.0, 3.0), (2.0, 1.0), (0.0, 2.0)]),
-            pts(&[(1.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (0.0, 0.0)]),
-            pts(&[(2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (0.0, 0.0)]),
-            pts(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (0.0, 0.0)]),
-            pts(&[(0.0, 0.0), (1.0, 1.0), (3.0, 3.0)]),
-            pts(&[(0.0, 0.0), (4.0, 0.0), (1.0, 1.0), (0.0, 4.0)]),
-            pts(&[(0.0, 0.0), (4.0, 0.0)]),
-        ];
-        for ring in rings {
-            assert_eq!(is_simplified(&ring), simplify_ring(&ring) == ring, "{ring:?}");
-        }
-        assert!(is_simplified(&pts(&[(0.0, 0.0), (4.0, 0.0), (1.0, 1.0), (0.0, 4.0)])));
     }
 
     #[test]

@@ -1,5 +1,10 @@
-//! The sweep: scanbeams bottom to top, local minima inserted, edge tops processed, and the
+//! The sweep: scanlines bottom to top, local minima inserted, edge tops processed, and the
 //! events that change the output (crossings, starts and ends of bounds).
+//!
+//! Two ways to find what happens between scanlines share everything else ([`Sweep`]): the
+//! paper's, which visits every active edge in every scanbeam (x at the top, the sorted edge
+//! table), and an event sweep, which touches an edge only where it starts, ends or crosses a
+//! neighbour.
 
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{Point, Trapezoid};
@@ -7,9 +12,27 @@ use clip_core::{Point, Trapezoid};
 use crate::active::{ActiveEdges, ROUNDING};
 use crate::bounds::{Bounds, LocalMinimum, NONE};
 use crate::contribution::{Crossing, Rules, classify};
-use crate::intersections::{Intersection, TopX};
+use crate::crossing_queue::{CrossingQueue, PendingCrossing};
+use crate::edge_tops::EdgeTops;
+use crate::intersections::IntersectionTable;
 use crate::output::OutputBuilder;
-use crate::scanbeam::Scanbeams;
+use crate::scanbeam::{Scanbeams, height, height_key};
+use crate::small_sort::insertion_sorted_by;
+
+/// How the sweep finds the edges that end on a scanline and the crossings between scanlines.
+/// Both give the same output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Sweep {
+    /// Vatti's: every vertex height is a scanline, and in every scanbeam every active edge's x
+    /// at the top is computed and sorted (the sorted edge table) to find the crossings. Θ(n) per
+    /// scanbeam where n edges are active: quadratic where many edges span many scanbeams
+    /// (nested or concentric rings, combs, long spirals).
+    Scanbeam,
+    /// Event-driven (Bentley & Ottmann 1979): the active edges' tops wait in a heap, a pair of
+    /// edges is tested for a crossing only when it becomes adjacent, and new edges find their
+    /// place in a search tree. O((n + k) log n) for n edges and k crossings.
+    Events,
+}
 
 /// A pending slide along a horizontal edge at the current scanline.
 #[derive(Clone, Copy, Debug)]
@@ -28,14 +51,17 @@ pub(crate) struct Slide {
 pub(crate) struct SweepBuffers {
     ael: ActiveEdges,
     beams: Scanbeams,
+    tops: EdgeTops,
+    crossings: CrossingQueue,
+    table: IntersectionTable,
     out: OutputBuilder,
     traps: Vec<Trapezoid>,
+    ending: Vec<u32>,
+    lefts: Vec<u32>,
+    on_scanline: Vec<PendingCrossing>,
     maxima: Vec<u32>,
     settle: Vec<u32>,
     slides: Vec<Slide>,
-    xtop: Vec<TopX>,
-    sorted: Vec<u32>,
-    table: Vec<Intersection>,
 }
 
 impl SweepBuffers {
@@ -43,87 +69,143 @@ impl SweepBuffers {
     pub(crate) fn held_bytes(&self) -> usize {
         use std::mem::size_of;
         self.ael.held_bytes()
+            + self.tops.held_bytes()
+            + self.crossings.held_bytes()
+            + self.table.held_bytes()
             + self.out.held_bytes()
             + self.traps.capacity() * size_of::<Trapezoid>()
-            + self.table.capacity() * size_of::<Intersection>()
             + self.slides.capacity() * size_of::<Slide>()
-            + self.xtop.capacity() * size_of::<TopX>()
-            + 8 * (self.beams.capacity() + self.maxima.capacity() + self.settle.capacity() + self.sorted.capacity())
+            + 8 * self.beams.capacity()
+            + 4 * (self.ending.capacity() + self.lefts.capacity() + self.maxima.capacity() + self.settle.capacity())
     }
 }
 
 /// One run of the clipper over two operands.
-pub(crate) struct Sweep<'a> {
+pub(crate) struct SweepLine<'a> {
+    pub kind: Sweep,
     pub rules: Rules,
     pub bounds: &'a Bounds,
     pub ael: ActiveEdges,
-    pub beams: Scanbeams,
+    /// The scanlines: every vertex height ([`Sweep::Scanbeam`]).
+    beams: Scanbeams,
+    /// The active edges by the height of their tops ([`Sweep::Events`]).
+    tops: EdgeTops,
+    /// Crossings found and not yet passed ([`Sweep::Events`]).
+    crossings: CrossingQueue,
+    /// The sorted edge and intersection tables ([`Sweep::Scanbeam`]).
+    table: IntersectionTable,
     pub out: OutputBuilder,
     /// Trapezoids, when asked for.
     pub traps: Option<Vec<Trapezoid>>,
     next_minimum: usize,
     // Work lists reused between scanlines.
+    ending: Vec<u32>,
+    lefts: Vec<u32>,
+    /// Crossings on the scanline of two edges going on above it, taken after its vertices.
+    on_scanline: Vec<PendingCrossing>,
     maxima: Vec<u32>,
     settle: Vec<u32>,
     slides: Vec<Slide>,
-    /// The sorted edge table's x values at the scanbeam top, and its order (reused buffers).
-    pub(crate) xtop: Vec<TopX>,
-    pub(crate) sorted: Vec<u32>,
-    /// The intersection table's buffer, reused between scanbeams.
-    pub(crate) table: Vec<Intersection>,
     /// True while a crossing at a computed (rounded) point is processed: only such a point may
     /// join the chain of an edge it lies within rounding of; any other point is an exact input
     /// vertex.
     pub(crate) rounded_crossing: bool,
 }
 
-impl<'a> Sweep<'a> {
-    /// A sweep over `bounds` in the given (emptied) buffers.
-    pub(crate) fn new(bounds: &'a Bounds, rules: Rules, trapezoids: bool, buffers: SweepBuffers) -> Sweep<'a> {
+impl<'a> SweepLine<'a> {
+    /// A sweep of the given kind over `bounds` in the given (emptied) buffers.
+    pub(crate) fn new(
+        kind: Sweep,
+        bounds: &'a Bounds,
+        rules: Rules,
+        trapezoids: bool,
+        buffers: SweepBuffers,
+    ) -> SweepLine<'a> {
         let SweepBuffers {
             mut ael,
             mut beams,
+            mut tops,
+            mut crossings,
+            mut table,
             mut out,
             mut traps,
+            mut ending,
+            mut lefts,
+            mut on_scanline,
             mut maxima,
             mut settle,
             mut slides,
-            mut xtop,
-            mut sorted,
-            mut table,
         } = buffers;
-        ael.reset();
-        beams.rebuild(&bounds.vertices);
+        ael.reset(kind == Sweep::Events);
+        if kind == Sweep::Scanbeam {
+            beams.rebuild(&bounds.vertices);
+        }
+        tops.clear();
+        crossings.clear();
+        table.clear();
         out.reset(if trapezoids { 0 } else { bounds.vertices.len() });
         traps.clear();
+        ending.clear();
+        lefts.clear();
+        on_scanline.clear();
         maxima.clear();
         settle.clear();
         slides.clear();
-        xtop.clear();
-        sorted.clear();
-        table.clear();
-        Sweep {
+        SweepLine {
+            kind,
             rules,
             bounds,
             ael,
             beams,
+            tops,
+            crossings,
+            table,
             out,
             traps: trapezoids.then_some(traps),
             next_minimum: 0,
+            ending,
+            lefts,
+            on_scanline,
             maxima,
             settle,
             slides,
-            xtop,
-            sorted,
-            table,
             rounded_crossing: false,
         }
     }
 
     /// The buffers back, for the next sweep (trapezoids, if any, moved out first).
     pub(crate) fn into_buffers(self) -> SweepBuffers {
-        let Sweep { ael, beams, out, traps, maxima, settle, slides, xtop, sorted, table, .. } = self;
-        SweepBuffers { ael, beams, out, traps: traps.unwrap_or_default(), maxima, settle, slides, xtop, sorted, table }
+        let SweepLine {
+            ael,
+            beams,
+            tops,
+            crossings,
+            table,
+            out,
+            traps,
+            ending,
+            lefts,
+            on_scanline,
+            maxima,
+            settle,
+            slides,
+            ..
+        } = self;
+        SweepBuffers {
+            ael,
+            beams,
+            tops,
+            crossings,
+            table,
+            out,
+            traps: traps.unwrap_or_default(),
+            ending,
+            lefts,
+            on_scanline,
+            maxima,
+            settle,
+            slides,
+        }
     }
 
     /// Runs the whole sweep. Every scanline is a distinct y above the previous one, taken from
@@ -134,8 +216,13 @@ impl<'a> Sweep<'a> {
         loop {
             self.top_of_scanbeam(y);
             self.insert_local_minima(y);
-            // The minima's heights are among the scanlines.
-            let Some(next) = self.beams.next_above(y) else { break };
+            if self.kind == Sweep::Events {
+                self.test_new_pairs(y);
+                for c in self.on_scanline.drain(..) {
+                    self.crossings.push(c.left, c.right, c.pt);
+                }
+            }
+            let Some(next) = self.next_scanline(y) else { break };
             self.ael.scanline_done();
             self.process_intersections(y, next);
             y = next;
@@ -143,16 +230,37 @@ impl<'a> Sweep<'a> {
         self.beams.release_if_large();
     }
 
+    /// The lowest scanline above `y`: a vertex height, where a local minimum starts or an active
+    /// edge ends.
+    fn next_scanline(&mut self, y: f64) -> Option<f64> {
+        match self.kind {
+            Sweep::Scanbeam => self.beams.next_above(y),
+            Sweep::Events => {
+                let minimum = self.bounds.minima.get(self.next_minimum).map(|m| height_key(self.bounds.minimum_y(m)));
+                let lowest = match (minimum, self.tops.lowest()) {
+                    (Some(m), Some(t)) => Some(m.min(t)),
+                    (m, t) => m.or(t),
+                };
+                lowest.map(height)
+            }
+        }
+    }
+
     // ---- edges ----
 
     /// Makes the active edge for the bound leaving vertex `from` towards `to`.
     fn new_edge(&mut self, from: u32, to: u32, kind: u8, forward: bool) -> u32 {
         let (bot, top) = (self.bounds.pt(from), self.bounds.pt(to));
-        self.ael.create(bot, top, kind, forward, to)
+        let id = self.ael.create(bot, top, kind, forward, to);
+        if self.kind == Sweep::Events {
+            self.tops.push(top.y, id);
+        }
+        id
     }
 
-    /// The other bound's edge ending at vertex `v`, opposite in direction to `id`.
-    fn partner_at(&self, id: u32, v: u32) -> Option<u32> {
+    /// The other bound's edge ending at vertex `v`, opposite in direction to `id`, and whether
+    /// it lies right of `id`.
+    fn partner_at(&self, id: u32, v: u32) -> Option<(u32, bool)> {
         if !self.ael.get(id).alive {
             return None;
         }
@@ -194,16 +302,19 @@ impl<'a> Sweep<'a> {
             orient(p, backward_top, forward_top) == Orientation::CounterClockwise
         };
         let (left, right) = if forward_left { (forward, backward) } else { (backward, forward) };
-        let pos = self.ael.insert_position(p, if m.horizontal { backward_top } else { self.ael.get(left).top });
-        self.ael.get_mut(forward).curr_x = p.x;
-        // With a horizontal bottom the forward edge starts away from p: it slides there.
-        self.ael.get_mut(forward).moving = m.horizontal;
-        let wl = self.ael.wind_before(pos);
+        self.ael.insert_at(left, p, if m.horizontal { backward_top } else { self.ael.get(left).top });
+        self.ael.insert_after(right, left);
+        {
+            let e = self.ael.get_mut(forward);
+            e.curr_x = p.x;
+            e.curr_y = p.y;
+            // With a horizontal bottom the forward edge starts away from p: it slides there.
+            e.moving = m.horizontal;
+        }
+        let wl = self.ael.wind_right_of(self.ael.prev(left));
         self.ael.get_mut(left).wind_left = wl;
-        self.ael.insert(pos, left);
         let wm = self.ael.get(left).wind_right();
         self.ael.get_mut(right).wind_left = wm;
-        self.ael.insert(pos + 1, right);
         let (i0, i1) = (self.rules.inside(wl), self.rules.inside(wm));
         if i0 != i1 {
             if i1 { self.start_output(left, right, p) } else { self.start_output(right, left, p) }
@@ -222,48 +333,72 @@ impl<'a> Sweep<'a> {
     // ---- top of scanbeam ----
 
     /// Edges reaching scanline `y`: intermediate vertices hand over to successor edges, local
-    /// maxima end pairs of bounds, horizontals make edges slide.
+    /// maxima end pairs of bounds, horizontals make edges slide. The edges ending here are
+    /// taken in one order whichever sweep found them: by their tops' x, then vertex.
     fn top_of_scanbeam(&mut self, y: f64) {
-        for pos in 0..self.ael.len() {
-            let id = self.ael.at(pos);
-            let e = self.ael.get_mut(id);
-            if e.top.y != y {
-                e.curr_x = e.x_at_cached(y);
-                continue;
+        let mut ending = std::mem::take(&mut self.ending);
+        match self.kind {
+            Sweep::Scanbeam => {
+                // The paper's pass over the whole table: every edge's x on the scanline.
+                let mut id = self.ael.first();
+                while id != NONE {
+                    let e = self.ael.get_mut(id);
+                    if e.top.y == y {
+                        ending.push(id);
+                    } else {
+                        e.curr_x = e.x_at_cached(y);
+                        e.curr_y = y;
+                    }
+                    id = e.next;
+                }
             }
+            Sweep::Events => self.tops.take_at(y, &mut ending),
+        }
+        if ending.len() > 1 {
+            let edges = &self.ael.edges;
+            let key = |id: &u32| {
+                let e = &edges[*id as usize];
+                (height_key(e.top.x), e.top_vertex, e.forward)
+            };
+            if !insertion_sorted_by(&mut ending, |a, b| key(a) < key(b)) {
+                ending.sort_unstable_by_key(key);
+            }
+        }
+        for &id in &ending {
+            let e = self.ael.get_mut(id);
             e.curr_x = e.top.x;
+            e.curr_y = y;
             let (t, forward) = (e.top_vertex, e.forward);
             let u = self.bounds.along(t, forward);
             let (tp, up) = (self.bounds.pt(t), self.bounds.pt(u));
             if up.y > y {
-                let s = self.succeed(pos, t, u);
-                self.settle.push(s);
+                self.succeed(id, t, u);
+                self.settle.push(id);
             } else if up.y < y {
                 self.maxima.push(id);
             } else {
                 let w = self.bounds.along(u, forward);
                 if self.bounds.pt(w).y > y {
-                    let s = self.succeed(pos, u, w);
-                    let e = self.ael.get_mut(s);
+                    self.succeed(id, u, w);
+                    let e = self.ael.get_mut(id);
                     e.curr_x = tp.x;
                     e.moving = true;
-                    self.slides.push(Slide { edge: s, from_x: tp.x, to_x: up.x, max_vertex: NONE });
+                    self.slides.push(Slide { edge: id, from_x: tp.x, to_x: up.x, max_vertex: NONE });
                 } else if forward {
                     self.ael.get_mut(id).moving = true;
                     self.slides.push(Slide { edge: id, from_x: tp.x, to_x: up.x, max_vertex: u });
                 }
             }
         }
+        ending.clear();
+        self.ending = ending;
         // The lists are read by index: the events below never add to them.
         for i in 0..self.maxima.len() {
             let id = self.maxima[i];
-            if !self.ael.get(id).alive {
-                continue;
-            }
             let t = self.ael.get(id).top_vertex;
             let tp = self.bounds.pt(t);
-            if let Some(partner) = self.partner_at(id, t) {
-                self.meet(id, partner, tp, tp.x, tp.x, tp.y);
+            if let Some((partner, right)) = self.partner_at(id, t) {
+                self.meet(id, partner, right, tp, tp.x, tp.x, tp.y);
             }
         }
         for i in 0..self.settle.len() {
@@ -280,14 +415,14 @@ impl<'a> Sweep<'a> {
                 let to = Point::new(s.to_x, y);
                 self.add_point(s.edge, to);
                 self.settle(s.edge);
-            } else if let Some(partner) = self.partner_at(s.edge, s.max_vertex) {
+            } else if let Some((partner, right)) = self.partner_at(s.edge, s.max_vertex) {
                 let e = self.ael.get(s.edge);
                 let tp = e.top;
                 if e.outrec != NONE {
                     self.add_point(s.edge, tp);
                 }
                 let mp = self.bounds.pt(s.max_vertex);
-                self.meet(s.edge, partner, mp, s.from_x, s.to_x, y);
+                self.meet(s.edge, partner, right, mp, s.from_x, s.to_x, y);
             }
             self.ael.get_mut(s.edge).moving = false;
         }
@@ -296,11 +431,10 @@ impl<'a> Sweep<'a> {
         self.slides.clear();
     }
 
-    /// Moves the edge at `pos` on to its bound's next edge `from -> to` (an intermediate vertex
-    /// at the old edge's top: its output chain, if any, gets the vertex). The bound keeps its
-    /// edge record, winding counts and output chain, as Vatti's edge record does.
-    fn succeed(&mut self, pos: usize, from: u32, to: u32) -> u32 {
-        let id = self.ael.at(pos);
+    /// Moves edge `id` on to its bound's next edge `from -> to` (an intermediate vertex at the
+    /// old edge's top: its output chain, if any, gets the vertex). The bound keeps its edge
+    /// record, place, winding counts and output chain, as Vatti's edge record does.
+    fn succeed(&mut self, id: u32, from: u32, to: u32) {
         let (rec, top) = {
             let e = self.ael.get(id);
             (e.outrec, e.top)
@@ -313,81 +447,77 @@ impl<'a> Sweep<'a> {
         e.set_ends(bot, next_top);
         e.top_vertex = to;
         e.curr_x = top.x;
+        e.curr_y = top.y;
         e.next_y = f64::NAN;
-        id
+        self.ael.segment_changed(id);
+        if self.kind == Sweep::Events {
+            self.tops.push(next_top.y, id);
+        }
     }
 
-    /// Moves edge `id` across the edges between it and `partner` (crossings at the
-    /// scanline, x clamped to `[from_x, to_x]`), then ends both bounds at `p`: AddLocalMax.
-    fn meet(&mut self, id: u32, partner: u32, p: Point, from_x: f64, to_x: f64, y: f64) {
+    /// Moves edge `id` across the edges between it and `partner` (on its `right` or left;
+    /// crossings at the scanline, x clamped to `[from_x, to_x]`), then ends both bounds at `p`:
+    /// AddLocalMax.
+    #[allow(clippy::too_many_arguments)]
+    fn meet(&mut self, id: u32, partner: u32, right: bool, p: Point, from_x: f64, to_x: f64, y: f64) {
         let (lo, hi) = (from_x.min(to_x), from_x.max(to_x));
-        let n = self.ael.len();
-        for _ in 0..n {
-            let (pos, ppos) = (self.ael.pos(id), self.ael.pos(partner));
-            if pos + 1 == ppos || ppos + 1 == pos {
+        for _ in 0..self.ael.len() {
+            let k = if right { self.ael.next(id) } else { self.ael.prev(id) };
+            if k == partner || k == NONE {
                 break;
             }
             // The crossings are at the other edges' rounded x on this scanline.
+            let x = self.ael.x_on(k, y).clamp(lo, hi);
             self.rounded_crossing = true;
-            if ppos > pos {
-                let k = self.ael.at(pos + 1);
-                let x = self.ael.get(k).curr_x.clamp(lo, hi);
-                self.cross(pos, Point::new(x, y));
-            } else {
-                let k = self.ael.at(pos - 1);
-                let x = self.ael.get(k).curr_x.clamp(lo, hi);
-                self.cross(pos - 1, Point::new(x, y));
-            }
+            self.cross(if right { id } else { k }, Point::new(x, y));
             self.rounded_crossing = false;
         }
-        let (pos, ppos) = (self.ael.pos(id), self.ael.pos(partner));
-        if pos + 1 == ppos || ppos + 1 == pos {
-            self.end_pair(pos.min(ppos), p);
+        if self.ael.next(id) == partner {
+            self.end_pair(id, p);
+        } else if self.ael.next(partner) == id {
+            self.end_pair(partner, p);
         }
     }
 
     /// Orders a new edge starting at its bottom among edges through the same point by
-    /// direction above it: exact, with crossings at that point. Called on the current scanline,
-    /// where every active edge's `curr_x` is its x there.
+    /// direction above it: exact, with crossings at that point. Called on the scanline through
+    /// its bottom.
     fn settle(&mut self, id: u32) {
         let (p, top) = (self.ael.get(id).bot, self.ael.get(id).top);
-        let n = self.ael.len();
-        for _ in 0..n {
-            let pos = self.ael.pos(id);
-            if pos + 1 >= self.ael.len() {
+        for _ in 0..self.ael.len() {
+            let k = self.ael.next(id);
+            if k == NONE
+                || !self.through_bottom(k, p)
+                || orient(p, top, self.ael.get(k).top) != Orientation::CounterClockwise
+            {
                 break;
             }
-            let k = self.ael.get(self.ael.at(pos + 1));
-            if k.moving || k.ends_by(p.y) || k.clearly_off_scanline(p) || k.side_of(p) != Orientation::Collinear {
-                break;
-            }
-            if orient(p, top, k.top) != Orientation::CounterClockwise {
-                break;
-            }
-            self.cross(pos, p);
+            self.cross(id, p);
         }
-        for _ in 0..n {
-            let pos = self.ael.pos(id);
-            if pos == 0 {
+        for _ in 0..self.ael.len() {
+            let k = self.ael.prev(id);
+            if k == NONE || !self.through_bottom(k, p) || orient(p, top, self.ael.get(k).top) != Orientation::Clockwise
+            {
                 break;
             }
-            let k = self.ael.get(self.ael.at(pos - 1));
-            if k.moving || k.ends_by(p.y) || k.clearly_off_scanline(p) || k.side_of(p) != Orientation::Collinear {
-                break;
-            }
-            if orient(p, top, k.top) != Orientation::Clockwise {
-                break;
-            }
-            self.cross(pos - 1, p);
+            self.cross(k, p);
         }
+    }
+
+    /// True when active edge `k` passes through `p` on the scanline and goes on above it.
+    #[inline]
+    fn through_bottom(&mut self, k: u32, p: Point) -> bool {
+        let x = self.ael.x_on(k, p.y);
+        let e = self.ael.get(k);
+        !(e.moving || e.ends_by(p.y) || e.clearly_off(x, p) || e.side_of(p) != Orientation::Collinear)
     }
 
     // ---- events ----
 
-    /// Swaps the adjacent edges at `pos` and `pos + 1`, which cross at `p`, updating their
-    /// winding counts and the output (see [`crate::contribution`]).
-    pub(crate) fn cross(&mut self, pos: usize, p: Point) {
-        let (a, b) = (self.ael.at(pos), self.ael.at(pos + 1));
+    /// Swaps `a` and its right neighbour `b`, which cross at `p`, updating their winding counts
+    /// and the output (see [`crate::contribution`]).
+    pub(crate) fn cross(&mut self, a: u32, p: Point) {
+        let b = self.ael.next(a);
         let (ea, eb) = (self.ael.get(a), self.ael.get(b));
         let wl = ea.wind_left;
         let mid = ea.wind_right();
@@ -397,7 +527,7 @@ impl<'a> Sweep<'a> {
         let class = classify(r.inside(wl), r.inside(mid), r.inside(right), r.inside(mid_after));
         self.ael.get_mut(b).wind_left = wl;
         self.ael.get_mut(a).wind_left = mid_after;
-        self.ael.swap(pos);
+        self.ael.swap(a);
         match class {
             Crossing::Nothing => {}
             Crossing::AToB => {
@@ -429,13 +559,110 @@ impl<'a> Sweep<'a> {
         }
     }
 
-    /// Removes the adjacent pair at `pos`, whose bounds meet at `p` (a local maximum).
-    fn end_pair(&mut self, pos: usize, p: Point) {
-        let (a, b) = (self.ael.at(pos), self.ael.at(pos + 1));
+    /// Removes `a` and its right neighbour, whose bounds meet at `p` (a local maximum).
+    fn end_pair(&mut self, a: u32, p: Point) {
+        let b = self.ael.next(a);
         if self.ael.get(a).outrec != NONE || self.ael.get(b).outrec != NONE {
             self.end_output(a, b, p);
         }
-        self.ael.remove_pair(pos);
+        self.ael.remove_pair(a);
+    }
+
+    // ---- crossings between scanlines ----
+
+    /// Processes every crossing in the scanbeam `[yb, yt]`, emitting trapezoids between
+    /// consecutive crossing heights when asked.
+    fn process_intersections(&mut self, yb: f64, yt: f64) {
+        let mut y_prev = yb;
+        match self.kind {
+            Sweep::Scanbeam => {
+                self.table.build(&mut self.ael, yb, yt);
+                let mut table = std::mem::take(&mut self.table.table);
+                for i in 0..table.len() {
+                    if self.ael.next(table[i].left) != table[i].right {
+                        // Crossings at (nearly) one height may come in any order; take the next
+                        // one that is adjacent now. One always is: the table holds exactly the
+                        // inversions left.
+                        match (i + 1..table.len()).find(|&j| self.ael.next(table[j].left) == table[j].right) {
+                            Some(j) => table.swap(i, j),
+                            None => break,
+                        }
+                    }
+                    let c = table[i];
+                    self.crossing(c.left, c.pt, &mut y_prev);
+                }
+                table.clear();
+                self.table.table = table;
+            }
+            Sweep::Events => {
+                while let Some(c) = self.crossings.pop_up_to(yt) {
+                    // Dropped when an edge came between the pair, or one of them ended: the pair
+                    // is tested again if it is ever adjacent again.
+                    if self.ael.next(c.left) != c.right || !self.ael.get(c.left).alive {
+                        continue;
+                    }
+                    if c.pt.y == yt && self.after_scanline(c.left, c.right, yt) {
+                        self.on_scanline.push(c);
+                        continue;
+                    }
+                    self.crossing(c.left, c.pt, &mut y_prev);
+                    self.test_new_pairs(yb);
+                }
+            }
+        }
+        if self.traps.is_some() && yt > y_prev {
+            self.emit_slab(y_prev, yt);
+        }
+    }
+
+    /// True when adjacent edges `l` and `r`, crossing on scanline `y`, cross after its vertices
+    /// are taken: both go on above it and their x there, rounded, are still in order. So the
+    /// table's order on a scanline is that of the edges' rounded x where exact crossings and
+    /// rounding disagree (two edges meeting at an x that is not representable), as the scanbeam
+    /// sweep leaves it, and a horizontal passes them in that order.
+    fn after_scanline(&mut self, l: u32, r: u32, y: f64) -> bool {
+        self.ael.get(l).top.y != y && self.ael.get(r).top.y != y && self.ael.x_on(l, y) <= self.ael.x_on(r, y)
+    }
+
+    /// The crossing of `left` and its right neighbour at the computed point `p`, after the
+    /// slab of trapezoids below it.
+    #[inline]
+    fn crossing(&mut self, left: u32, p: Point, y_prev: &mut f64) {
+        if self.traps.is_some() && p.y > *y_prev {
+            self.emit_slab(*y_prev, p.y);
+            *y_prev = p.y;
+        }
+        self.rounded_crossing = true;
+        self.cross(left, p);
+        self.rounded_crossing = false;
+    }
+
+    /// Tests every pair of edges that became adjacent since the last test, queueing the
+    /// crossings found, kept at or above scanline `y` (the last one passed). Not above the last
+    /// crossing taken: crossings of several edges through one point round to points an ulp or
+    /// two apart, and one rounded just below the last would move if kept above it.
+    fn test_new_pairs(&mut self, y: f64) {
+        let mut lefts = std::mem::take(&mut self.lefts);
+        self.ael.take_new_pairs(&mut lefts);
+        for &l in &lefts {
+            let r = self.ael.next(l);
+            self.test_pair(l, r, y);
+        }
+        self.lefts = lefts;
+    }
+
+    /// Queues the crossing of adjacent edges `l` and `r` if they cross before either ends, at
+    /// their crossing point kept between height `y` and the lower top.
+    #[inline]
+    fn test_pair(&mut self, l: u32, r: u32, y: f64) {
+        let (el, er) = (self.ael.get(l), self.ael.get(r));
+        debug_assert!(!el.moving && !er.moving);
+        if !el.crosses_before_top(er) {
+            return;
+        }
+        let yt = el.top.y.min(er.top.y);
+        let pt = el.crossing_with(er, y, yt, [el.x_at(y), el.x_at(yt), er.x_at(y), er.x_at(yt)]);
+        self.crossings.push(l, r, pt);
     }
 
     // ---- output glue ----
@@ -448,19 +675,30 @@ impl<'a> Sweep<'a> {
         self.node_pair_neighbours(left, right, p, rounded);
     }
 
-    /// [`Sweep::node_neighbours`] of both `a` and `b`, which hold `p` in their chains already.
+    /// The left and right one of `a` and `b` when they are adjacent.
+    #[inline]
+    fn adjacent(&self, a: u32, b: u32) -> Option<(u32, u32)> {
+        if self.ael.next(a) == b {
+            Some((a, b))
+        } else if self.ael.next(b) == a {
+            Some((b, a))
+        } else {
+            None
+        }
+    }
+
+    /// [`SweepLine::node_neighbours`] of both `a` and `b`, which hold `p` in their chains already.
     /// When they are adjacent, one scan each way beyond the pair does what a scan from each edge
     /// would (each edge's scan passes its partner, which holds `p`), with either edge's line for
     /// the coincidence test.
     fn node_pair_neighbours(&mut self, a: u32, b: u32, p: Point, rounded: bool) {
-        let (pa, pb) = (self.ael.pos(a), self.ael.pos(b));
-        let (lo, hi) = (pa.min(pb), pa.max(pb));
-        if hi != lo + 1 {
-            self.node_neighbours(a, p, rounded);
-            self.node_neighbours(b, p, rounded);
-            return;
+        match self.adjacent(a, b) {
+            Some((lo, hi)) => self.node_outward(a, b, lo, hi, p, rounded),
+            None => {
+                self.node_neighbours(a, p, rounded);
+                self.node_neighbours(b, p, rounded);
+            }
         }
-        self.node_outward(a, b, lo, hi, p, rounded);
     }
 
     /// True when edges `a` and `b` lie on one line (exact).
@@ -482,32 +720,27 @@ impl<'a> Sweep<'a> {
     /// origin the rounding allowance (ulps of the magnitude) spans whole input edges.
     #[inline]
     fn node_neighbours(&mut self, id: u32, p: Point, rounded: bool) {
-        let pos = self.ael.pos(id);
-        self.node_outward(id, id, pos, pos, p, rounded);
+        self.node_outward(id, id, id, id, p, rounded);
     }
 
-    /// Gives `p` to the edges left of active position `lo` and right of `hi`, outwards, each
-    /// scan stopping at the first edge that does not pass through it ([`Sweep::node_neighbour`]).
+    /// Gives `p` to the edges left of active edge `lo` and right of `hi`, outwards, each scan
+    /// stopping at the first edge that does not pass through it ([`SweepLine::node_neighbour`]).
     #[inline]
-    fn node_outward(&mut self, a: u32, b: u32, lo: usize, hi: usize, p: Point, rounded: bool) {
-        for k in (0..lo).rev() {
-            if !self.node_neighbour(a, b, k, p, rounded) {
-                break;
-            }
+    fn node_outward(&mut self, a: u32, b: u32, lo: u32, hi: u32, p: Point, rounded: bool) {
+        let mut k = self.ael.prev(lo);
+        while k != NONE && self.node_neighbour(a, b, k, p, rounded) {
+            k = self.ael.prev(k);
         }
-        for k in hi + 1..self.ael.len() {
-            if !self.node_neighbour(a, b, k, p, rounded) {
-                break;
-            }
+        let mut k = self.ael.next(hi);
+        while k != NONE && self.node_neighbour(a, b, k, p, rounded) {
+            k = self.ael.next(k);
         }
     }
 
-    /// [`Sweep::node_neighbours`] for the edge at active position `pos`: gives it `p` if it
-    /// passes through it (lying on the line of `id` or `also` counts); false when the search
-    /// should stop there.
+    /// [`SweepLine::node_neighbours`] for active edge `k`: gives it `p` if it passes through it
+    /// (lying on the line of `id` or `also` counts); false when the search should stop there.
     #[inline(always)]
-    fn node_neighbour(&mut self, id: u32, also: u32, pos: usize, p: Point, rounded: bool) -> bool {
-        let k = self.ael.at(pos);
+    fn node_neighbour(&mut self, id: u32, also: u32, k: u32, p: Point, rounded: bool) -> bool {
         let e = self.ael.get(k);
         if e.moving {
             // A sliding edge sits at the slide's x, not on its own line: look past it.
@@ -556,25 +789,24 @@ impl<'a> Sweep<'a> {
         }
     }
 
-    /// [`Sweep::add_point`] to `a`, whose neighbour `b` passes through `p` too and needs no point
+    /// [`SweepLine::add_point`] to `a`, whose neighbour `b` passes through `p` too and needs no point
     /// of its own there (it holds no chain, or `a`'s, which gets `p` now): `a`'s search would
     /// only pass `b`, so it starts beyond the pair, with either edge's line for the coincidence
-    /// test (as [`Sweep::node_pair_neighbours`]).
+    /// test (as [`SweepLine::node_pair_neighbours`]).
     fn add_point_beside(&mut self, a: u32, b: u32, p: Point) {
         let (rec, rec_b) = (self.ael.get(a).outrec, self.ael.get(b).outrec);
-        let (pa, pb) = (self.ael.pos(a), self.ael.pos(b));
-        let (lo, hi) = (pa.min(pb), pa.max(pb));
-        if rec == NONE || (rec_b != NONE && rec_b != rec) || hi != lo + 1 {
+        let pair = self.adjacent(a, b);
+        let Some((lo, hi)) = pair.filter(|_| rec != NONE && (rec_b == NONE || rec_b == rec)) else {
             self.add_point(a, p);
             return;
-        }
+        };
         let left = self.is_left(a);
         self.out.add(rec, left, p);
         let rounded = self.rounded_crossing && !self.is_vertex_of(a, p);
         self.node_outward(a, b, lo, hi, p, rounded);
     }
 
-    /// [`Sweep::add_point`] to `a` and then to `b`, both contributing, with one neighbour
+    /// [`SweepLine::add_point`] to `a` and then to `b`, both contributing, with one neighbour
     /// search for the pair.
     fn add_point_both(&mut self, a: u32, b: u32, p: Point) {
         let (ra, rb) = (self.ael.get(a).outrec, self.ael.get(b).outrec);

@@ -4,15 +4,15 @@
 use clip_core::Trapezoid;
 
 use crate::active::Edge;
-use crate::sweep::Sweep;
+use crate::sweep::SweepLine;
 
-impl Sweep<'_> {
+impl SweepLine<'_> {
     /// Emits the result's trapezoids for the slab `[y0, y1]`, in which no two active edges cross.
     pub(crate) fn emit_slab(&mut self, y0: f64, y1: f64) {
         let Some(traps) = self.traps.as_mut() else { return };
         let mut inside = false;
         let mut left = None;
-        for &id in &self.ael.order {
+        for id in self.ael.iter() {
             let e = self.ael.get(id);
             let now = self.rules.inside(e.wind_right());
             if now == inside {

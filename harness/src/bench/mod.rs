@@ -56,8 +56,11 @@ pub struct BenchArgs {
     #[arg(long = "clipper", value_name = "NAME")]
     pub clippers: Vec<String>,
     /// Bench group to run, by its name in bench.csv (`star`, `scribble`, `grid`, `holes`,
-    /// `large-smooth`, `large-checkerboard`, `spiky-box`, `many-subjects`, `star-rect`, `large-rect`,
-    /// and `text`: the text strategies on a paragraph as the window shrinks; repeat; default: all).
+    /// `large-smooth`, `large-checkerboard`, `spiky-box`, `many-subjects`, `star-rect`, `large-rect`;
+    /// the sweep stresses `comb`, `comb-box`, `nested`, `concentric`, `spiral`, `windows`,
+    /// `corrosion`, `lines-net`, `checkerboard`, `not-overlap`, `wind-mill`, `maps-dissolve`,
+    /// `maps-tiles`, `maps-neighbours`; and `text`: the text strategies on a paragraph as the
+    /// window shrinks; repeat; default: all).
     #[arg(long = "workload", value_name = "NAME")]
     pub workloads: Vec<String>,
     /// Operation to time (repeat; default: all four).

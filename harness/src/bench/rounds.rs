@@ -161,7 +161,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                     }
                 }
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
-                if group.memory && op == BoolOp::Intersection {
+                if group.measures_memory(size, op) {
                     // An external clipper's memory is its own process's, not this one's.
                     for (c, fill, _, _) in timed_here.iter().filter(|(e, _, _, _)| e.own_time.is_none()) {
                         for index in &group.indices {

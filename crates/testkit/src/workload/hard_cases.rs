@@ -140,7 +140,7 @@ pub fn hard_cases() -> Vec<HardCase> {
             name: "identical-operands",
             description: "subject and clip the same concave ring",
             subject: star.clone().into(),
-            clip: star.into(),
+            clip: star.clone().into(),
         },
         HardCase {
             name: "bow-tie",
@@ -169,12 +169,57 @@ pub fn hard_cases() -> Vec<HardCase> {
             clip: square(5.0, 2.0, 10.0).into(),
         },
         HardCase {
+            name: "offset-1e9",
+            description: "mirror-original moved by 1e9 in x and y, where one ulp is 1.2e-7",
+            subject: offset(&star.clone().into(), 1.0e9),
+            clip: offset(&square(30.0, 30.0, 50.0).into(), 1.0e9),
+        },
+        HardCase {
+            name: "repeated-points",
+            description: "a square whose corners are repeated two and three times, against an overlapping square",
+            subject: ring(&[
+                (0.0, 0.0),
+                (0.0, 0.0),
+                (10.0, 0.0),
+                (10.0, 10.0),
+                (10.0, 10.0),
+                (10.0, 10.0),
+                (0.0, 10.0),
+                (0.0, 0.0),
+            ])
+            .into(),
+            clip: square(5.0, 5.0, 10.0).into(),
+        },
+        HardCase {
+            name: "self-touching-ring",
+            description: "one ring of two squares touching at a corner it passes twice, against a square over the touch",
+            subject: ring(&[
+                (0.0, 0.0),
+                (5.0, 0.0),
+                (5.0, 5.0),
+                (10.0, 5.0),
+                (10.0, 10.0),
+                (5.0, 10.0),
+                (5.0, 5.0),
+                (0.0, 5.0),
+            ])
+            .into(),
+            clip: square(3.0, 3.0, 4.0).into(),
+        },
+        HardCase {
             name: "overlapping-collinear-edges",
             description: "rectangles sharing part of their bottom and top lines, one inside the other's span",
             subject: Rect::new(0.0, 0.0, 10.0, 4.0).to_ring().into(),
             clip: Rect::new(4.0, 0.0, 14.0, 4.0).to_ring().into(),
         },
     ]
+}
+
+/// A polygon set moved by `d` in x and y.
+fn offset(p: &Polygons, d: f64) -> Polygons {
+    Polygons::new(
+        p.rings.iter().map(|r| Ring::new(r.points.iter().map(|q| Point::new(q.x + d, q.y + d)).collect())).collect(),
+    )
 }
 
 /// A fan of `n` triangles around the origin, radius 100, starting at angle `phase`.
