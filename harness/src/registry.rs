@@ -25,7 +25,7 @@ use clip_vatti::{FixedSweep, Sweep, Vatti, VattiPrepared};
 use clip_virtual_box::VirtualBox;
 
 use crate::cli_error::CliError;
-use crate::external::OwnTime;
+use crate::measure::own_time::OwnTime;
 
 /// Tolerance of our exact line clippers on the parameter `t` of piece end points.
 pub const LINE_TOLERANCE: f64 = 1e-9;

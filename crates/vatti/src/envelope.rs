@@ -14,7 +14,7 @@ use std::borrow::Cow;
 use clip_core::predicates::{Orientation, orient};
 use clip_core::{BoolOp, FillRule, MAX_COORDINATE, MIN_COORDINATE, Point, Polygons, Rect, Ring};
 
-use crate::edge_blocks::EdgeBlocks;
+use crate::edge_blocks::{EdgeBlocks, EdgeRun};
 
 /// A stretch of a ring, in walk order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,7 +55,7 @@ impl Envelope {
 
     /// True when box `r` has no point in common with the closed box.
     #[inline]
-    pub(crate) fn misses(&self, r: &Rect) -> bool {
+    fn misses(&self, r: &Rect) -> bool {
         r.max.x < self.b.min.x || r.min.x > self.b.max.x || r.max.y < self.b.min.y || r.min.y > self.b.max.y
     }
 
@@ -68,13 +68,13 @@ impl Envelope {
     /// bounding box (left edge `min_x`) misses the box. Such a path reaches the ray's height only
     /// left or right of the box; on the right its crossings telescope to where it starts and ends.
     #[inline]
-    pub(crate) fn missed_crossings(&self, s: Point, e: Point, min_x: f64) -> i32 {
+    fn missed_crossings(&self, s: Point, e: Point, min_x: f64) -> i32 {
         if min_x > self.c.x { i32::from(e.y > self.c.y) - i32::from(s.y > self.c.y) } else { 0 }
     }
 
     /// Appends `stretch`, merging it into a directly preceding missed stretch.
     #[inline]
-    pub(crate) fn push(out: &mut Vec<Stretch>, stretch: Stretch) {
+    fn push(out: &mut Vec<Stretch>, stretch: Stretch) {
         if let (Some(Stretch::Missed { end, crossings, .. }), Stretch::Missed { first, end: e, crossings: c }) =
             (out.last_mut(), stretch)
             && *end == first
@@ -98,6 +98,19 @@ impl Envelope {
         } else {
             out.push(Stretch::Kept(i));
         }
+    }
+
+    /// The stretches of ring `pts` as [`Envelope::push_edge`] gives them edge by edge (missed
+    /// stretches merged), found through the ring's edge `blocks` without visiting every edge.
+    pub(crate) fn push_blocks(&self, pts: &[Point], blocks: &EdgeBlocks, out: &mut Vec<Stretch>) {
+        let n = pts.len();
+        blocks.walk(n, &|b| self.misses(b), &mut |run| match run {
+            EdgeRun::Missed { first, end, bounds } => {
+                let crossings = self.missed_crossings(pts[first], pts[end % n], bounds.min.x);
+                Envelope::push(out, Stretch::Missed { first, end, crossings });
+            }
+            EdgeRun::Near(e) => self.push_edge(pts, e, out),
+        });
     }
 
     /// True when some edge of the ring misses the box.
@@ -250,7 +263,7 @@ pub(crate) fn cut(polygons: &Polygons, b: Rect, blocks: Option<&[EdgeBlocks]>) -
     let mut ends = Vec::with_capacity(polygons.rings.len());
     for (k, ring) in polygons.rings.iter().enumerate() {
         match blocks {
-            Some(blocks) => blocks[k].walk(&ring.points, &env, &mut stretches),
+            Some(blocks) => env.push_blocks(&ring.points, &blocks[k], &mut stretches),
             None => (0..ring.points.len()).for_each(|i| env.push_edge(&ring.points, i, &mut stretches)),
         }
         ends.push(stretches.len());
@@ -413,7 +426,7 @@ mod tests {
             let mut walked = Vec::new();
             (0..pts.len()).for_each(|i| env.push_edge(&pts, i, &mut walked));
             let mut blocked = Vec::new();
-            EdgeBlocks::new(&pts).walk(&pts, &env, &mut blocked);
+            env.push_blocks(&pts, &EdgeBlocks::new(&pts), &mut blocked);
             assert_eq!(walked, blocked);
         }
     }

@@ -111,7 +111,7 @@ impl Cut {
             stretches.clear();
             let pts = &ring.points;
             match far.blocks {
-                Some(blocks) => blocks[k].walk(pts, env, &mut stretches),
+                Some(blocks) => env.push_blocks(pts, &blocks[k], &mut stretches),
                 None => (0..pts.len()).for_each(|i| env.push_edge(pts, i, &mut stretches)),
             }
             wound += cut.ring(k, pts, &stretches, env, &mut path)?;

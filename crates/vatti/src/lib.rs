@@ -176,9 +176,7 @@ mod scratch;
 mod simplify;
 mod small_sort;
 mod sweep;
-mod touches;
 mod trapezoids;
-mod turns;
 
 use std::borrow::Cow;
 
@@ -191,13 +189,12 @@ pub use crate::prepared_reuse::VattiPrepared;
 pub use crate::route::Route;
 pub use crate::sweep::Sweep;
 
+use crate::cleanup::{Touches, Turns};
 use crate::contribution::Rules;
 use crate::raw_rings::RawRings;
 use crate::route::{Plan, edge_count};
 use crate::scratch::Scratch;
 use crate::sweep::SweepLine;
-use crate::touches::Touches;
-use crate::turns::Turns;
 
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
 /// operands, polygon or trapezoid output. Its route and sweep are chosen by the operands'

@@ -6,10 +6,9 @@ use std::mem::size_of;
 use clip_core::Point;
 
 use crate::bounds::{Bounds, LocalMinimum, Vertex};
+use crate::cleanup::{Touches, Turns};
 use crate::raw_rings::RawRings;
 use crate::sweep::SweepBuffers;
-use crate::touches::Touches;
-use crate::turns::Turns;
 
 /// Buffers larger than this (bytes of capacity) are freed after the call rather than kept: a
 /// very large clip's allocations cost little next to its sweep, and a thread should not hold

@@ -1,6 +1,6 @@
 //! An external clipper behind clip-core's traits: a pool of its processes (one per worker thread
-//! that calls it), each request answered by one of them; a process that fails is dropped and a
-//! fresh one started for the next call.
+//! that calls it), each request answered by one of them; a process that fails is killed and its
+//! replacement started at once, in the background, while the run goes on.
 
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Condvar, Mutex};
@@ -18,41 +18,7 @@ use super::protocol::{
     Handshake, LineRequest, PolygonRequest, Reply, Violation, WireRing, from_wire, segments_to_wire, to_wire,
 };
 use super::spec::ExternalSpec;
-
-/// The clipper's own times for calls since the last [`OwnTime::take`] (bench reads them).
-#[derive(Debug, Default)]
-pub struct OwnTime {
-    tally: Mutex<OwnTally>,
-}
-
-#[derive(Debug, Default)]
-struct OwnTally {
-    ns: f64,
-    reported: u64,
-    unreported: u64,
-}
-
-impl OwnTime {
-    fn record(&self, time_ns: Option<f64>) {
-        if let Ok(mut t) = self.tally.lock() {
-            // Replies are checked first: a time given is a possible one.
-            match time_ns {
-                Some(ns) => {
-                    t.ns += ns;
-                    t.reported += 1;
-                }
-                None => t.unreported += 1,
-            }
-        }
-    }
-
-    /// The mean own time per call since the last take, when every call reported one; resets.
-    pub fn take(&self) -> Option<f64> {
-        let mut t = self.tally.lock().ok()?;
-        let tally = std::mem::take(&mut *t);
-        (tally.reported > 0 && tally.unreported == 0).then(|| tally.ns / tally.reported as f64)
-    }
-}
+use crate::measure::own_time::OwnTime;
 
 /// The processes of one external clipper.
 pub struct Pool {

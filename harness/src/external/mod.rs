@@ -14,7 +14,6 @@ use std::time::Duration;
 use clip_core::{LineCapabilities, OutputForm, PolygonCapabilities};
 use clip_oracle::polygon::GEO_TOLERANCE;
 
-pub use self::clipper::OwnTime;
 use self::clipper::{ExternalLine, ExternalPolygon, Pool};
 use self::process::Worker;
 use self::protocol::{Handshake, PROTOCOL_VERSION, parse_fill, parse_op, parse_output, parse_window};

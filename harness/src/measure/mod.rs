@@ -4,6 +4,7 @@
 pub mod cpu_time;
 pub mod git_revision;
 pub mod out_dir;
+pub mod own_time;
 pub mod parallel;
 pub mod peak_memory;
 pub mod progress;

@@ -1,7 +1,7 @@
 //! The clean-up's walk of touching rings, turned only at the points they share.
 //!
 //! Most touching rings need nothing cancelled or split: holes touching their outers at vertices
-//! (holes unions), lobes pinched at a point (scribble). For them `cleanup`'s rebuild (directed
+//! (holes unions), lobes pinched at a point (scribble). For them the rebuild (`rebuild`: directed
 //! edges sorted into rows by start point, opposite edges cancelled, every vertex walked through
 //! its row) reduces to choosing, at each shared point, the way out for each way in; elsewhere a
 //! ring's next edge is the only one. This does that choice with the rebuild's rule (the first
@@ -13,10 +13,11 @@
 use std::cmp::Ordering;
 
 use clip_core::Point;
-use clip_core::predicates::{Orientation, orient};
 
+use super::directions::counter_clockwise_from_east;
+use super::simple_loops::split_repeats;
+use super::touches::Touches;
 use crate::raw_rings::RawRings;
-use crate::touches::Touches;
 
 /// Where the walk turns, for the touched rings of one output; the buffers are kept between
 /// clips.
@@ -63,21 +64,6 @@ fn sorted_apart(ways: &mut [Way], v: Point) -> bool {
         }
     }
     true
-}
-
-/// Orders directions from `v` to `a` and `b` counter-clockwise from east (the direction of +x
-/// first); `Equal` for one direction. Exact.
-fn counter_clockwise_from_east(v: Point, a: Point, b: Point) -> Ordering {
-    let lower = |p: Point| p.y < v.y || (p.y == v.y && p.x < v.x);
-    match (lower(a), lower(b)) {
-        (false, true) => Ordering::Less,
-        (true, false) => Ordering::Greater,
-        _ => match orient(v, a, b) {
-            Orientation::CounterClockwise => Ordering::Less,
-            Orientation::Clockwise => Ordering::Greater,
-            Orientation::Collinear => Ordering::Equal,
-        },
-    }
 }
 
 impl Turns {
@@ -152,7 +138,7 @@ impl Turns {
                         break;
                     }
                 }
-                crate::cleanup::split_repeats(&self.walk, &mut self.slot, &mut self.stack, &mut |ring: &[u32]| {
+                split_repeats(&self.walk, &mut self.slot, &mut self.stack, &mut |ring: &[u32]| {
                     points.clear();
                     points.extend(ring.iter().map(|&i| pts[i as usize]));
                     emit(points);
