@@ -143,9 +143,14 @@ impl LineFrame {
         if gb == 0.0 {
             (Along::AtEnd, 1.0)
         } else if (gb > 0.0) == p_left {
-            // Measured from the ends of the part `t` runs over, where that is not the segment.
-            let (ha, hb) = if self.whole() { (ga, gb) } else { (orient2d(p, q, self.o), orient2d(p, q, self.e)) };
-            let t = ha / (ha - hb);
+            if !self.whole() {
+                // The part's ends lie on the line only to within rounding at the window's
+                // magnitude: the edge's function at them can put the crossing with a nearly
+                // parallel edge anywhere along the part. It is placed along the edge instead.
+                let (fp, fq) = (orient2d(self.a, self.b, p), orient2d(self.a, self.b, q));
+                return (Along::Inside, self.crossing_param(p, q, fp, fq));
+            }
+            let t = ga / (ga - gb);
             (Along::Inside, if t.is_nan() { 0.5 } else { t.clamp(0.0, 1.0) })
         } else {
             (Along::After, 1.0)

@@ -87,7 +87,7 @@ pub fn visible_intervals_along(window: &Polygons, s: Segment, frame: Segment) ->
         }
         match segment_intersection(s, e) {
             SegmentIntersection::None => {}
-            SegmentIntersection::Crossing(_) => ts.push(crossing_t(frame, e)),
+            SegmentIntersection::Crossing(_) => ts.push(crossing_t((s, frame), e)),
             SegmentIntersection::Touching(p) => ts.push(t_of(frame, p)),
             SegmentIntersection::Overlap(o) => {
                 let (ta, tb) = (t_of(frame, o.a), t_of(frame, o.b));
@@ -123,9 +123,20 @@ fn t_of(s: Segment, p: Point) -> f64 {
     }
 }
 
-/// `t` on `s` where the interiors of `s` and `e` cross (known to cross; for a part `s` of the
-/// segment that does, where its line meets `e`'s, clamped to `s`).
-fn crossing_t(s: Segment, e: Segment) -> f64 {
+/// `t` along `frame` where the interiors of `s` and `e` cross (known to cross), clamped to `frame`.
+fn crossing_t((s, frame): (Segment, Segment), e: Segment) -> f64 {
+    if frame != s {
+        // A part near the window: its ends lie on the line of `s` only to within rounding at the
+        // box's magnitude, so the edge's line function at them can put the crossing with an edge
+        // nearly parallel to `s` anywhere along it (found by the `line_clippers` fuzz target: an
+        // edge of slope 6e-75 under a segment reaching 2e77, whose crossing came out at the
+        // part's end). The crossing is placed along the edge instead, at the window's own
+        // magnitude, from the exact line of `s`, and measured along `frame`.
+        let (fa, fb) = (orient2d(s.a, s.b, e.a), orient2d(s.a, s.b, e.b));
+        let u = fa / (fa - fb);
+        let at = if u.is_finite() { e.a.lerp(e.b, u.clamp(0.0, 1.0)) } else { e.a.lerp(e.b, 0.5) };
+        return t_of(frame, at);
+    }
     // From the edge's line function at the ends, each accurate to about an ulp of itself: the
     // plain cross products cancel for a segment nearly parallel to the edge (found by the
     // `line_clippers` fuzz target: segments along sliver windows 1e-16 wide).
@@ -161,7 +172,7 @@ fn crosses_beyond((s, frame): (Segment, Segment), e: Segment, tb: f64) -> bool {
         return if on_segment(s, v) { t_of(frame, v) >= tb } else { beyond_b(s, v) };
     }
     match segment_intersection(s, e) {
-        SegmentIntersection::Crossing(_) => crossing_t(frame, e) >= tb,
+        SegmentIntersection::Crossing(_) => crossing_t((s, frame), e) >= tb,
         SegmentIntersection::Touching(p) => t_of(frame, p) >= tb,
         // Off the segment: `a` and `b` are on one side of the edge's line, and the crossing is
         // beyond `b` when `b` is the nearer (accurate magnitudes; equal ones would be parallel).
