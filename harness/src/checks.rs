@@ -5,9 +5,11 @@ use std::cell::Cell;
 use std::panic::AssertUnwindSafe;
 use std::sync::Once;
 
-use clip_core::{BoolOp, ClipError, FillRule, Polygons, Segment, VisiblePiece};
-use clip_oracle::line::{check_line_batch, pieces_to_intervals};
-use clip_oracle::polygon::{OutputRules, check_area_identities_given, check_polygon_result, same_region, tolerance};
+use clip_core::{BoolOp, ClipError, FailureKind, FillRule, Polygons, Segment, VisiblePiece};
+use clip_oracle::line::{LineFailure, check_line_batch, pieces_to_intervals};
+use clip_oracle::polygon::{
+    OutputRules, PolygonFailure, check_area_identities_given, check_polygon_result, same_region, tolerance,
+};
 
 use crate::registry::{LineEntry, PolygonEntry};
 
@@ -30,6 +32,53 @@ impl Check {
             Check::AreaIdentities => "area-identities".into(),
             Check::Disagreement(other) => format!("vs-{other}"),
         }
+    }
+}
+
+/// How a check failed: a shrunk case must fail the same way as the case found, not just fail
+/// (a hang must not shrink to a crash, nor a wrong answer to a refusal).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Failing {
+    /// The clipper refused valid, supported input.
+    Refused,
+    /// The clipper panicked.
+    Panicked,
+    /// The clipper gave no answer, in this way.
+    NoAnswer(FailureKind),
+    /// The output breaks the output conventions (crossing rings, a piece off its segment).
+    Invalid,
+    /// The output is well formed but wrong: a wrong region, wrong visible pieces.
+    Wrong,
+    /// The four operations' results break an area identity.
+    AreaIdentity,
+    /// Two clippers' results differ.
+    Disagrees,
+}
+
+/// A failed check: how, and the one-line explanation.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Failure {
+    /// How it failed.
+    pub how: Failing,
+    /// What failed, in words.
+    pub message: String,
+}
+
+impl Failure {
+    fn new(how: Failing, message: String) -> Failure {
+        Failure { how, message }
+    }
+}
+
+impl std::fmt::Display for Failure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl From<Failure> for String {
+    fn from(f: Failure) -> String {
+        f.message
     }
 }
 
@@ -60,6 +109,11 @@ pub fn quiet_clipper_panics() {
 /// Runs a clipper call; a panic (a peer library's bug, or ours) becomes a failure message, so one
 /// bad case does not end a whole run.
 pub(crate) fn guarded<T>(call: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+    guarded_as(|| call().map_err(|m| Failure::new(Failing::Wrong, m))).map_err(String::from)
+}
+
+/// [`guarded`] for calls that say how they failed: a panic is [`Failing::Panicked`].
+fn guarded_as<T>(call: impl FnOnce() -> Result<T, Failure>) -> Result<T, Failure> {
     INSIDE_CLIPPER.with(|c| c.set(true));
     let result = std::panic::catch_unwind(AssertUnwindSafe(call));
     INSIDE_CLIPPER.with(|c| c.set(false));
@@ -69,7 +123,7 @@ pub(crate) fn guarded<T>(call: impl FnOnce() -> Result<T, String>) -> Result<T, 
             .map(|s| s.to_string())
             .or_else(|| payload.downcast_ref::<String>().cloned())
             .unwrap_or_else(|| "a non-text payload".into());
-        Err(format!("panicked: {message}"))
+        Err(Failure::new(Failing::Panicked, format!("panicked: {message}")))
     })
 }
 
@@ -80,8 +134,8 @@ pub fn run_polygon(
     clip: &Polygons,
     op: BoolOp,
     fill: FillRule,
-) -> Result<Polygons, String> {
-    guarded(|| entry.clipper.clip(subject, clip, op, fill).map_err(failure_message))
+) -> Result<Polygons, Failure> {
+    guarded_as(|| entry.clipper.clip(subject, clip, op, fill).map_err(|e| failure(e, "")))
 }
 
 /// The oracle's verdict on one polygon result; when it passes, the area by which it differs from
@@ -93,9 +147,15 @@ pub fn polygon_oracle(
     op: BoolOp,
     fill: FillRule,
     output: &Polygons,
-) -> Result<f64, String> {
-    check_polygon_result(subject, clip, op, fill, output, &output_rules(entry, subject, fill))
-        .map_err(|f| f.to_string())
+) -> Result<f64, Failure> {
+    check_polygon_result(subject, clip, op, fill, output, &output_rules(entry, subject, fill)).map_err(|f| {
+        let how = match f {
+            PolygonFailure::Invalid(_) => Failing::Invalid,
+            PolygonFailure::WrongPoint { .. } | PolygonFailure::WrongRegion { .. } => Failing::Wrong,
+            PolygonFailure::AreaIdentity(_) => Failing::AreaIdentity,
+        };
+        Failure::new(how, f.to_string())
+    })
 }
 
 /// The area identities on the four operations' results; `operands` are |A| and |B| under `fill`
@@ -107,10 +167,11 @@ pub fn area_identities(
     fill: FillRule,
     operands: (f64, f64),
     outputs: &[(BoolOp, &Polygons)],
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let rules = output_rules(entry, subject, fill);
     let tol = tolerance(subject, clip, rules.relative_tolerance);
-    check_area_identities_given(operands, tol, outputs, &rules).map_err(|f| f.to_string())
+    check_area_identities_given(operands, tol, outputs, &rules)
+        .map_err(|f| Failure::new(Failing::AreaIdentity, f.to_string()))
 }
 
 /// Whether two clippers' results cover the same region, within the looser of their tolerances.
@@ -125,7 +186,7 @@ pub fn polygons_agree(
     clip: &Polygons,
     fill: FillRule,
     off_exact: Option<(f64, f64)>,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let relative = x.0.tolerance.max(y.0.tolerance);
     let allowed = tolerance(subject, clip, relative);
     if off_exact.is_some_and(|(a, b)| a + b <= allowed) {
@@ -133,35 +194,33 @@ pub fn polygons_agree(
     }
     let read = |e: &PolygonEntry| output_rules(e, subject, fill).output_fill;
     same_region((x.1, read(x.0)), (y.1, read(y.0)), allowed).map_err(|area| {
-        format!(
-            "{} and {} differ by region: symmetric difference area {area:e} > tolerance {allowed:e}",
-            x.0.clipper.name(),
-            y.0.clipper.name()
+        Failure::new(
+            Failing::Disagrees,
+            format!(
+                "{} and {} differ by region: symmetric difference area {area:e} > tolerance {allowed:e}",
+                x.0.clipper.name(),
+                y.0.clipper.name()
+            ),
         )
     })
 }
 
-/// A clipper's error as a failure message: a refusal of input, or a failure to answer (a
-/// library's internal error, an external process that crashed, hung or answered garbage).
-fn failure_message(e: ClipError) -> String {
+/// A clipper's error as a failure: a refusal of input (of `what`, when said), or a failure to
+/// answer (a library's internal error, an external process that crashed, hung or answered
+/// garbage).
+fn failure(e: ClipError, what: &str) -> Failure {
     match e {
-        ClipError::Failed { .. } => e.to_string(),
-        _ => format!("refused: {e}"),
+        ClipError::Failed { kind, .. } => Failure::new(Failing::NoAnswer(kind), e.to_string()),
+        _ => Failure::new(Failing::Refused, format!("refused{what}: {e}")),
     }
 }
 
-/// Runs a line clipper on a batch; a refusal of a valid window is a failure message.
-pub fn run_line(entry: &LineEntry, window: &Polygons, segments: &[Segment]) -> Result<Vec<VisiblePiece>, String> {
-    guarded(|| {
-        let prepared = entry.clipper.prepare(window).map_err(|e| match e {
-            ClipError::Failed { .. } => e.to_string(),
-            _ => format!("refused the window: {e}"),
-        })?;
+/// Runs a line clipper on a batch; a refusal of a valid window is a failure.
+pub fn run_line(entry: &LineEntry, window: &Polygons, segments: &[Segment]) -> Result<Vec<VisiblePiece>, Failure> {
+    guarded_as(|| {
+        let prepared = entry.clipper.prepare(window).map_err(|e| failure(e, " the window"))?;
         let mut pieces = Vec::new();
-        prepared.clip_batch(segments, &mut pieces).map_err(|e| match e {
-            ClipError::Failed { .. } => e.to_string(),
-            _ => format!("refused the segments: {e}"),
-        })?;
+        prepared.clip_batch(segments, &mut pieces).map_err(|e| failure(e, " the segments"))?;
         Ok(pieces)
     })
 }
@@ -172,23 +231,34 @@ pub fn line_oracle(
     window: &Polygons,
     segments: &[Segment],
     pieces: &[VisiblePiece],
-) -> Result<(), String> {
-    check_line_batch(window, segments, pieces, entry.tolerance).map_err(|f| f.to_string())
+) -> Result<(), Failure> {
+    check_line_batch(window, segments, pieces, entry.tolerance).map_err(|f| {
+        let how = match f {
+            LineFailure::WrongPieces { .. } => Failing::Wrong,
+            LineFailure::BadPiece(_) => Failing::Invalid,
+        };
+        Failure::new(how, f.to_string())
+    })
 }
 
-/// Whether two line clippers see the same visible intervals, within the looser tolerance.
+/// Whether two line clippers see the same visible intervals in `window`, within the looser
+/// tolerance.
 pub fn lines_agree(
     x: (&LineEntry, &[VisiblePiece]),
     y: (&LineEntry, &[VisiblePiece]),
+    window: &Polygons,
     segments: &[Segment],
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let allowed = x.0.tolerance.max(y.0.tolerance);
-    let (a, b) = (pieces_to_intervals(segments, x.1), pieces_to_intervals(segments, y.1));
+    let bounds = window.bounds();
+    let (a, b) = (pieces_to_intervals(&bounds, segments, x.1), pieces_to_intervals(&bounds, segments, y.1));
     for (i, (ia, ib)) in a.iter().zip(&b).enumerate() {
         let close = ia.len() == ib.len()
             && ia.iter().zip(ib).all(|(p, q)| (p.0 - q.0).abs() <= allowed && (p.1 - q.1).abs() <= allowed);
         if !close {
-            return Err(format!("segment {i}: {} sees {ia:?}, {} sees {ib:?}", x.0.clipper.name(), y.0.clipper.name()));
+            let message =
+                format!("segment {i}: {} sees {ia:?}, {} sees {ib:?}", x.0.clipper.name(), y.0.clipper.name());
+            return Err(Failure::new(Failing::Disagrees, message));
         }
     }
     Ok(())

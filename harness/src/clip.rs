@@ -6,9 +6,10 @@ use clip_core::{BoolOp, FillRule, Operand, validate_polygons, validate_segments}
 
 use crate::cli_error::{CliError, InputError};
 use crate::clip_curves::clip_curves;
+use crate::clip_features::{FeatureClipper, clip_features};
 use crate::console;
 use crate::curve_input::read_curves;
-use crate::read::{read_polygons, read_shapes};
+use crate::read::{is_geojson, read_features, read_polygons, read_shapes};
 use crate::registry::{Registry, unknown_clipper};
 use crate::write::{OutputFormat, line_result, polygon_result, write_file};
 
@@ -17,8 +18,11 @@ const READING: &str = "\
 Files: WKT, one geometry per file (several go in a GEOMETRYCOLLECTION), or GeoJSON (a geometry, a \
 Feature or a FeatureCollection), holding polygons or line strings, not both. Rings must be closed (the last point the first); coordinates must \
 be finite numbers; WKT nests at most 256 parentheses deep, GeoJSON at most 128 levels. Z and M \
-values are dropped, with a note on standard error. Errors say where: `feature 1, ring 0, position \
-2`, or a WKT line and column (indices count from 0).";
+values are dropped, and rings of fewer than 3 distinct points (which enclose nothing) are dropped, \
+each with a note on standard error. Errors say where: `feature 1, ring 0, position 2`, or a WKT \
+line and column (indices count from 0). A GeoJSON Feature or FeatureCollection subject is clipped \
+feature by feature, and written back as GeoJSON features with their ids and properties (WKT and SVG \
+output get the geometries only); a feature with a null geometry is written back as it is.";
 
 /// Arguments of `clipbench clip`.
 #[derive(Debug, clap::Args)]
@@ -65,14 +69,25 @@ pub fn run(args: &ClipArgs, registry: &Registry) -> Result<(), CliError> {
         let text = clip_curves(registry, &args.clipper, &objects, &args.clip, args.tolerance, format)?;
         return emit(args, &text);
     }
+    if is_geojson(&args.subject)
+        && let Some(features) = read_features(&args.subject)?
+    {
+        let clip = read_polygons(&args.clip, Operand::Clip)?;
+        let clipper = if features.line_strings {
+            FeatureClipper::Line(line_entry(args, registry)?)
+        } else {
+            FeatureClipper::Polygon(polygon_entry(args, registry)?, args.op, args.fill)
+        };
+        // Features are written back as features: GeoJSON unless another format is asked for.
+        let format = if args.out.is_none() { OutputFormat::GeoJson } else { format };
+        let text = clip_features(clipper, &args.subject, &features, &clip, format)?;
+        return emit(args, &text);
+    }
     let subject = read_shapes(&args.subject)?;
     let clip = read_polygons(&args.clip, Operand::Clip)?;
-    let text = if subject.rings.is_empty() && !subject.segments.is_empty() {
+    let text = if subject.line_strings {
         // Line strings: a line clipper's visible pieces.
-        let entry = registry.find_line(&args.clipper).ok_or_else(|| unknown_line_clipper(&args.clipper, registry))?;
-        if args.op != BoolOp::Intersection {
-            return Err(CliError::usage(format!("line strings can only be clipped by intersection, not {}", args.op)));
-        }
+        let entry = line_entry(args, registry)?;
         let segments = subject.segments.clone();
         validate_segments(&segments).map_err(|e| InputError::new(&args.subject, e.to_string()))?;
         let window =
@@ -81,9 +96,7 @@ pub fn run(args: &ClipArgs, registry: &Registry) -> Result<(), CliError> {
         window.clip_batch(&segments, &mut pieces).map_err(|e| CliError::usage(e.to_string()))?;
         line_result(format, entry.clipper.name(), &clip, &segments, &pieces)
     } else {
-        let entry = registry
-            .find_polygon(&args.clipper)
-            .ok_or_else(|| unknown_clipper(&args.clipper, &polygon_names(registry)))?;
+        let entry = polygon_entry(args, registry)?;
         let subject = subject.polygons();
         validate_polygons(&subject, Operand::Subject).map_err(|e| InputError::new(&args.subject, e.to_string()))?;
         let result =
@@ -101,11 +114,46 @@ fn emit(args: &ClipArgs, text: &str) -> Result<(), CliError> {
     }
 }
 
-fn polygon_names(registry: &Registry) -> Vec<&'static str> {
-    registry.polygon.iter().map(|e| e.clipper.name()).collect()
+/// The polygon clipper `--clipper` names, or a usage error saying what it is and which clip polygons.
+fn polygon_entry<'a>(args: &ClipArgs, registry: &'a Registry) -> Result<&'a crate::registry::PolygonEntry, CliError> {
+    registry.find_polygon(&args.clipper).ok_or_else(|| wrong_kind(&args.clipper, registry, "polygons"))
 }
 
-fn unknown_line_clipper(given: &str, registry: &Registry) -> CliError {
-    let valid: Vec<&str> = registry.line.iter().map(|e| e.clipper.name()).collect();
-    CliError::usage(format!("'{given}' is not a registered line clipper (line clippers: {})", valid.join(", ")))
+/// The line clipper `--clipper` names (for intersection only), or a usage error as for polygons.
+fn line_entry<'a>(args: &ClipArgs, registry: &'a Registry) -> Result<&'a crate::registry::LineEntry, CliError> {
+    let entry = registry.find_line(&args.clipper).ok_or_else(|| wrong_kind(&args.clipper, registry, "line strings"))?;
+    if args.op != BoolOp::Intersection {
+        return Err(CliError::usage(format!("line strings can only be clipped by intersection, not {}", args.op)));
+    }
+    Ok(entry)
+}
+
+/// Why `given` cannot clip a subject that `holds` (`polygons` or `line strings`): what kind of
+/// clipper it is, if any, and which clippers take what the subject holds.
+fn wrong_kind(given: &str, registry: &Registry, holds: &str) -> CliError {
+    let names = |kind: &str| -> Vec<&'static str> {
+        match kind {
+            "polygons" => registry.polygon.iter().map(|e| e.clipper.name()).collect(),
+            "line strings" => registry.line.iter().map(|e| e.clipper.name()).collect(),
+            _ => registry.curve.iter().map(|e| e.clipper.name()).collect(),
+        }
+    };
+    let takes = if holds == "polygons" { "polygon clippers" } else { "line clippers" };
+    let is = ["polygons", "line strings", "curves"].into_iter().find(|k| names(k).contains(&given));
+    match is {
+        Some(kind) => {
+            let what = match kind {
+                "polygons" => "a polygon clipper",
+                "line strings" => "a line clipper",
+                _ => {
+                    "a curve clipper (circles, ellipses and arcs, from the curve text format or GeoJSON curve features)"
+                }
+            };
+            CliError::usage(format!(
+                "'{given}' is {what}, and the subject holds {holds} ({takes}: {})",
+                names(holds).join(", ")
+            ))
+        }
+        None => unknown_clipper(given, &registry.names()),
+    }
 }

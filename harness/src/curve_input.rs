@@ -44,16 +44,40 @@ impl CurveObject {
 }
 
 /// The curves in a file, or `None` when the file holds no curve (then it is read as polygons or
-/// line strings). Text: its first keyword is `circle`, `ellipse` or `arc`. GeoJSON (`.geojson`,
-/// `.json`): some feature has a `circle` or `ellipse` property.
+/// line strings). A `.curve` file holds curves, and one that holds none, or a line of another
+/// keyword, is an error naming it. Other text: curves when its first keyword is a curve keyword.
+/// GeoJSON (`.geojson`, `.json`): some feature has a `circle` or `ellipse` property.
 pub fn read_curves(path: &Path) -> Result<Option<Vec<CurveObject>>, InputError> {
-    let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
-    let json = matches!(
-        path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref(),
-        Some("geojson" | "json")
-    );
-    let parsed = if json { parse_curve_geojson(&text) } else { parse_curve_text(&text) };
+    let text = crate::read::read_text(path)?;
+    let extension = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+    let parsed = match extension.as_deref() {
+        Some("geojson" | "json") => parse_curve_geojson(&text),
+        Some("curve") => parse_curve_file(&text).map(Some),
+        _ => parse_curve_text(&text),
+    };
     parsed.map_err(|problem| InputError::new(path, problem))
+}
+
+/// The keywords of the curve text format.
+const KEYWORDS: &str = "circle, ellipse, arc, sector or chord";
+
+/// A `.curve` file's curves: every line a curve, a comment or blank, and at least one curve.
+pub fn parse_curve_file(text: &str) -> Result<Vec<CurveObject>, String> {
+    let first = text.lines().enumerate().find_map(|(n, raw)| {
+        let line = raw.split('#').next().unwrap_or("").trim();
+        line.split_whitespace().next().map(|word| (n, word.to_ascii_lowercase()))
+    });
+    match first {
+        None => {
+            Err(format!("it holds no curve, only comments or blank lines (a curve file has one {KEYWORDS} a line)"))
+        }
+        Some((n, word)) if !is_keyword(&word) => Err(format!("line {}: unknown keyword '{word}' ({KEYWORDS})", n + 1)),
+        Some(_) => Ok(parse_curve_text(text)?.unwrap_or_default()),
+    }
+}
+
+fn is_keyword(word: &str) -> bool {
+    matches!(word, "circle" | "ellipse" | "arc" | "sector" | "chord")
 }
 
 /// An angle in degrees, or in radians with a `rad` suffix (`deg` is also accepted).
@@ -89,11 +113,11 @@ pub fn parse_curve_text(text: &str) -> Result<Option<Vec<CurveObject>>, String> 
         }
         let mut words: Vec<&str> = line.split_whitespace().collect();
         let keyword = words.remove(0).to_ascii_lowercase();
-        if !matches!(keyword.as_str(), "circle" | "ellipse" | "arc" | "sector" | "chord") {
+        if !is_keyword(&keyword) {
             if objects.is_empty() {
                 return Ok(None);
             }
-            return Err(format!("line {}: unknown keyword '{keyword}' (circle, ellipse, arc, sector or chord)", n + 1));
+            return Err(format!("line {}: unknown keyword '{keyword}' ({KEYWORDS})", n + 1));
         }
         let at = |why: String| format!("line {}: {why}", n + 1);
         let mode = match words.last().map(|w| w.to_ascii_lowercase()) {
@@ -180,6 +204,9 @@ fn feature(f: &Value) -> Result<CurveObject, String> {
     let coordinate = |i: usize| coords.get(i).and_then(Value::as_f64).ok_or("the centre needs two numbers");
     let center = Point::new(coordinate(0)?, coordinate(1)?);
     let props = f.get("properties").ok_or("no properties")?;
+    if props.get("circle").is_some() && props.get("ellipse").is_some() {
+        return Err("it has both 'circle' and 'ellipse': a curve feature is one or the other".into());
+    }
     let field = |o: &Value, k: &str| o.get(k).and_then(Value::as_f64).ok_or(format!("missing number '{k}'"));
     let e = if let Some(c) = props.get("circle") {
         Ellipse::circle(center, field(c, "radius")?)

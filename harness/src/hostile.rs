@@ -8,12 +8,12 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clip_core::{BoolOp, FillRule, WindowKind};
+use clip_core::{BoolOp, FailureKind, FillRule, WindowKind};
 use clip_testkit::workload::hard_cases;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::checks::{polygon_oracle, run_polygon};
+use crate::checks::{Failing, Failure, polygon_oracle, run_polygon};
 use crate::cli_error::CliError;
 use crate::console;
 use crate::registry::Registry;
@@ -25,8 +25,8 @@ pub struct HostileArgs {
     /// Clipper to run (repeat for several; default: every registered polygon clipper that takes any clip operand).
     #[arg(long = "clipper", value_name = "NAME")]
     pub clippers: Vec<String>,
-    /// Worker threads (default: one per core). The result does not depend on it.
-    #[arg(long)]
+    /// Worker threads, 1 to 1024 (default: one per core). The result does not depend on it.
+    #[arg(long, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=crate::verify::MAX_THREADS as u64))]
     pub threads: Option<usize>,
     /// Also write the tally and every result that is not right as JSON to this file.
     #[arg(long, value_name = "FILE")]
@@ -53,18 +53,13 @@ pub enum Outcome {
 }
 
 impl Outcome {
-    /// The outcome of a failed call, from the failure message (`checks::run_polygon`'s words
-    /// and the external pool's).
-    pub fn of_failure(message: &str) -> Outcome {
-        if message.contains("no answer within") {
-            Outcome::Hung
-        } else if ["panicked:", "it exited", "not a reply", "could not be written", "restarting it", "answered id"]
-            .iter()
-            .any(|m| message.contains(m))
-        {
-            Outcome::Crashed
-        } else {
-            Outcome::Refused
+    /// The outcome of a failed call, from how it failed.
+    pub fn of_failure(failure: &Failure) -> Outcome {
+        match failure.how {
+            Failing::NoAnswer(FailureKind::Hung) => Outcome::Hung,
+            Failing::Panicked | Failing::NoAnswer(FailureKind::Crashed | FailureKind::Garbled) => Outcome::Crashed,
+            Failing::Refused | Failing::NoAnswer(FailureKind::Internal | FailureKind::Declined) => Outcome::Refused,
+            Failing::Invalid | Failing::Wrong | Failing::AreaIdentity | Failing::Disagrees => Outcome::Wrong,
         }
     }
 }
@@ -131,10 +126,10 @@ pub fn run(args: &HostileArgs, registry: Registry) -> Result<ExitCode, CliError>
             .map(|&(e, c, op, fill)| {
                 let (entry, case) = (entries[e], &cases[c]);
                 match run_polygon(entry, &case.subject, &case.clip, op, fill) {
-                    Err(message) => (Outcome::of_failure(&message), message),
+                    Err(failure) => (Outcome::of_failure(&failure), failure.message),
                     Ok(out) => match polygon_oracle(entry, &case.subject, &case.clip, op, fill, &out) {
                         Ok(_) => (Outcome::Right, String::new()),
-                        Err(message) => (Outcome::Wrong, message),
+                        Err(failure) => (Outcome::Wrong, failure.message),
                     },
                 }
             })
@@ -205,11 +200,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn failures_are_sorted_by_their_words() {
-        assert_eq!(Outcome::of_failure("x failed: no answer within 20.0 s (killed)"), Outcome::Hung);
-        assert_eq!(Outcome::of_failure("x failed: it exited (exit status: 1)"), Outcome::Crashed);
-        assert_eq!(Outcome::of_failure("panicked: index out of bounds"), Outcome::Crashed);
-        assert_eq!(Outcome::of_failure("x failed: it answered with an error: TopologyException"), Outcome::Refused);
-        assert_eq!(Outcome::of_failure("refused: too few points"), Outcome::Refused);
+    fn failures_are_sorted_by_how_they_failed() {
+        let of = |how| Outcome::of_failure(&Failure { how, message: String::new() });
+        assert_eq!(of(Failing::NoAnswer(FailureKind::Hung)), Outcome::Hung);
+        assert_eq!(of(Failing::NoAnswer(FailureKind::Crashed)), Outcome::Crashed);
+        assert_eq!(of(Failing::NoAnswer(FailureKind::Garbled)), Outcome::Crashed);
+        assert_eq!(of(Failing::Panicked), Outcome::Crashed);
+        assert_eq!(of(Failing::NoAnswer(FailureKind::Declined)), Outcome::Refused);
+        assert_eq!(of(Failing::NoAnswer(FailureKind::Internal)), Outcome::Refused);
+        assert_eq!(of(Failing::Refused), Outcome::Refused);
     }
 }

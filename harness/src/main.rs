@@ -8,8 +8,8 @@ use clap::{Parser, Subcommand};
 use clipbench::cli_error::CliError;
 use clipbench::registry::Registry;
 use clipbench::{
-    bench, checks, clip, compare, conformance, external, hostile, referee, registry, report, reproduce, text_cmd,
-    verify,
+    bench, checks, clip, compare, conformance, external, hostile, merge, referee, registry, report, reproduce,
+    text_cmd, verify,
 };
 
 /// Polygon and line clipping: verification against exact oracles and the peer libraries (geo,
@@ -26,6 +26,9 @@ enum Command {
     /// Run every registered clipper on the seeded workloads against the exact oracles and each
     /// other; print a summary table and write shrunk failure cases.
     Verify(verify::VerifyArgs),
+    /// Join the results folders of a verify run's parts (`verify --partition K/N --results DIR`)
+    /// into the one folder the whole run would have written, which `report` reads.
+    Merge(merge::MergeArgs),
     /// Run the registered clippers on an external suite with expected answers (Clipper2's
     /// Polygons.txt and Lines.txt, geo's boolean-op fixtures).
     Conformance(conformance::ConformanceArgs),
@@ -77,6 +80,7 @@ fn main() -> ExitCode {
         Command::Bench(args) => bench_then_report(args, registry),
         Command::Compare(args) => compare::run(args),
         Command::Report(args) => report::run(args),
+        Command::Merge(args) => merge::run(args),
         Command::Text(args) => text_cmd::run(args).map(|()| ExitCode::SUCCESS),
     };
     match result {

@@ -17,10 +17,16 @@ use crate::console;
 /// What a file holds: its rings (from polygons) and its segments (from line strings).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Shapes {
-    /// Every ring of every polygon, in file order, each with the orientation it has in the file.
+    /// Every ring of every polygon that encloses area, in file order, each with the orientation
+    /// it has in the file.
     pub rings: Vec<Ring>,
     /// Every edge of every line string (a `LINESTRING` of n points gives n - 1 segments).
     pub segments: Vec<Segment>,
+    /// True when the file holds line strings (even none, as `LINESTRING EMPTY`), not polygons.
+    pub line_strings: bool,
+    /// What reading dropped, one note each: rings of fewer than 3 distinct points, which add
+    /// nothing to any winding number (GEOS and Boost.Geometry accept and ignore them too).
+    pub dropped: Vec<String>,
 }
 
 impl Shapes {
@@ -73,10 +79,20 @@ pub struct Parsed {
     pub dropped: Vec<String>,
 }
 
+/// Reads a text file whole, without the UTF-8 byte order mark some editors put first (it marks
+/// the encoding and is no part of the text).
+pub fn read_text(path: &Path) -> Result<String, InputError> {
+    let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
+    Ok(match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_owned(),
+        None => text,
+    })
+}
+
 /// Reads a file: GeoJSON when its name ends in `.geojson` or `.json`, WKT otherwise. What is
 /// dropped in reading is said on standard error.
 pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
-    let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
+    let text = read_text(path)?;
     let (shapes, dropped) =
         shapes_from_text(&text, is_geojson(path)).map_err(|problem| InputError::new(path, problem))?;
     for note in &dropped {
@@ -90,7 +106,9 @@ pub fn read_shapes(path: &Path) -> Result<Shapes, InputError> {
 pub fn shapes_from_text(text: &str, geojson: bool) -> Result<(Shapes, Vec<String>), String> {
     let parsed = if geojson { parse_geojson(text) } else { parse_wkt(text) }?;
     // An empty geometry (`MULTIPOLYGON EMPTY`) is the empty region, a valid operand.
-    Ok((shapes_of(&parsed.geometries)?, parsed.dropped))
+    let shapes = shapes_of(&parsed.geometries)?;
+    let dropped = parsed.dropped.into_iter().chain(shapes.dropped.iter().cloned()).collect();
+    Ok((shapes, dropped))
 }
 
 /// Reads a polygon operand and validates it (finite, in range, rings of at least 3 points).
@@ -114,7 +132,8 @@ pub fn read_segments(path: &Path) -> Result<Vec<Segment>, InputError> {
     Ok(shapes.segments)
 }
 
-fn is_geojson(path: &Path) -> bool {
+/// Whether `path` names a GeoJSON file (`.geojson`, `.json`); anything else is read as WKT.
+pub fn is_geojson(path: &Path) -> bool {
     matches!(
         path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase).as_deref(),
         Some("geojson" | "json")
@@ -124,6 +143,8 @@ fn is_geojson(path: &Path) -> bool {
 /// Parses WKT text into a geometry.
 pub fn parse_wkt(text: &str) -> Result<Parsed, String> {
     wkt_text::check(text)?;
+    // `()` is an empty ring or line string, which the wkt crate reads only as `EMPTY`.
+    let text = wkt_text::empty_parentheses_as_empty(text);
     let wkt = wkt::Wkt::<f64>::from_str(text.trim()).map_err(|e| format!("not valid WKT: {e}"))?;
     wkt_geometry::check_rings(&wkt, &Place::default())?;
     let dropped = wkt_geometry::dropped(&wkt).into_iter().collect();
@@ -145,8 +166,12 @@ pub fn not_valid_geojson(e: impl std::fmt::Display) -> String {
 /// Parses GeoJSON text into its geometries: a FeatureCollection's one per feature with a
 /// geometry (a feature whose geometry is null holds nothing), else the one.
 fn parse_geojson(text: &str) -> Result<Parsed, String> {
-    let json = geojson::GeoJson::from_str(text).map_err(not_valid_geojson)?;
-    let found: Vec<(Place, Option<&geojson::Geometry>)> = match &json {
+    geojson_geometries(&geojson::GeoJson::from_str(text).map_err(not_valid_geojson)?)
+}
+
+/// The geometries of parsed GeoJSON, checked, as [`parse_geojson`] gives them.
+fn geojson_geometries(json: &geojson::GeoJson) -> Result<Parsed, String> {
+    let found: Vec<(Place, Option<&geojson::Geometry>)> = match json {
         geojson::GeoJson::FeatureCollection(fc) => fc
             .features
             .iter()
@@ -171,6 +196,77 @@ fn parse_geojson(text: &str) -> Result<Parsed, String> {
     Ok(parsed)
 }
 
+/// A GeoJSON subject of features, each to be clipped on its own.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Features {
+    /// A FeatureCollection (else one Feature).
+    pub collection: bool,
+    /// Its features in order.
+    pub features: Vec<FeatureShapes>,
+    /// True when they hold line strings, not polygons.
+    pub line_strings: bool,
+    /// What reading dropped or left as it was, one note each (z values, rings that enclose
+    /// nothing, features with no geometry).
+    pub notes: Vec<String>,
+}
+
+/// One feature: its id and properties, and its shapes (none for a null geometry).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FeatureShapes {
+    /// Where it is: `feature 2`.
+    pub place: Place,
+    /// Its `id`, if any.
+    pub id: Option<geojson::feature::Id>,
+    /// Its `properties`, if any.
+    pub properties: Option<geojson::JsonObject>,
+    /// Its rings or segments; `None` when its geometry is null.
+    pub shapes: Option<Shapes>,
+}
+
+/// A GeoJSON file's features, each read on its own; `None` when it holds a bare geometry. Every
+/// feature is checked as [`read_shapes`] checks a file (one kind across them all).
+pub fn read_features(path: &Path) -> Result<Option<Features>, InputError> {
+    let text = read_text(path)?;
+    let features = features_from_text(&text).map_err(|problem| InputError::new(path, problem))?;
+    for note in features.iter().flat_map(|f| &f.notes) {
+        console::note(format_args!("{}: {note}", path.display()));
+    }
+    Ok(features)
+}
+
+/// [`read_features`] on text.
+pub fn features_from_text(text: &str) -> Result<Option<Features>, String> {
+    let json = geojson::GeoJson::from_str(text).map_err(not_valid_geojson)?;
+    let (collection, features): (bool, Vec<&geojson::Feature>) = match &json {
+        geojson::GeoJson::FeatureCollection(fc) => (true, fc.features.iter().collect()),
+        geojson::GeoJson::Feature(f) => (false, vec![f]),
+        geojson::GeoJson::Geometry(_) => return Ok(None),
+    };
+    let parsed = geojson_geometries(&json)?;
+    // All of them at once first: one kind (polygons or line strings) across the features.
+    let all = shapes_of(&parsed.geometries)?;
+    let mut notes: Vec<String> = parsed.dropped.into_iter().chain(all.dropped).collect();
+    let mut geometries = parsed.geometries.into_iter();
+    let mut out = Vec::with_capacity(features.len());
+    for (i, f) in features.into_iter().enumerate() {
+        let place = if collection { Place::default().then(format_args!("feature {i}")) } else { Place::default() };
+        let shapes = match f.geometry {
+            None => {
+                let which = if collection { place.to_string() } else { "the feature".to_owned() };
+                notes
+                    .push(format!("{which} has no geometry (null): it is written back as it is, with a null geometry"));
+                None
+            }
+            Some(_) => {
+                let placed = geometries.next().ok_or("a feature's geometry went missing in reading")?;
+                Some(shapes_of(std::slice::from_ref(&placed))?)
+            }
+        };
+        out.push(FeatureShapes { place, id: f.id.clone(), properties: f.properties.clone(), shapes });
+    }
+    Ok(Some(Features { collection, features: out, line_strings: all.line_strings, notes }))
+}
+
 /// The rings and segments of some geometries, in order.
 pub fn shapes_of(geometries: &[Placed]) -> Result<Shapes, String> {
     let mut collector = Collector::default();
@@ -191,24 +287,26 @@ struct Collector {
 impl Collector {
     /// Adds a geometry's rings and segments; points are refused (they have no area and no length).
     fn add(&mut self, g: &Geometry<f64>, place: &Place) -> Result<(), String> {
-        let rings = &mut self.shapes.rings;
-        let segments = &mut self.shapes.segments;
         match g {
-            Geometry::Polygon(p) => rings.extend(Polygons::from(p).rings),
-            Geometry::MultiPolygon(mp) => rings.extend(Polygons::from(mp).rings),
-            Geometry::Rect(r) => rings.extend(Polygons::from(&r.to_polygon()).rings),
-            Geometry::Triangle(t) => rings.extend(Polygons::from(&t.to_polygon()).rings),
+            Geometry::Polygon(p) => self.add_polygon(p, place),
+            Geometry::MultiPolygon(mp) => {
+                for (i, p) in mp.0.iter().enumerate() {
+                    self.add_polygon(p, &place.then(format_args!("polygon {i}")));
+                }
+            }
+            Geometry::Rect(r) => self.add_polygon(&r.to_polygon(), place),
+            Geometry::Triangle(t) => self.add_polygon(&t.to_polygon(), place),
             Geometry::LineString(ls) => {
                 check_points(ls, place)?;
-                segments.extend(ls.lines().map(Segment::from));
+                self.shapes.segments.extend(ls.lines().map(Segment::from));
             }
             Geometry::MultiLineString(mls) => {
                 for (i, ls) in mls.0.iter().enumerate() {
                     check_points(ls, &place.then(format_args!("line string {i}")))?;
                 }
-                segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from));
+                self.shapes.segments.extend(mls.0.iter().flat_map(|ls| ls.lines()).map(Segment::from));
             }
-            Geometry::Line(l) => segments.push(Segment::from(*l)),
+            Geometry::Line(l) => self.shapes.segments.push(Segment::from(*l)),
             Geometry::GeometryCollection(c) => {
                 return c
                     .0
@@ -223,12 +321,44 @@ impl Collector {
         self.one_kind(g, place)
     }
 
+    /// Adds a polygon's rings (the exterior is ring 0), each with its orientation. A ring of
+    /// fewer than 3 distinct points encloses nothing and adds nothing to any winding number: it
+    /// is dropped with a note saying where it was, as GEOS and Boost.Geometry read it. This is
+    /// the one place such rings are dropped; the clippers refuse them, as their input contract
+    /// says.
+    fn add_polygon(&mut self, p: &geo::Polygon<f64>, place: &Place) {
+        // `POLYGON EMPTY` is the empty region: nothing to drop or say.
+        if p.exterior().0.is_empty() && p.interiors().is_empty() {
+            return;
+        }
+        for (i, ls) in std::iter::once(p.exterior()).chain(p.interiors()).enumerate() {
+            let ring = Ring::from(ls);
+            let distinct = ring.distinct_points_up_to(3);
+            if distinct < 3 {
+                let what = match distinct {
+                    0 => "is empty".to_owned(),
+                    1 => "has 1 distinct point".to_owned(),
+                    n => format!("has {n} distinct points"),
+                };
+                self.shapes.dropped.push(format!(
+                    "{} {what} and encloses nothing: dropped (it adds nothing to any winding number)",
+                    place.then(format_args!("ring {i}"))
+                ));
+                continue;
+            }
+            self.shapes.rings.push(ring);
+        }
+    }
+
     /// Refuses `g` when it is of the other kind (polygons, line strings) than the first one.
     fn one_kind(&mut self, g: &Geometry<f64>, place: &Place) -> Result<(), String> {
         let kind = kind_name(g);
         let polygonal = |kind: &str| matches!(kind, "Polygon" | "MultiPolygon" | "Rect" | "Triangle");
         match &self.first {
-            None => self.first = Some((place.clone(), kind)),
+            None => {
+                self.shapes.line_strings = !polygonal(kind);
+                self.first = Some((place.clone(), kind));
+            }
             Some((first_place, first_kind)) if polygonal(first_kind) != polygonal(kind) => {
                 return Err(format!(
                     "{place} is a {kind}, but {first_place} is a {first_kind}: a file holds polygons or line strings, \
@@ -327,7 +457,7 @@ mod tests {
             wkt_shapes("MULTILINESTRING((0 0,1 1),(2 2))").unwrap_err(),
             "line string 1 has 1 point: a line string needs two or more"
         );
-        assert_eq!(wkt_shapes("LINESTRING EMPTY").unwrap(), Shapes::default());
+        assert_eq!(wkt_shapes("LINESTRING EMPTY").unwrap(), Shapes { line_strings: true, ..Shapes::default() });
     }
 
     #[test]

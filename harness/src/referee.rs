@@ -41,8 +41,8 @@ pub struct RefereeArgs {
     /// Seed of the case generators (the same as `verify`'s for the same cases).
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Worker threads (default: one per core). The result does not depend on it.
-    #[arg(long)]
+    /// Worker threads, 1 to 1024 (default: one per core). The result does not depend on it.
+    #[arg(long, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=crate::verify::MAX_THREADS as u64))]
     pub threads: Option<usize>,
     /// Also write the summary and every case beyond rounding as JSON to this file.
     #[arg(long, value_name = "FILE")]
@@ -256,7 +256,7 @@ fn referee_case(referee: &PolygonEntry, workload: &'static str, seed: u64, index
                         rounding_bound: rounding_bound(subject, clip, &output),
                     });
                 }
-                Err(message) => result.failures.push((format!("{} {}", op.name(), fill.name()), message)),
+                Err(failure) => result.failures.push((format!("{} {}", op.name(), fill.name()), failure.message)),
             }
         }
     }

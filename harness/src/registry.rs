@@ -99,6 +99,9 @@ pub struct PolygonEntry {
     /// For an external clipper, the times it reports for itself (bench shows them beside the
     /// round trip).
     pub own_time: Option<Arc<OwnTime>>,
+    /// For an external clipper, the command-line options that register it again (a replay
+    /// command needs them).
+    pub external: Option<String>,
 }
 
 /// A registered line clipper.
@@ -109,6 +112,8 @@ pub struct LineEntry {
     pub origin: Origin,
     /// Tolerance on the parameter `t` of piece end points.
     pub tolerance: f64,
+    /// For an external clipper, the command-line options that register it again.
+    pub external: Option<String>,
 }
 
 /// A registered curve clipper (circles, ellipses, arcs; any window, read even-odd).
@@ -134,13 +139,19 @@ pub struct Registry {
 impl Registry {
     /// Adds a polygon clipper.
     pub fn polygon(mut self, origin: Origin, tolerance: f64, clipper: impl PolygonClipper + 'static) -> Registry {
-        self.polygon.push(PolygonEntry { clipper: Box::new(clipper), origin, tolerance, own_time: None });
+        self.polygon.push(PolygonEntry {
+            clipper: Box::new(clipper),
+            origin,
+            tolerance,
+            own_time: None,
+            external: None,
+        });
         self
     }
 
     /// Adds a line clipper.
     pub fn line(mut self, origin: Origin, tolerance: f64, clipper: impl LineClipper + 'static) -> Registry {
-        self.line.push(LineEntry { clipper: Box::new(clipper), origin, tolerance });
+        self.line.push(LineEntry { clipper: Box::new(clipper), origin, tolerance, external: None });
         self
     }
 
@@ -175,6 +186,21 @@ impl Registry {
     /// The line clipper called `name`.
     pub fn find_line(&self, name: &str) -> Option<&LineEntry> {
         self.line.iter().find(|e| e.clipper.name() == name)
+    }
+
+    /// The options that register the named clippers that are external (each once, in the order
+    /// named): what a command replaying their case needs beside its own arguments.
+    pub fn external_options(&self, names: &[&str]) -> Vec<String> {
+        let mut options: Vec<String> = Vec::new();
+        for name in names {
+            let polygon = self.find_polygon(name).and_then(|e| e.external.clone());
+            if let Some(option) = polygon.or_else(|| self.find_line(name).and_then(|e| e.external.clone()))
+                && !options.contains(&option)
+            {
+                options.push(option);
+            }
+        }
+        options
     }
 
     /// Keeps only the named clippers (all of them when `names` is empty) and every external one

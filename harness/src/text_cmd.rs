@@ -117,19 +117,25 @@ pub fn run(args: &TextArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-/// The window from WKT text, or from a file when the text is not WKT.
+/// The window from a file when a file of that name exists, else from the text as WKT.
 fn read_window(arg: &str) -> Result<Polygons, CliError> {
-    let looks_like_wkt = arg.trim_start().chars().next().is_some_and(|c| c.is_ascii_alphabetic()) && arg.contains('(');
-    if looks_like_wkt {
+    let window = if Path::new(arg).is_file() {
+        read_polygons(Path::new(arg), Operand::Window)?
+    } else {
         let shapes = parse_wkt(arg)
             .and_then(|parsed| shapes_of(&parsed.geometries))
-            .map_err(|e| CliError::usage(format!("--window: {e}")))?;
-        if shapes.rings.is_empty() {
-            return Err(CliError::usage("--window: expected a POLYGON or MULTIPOLYGON"));
+            .map_err(|e| CliError::usage(format!("--window '{arg}': no such file, and not WKT: {e}")))?;
+        if shapes.line_strings {
+            return Err(CliError::usage(format!("--window '{arg}': expected a POLYGON or MULTIPOLYGON")));
         }
-        return Ok(shapes.polygons());
+        shapes.polygons()
+    };
+    if window.rings.is_empty() {
+        return Err(CliError::usage(format!(
+            "--window '{arg}': the window is empty: it encloses no area to clip the text to"
+        )));
     }
-    Ok(read_polygons(Path::new(arg), Operand::Window)?)
+    Ok(window)
 }
 
 /// Bad input (font, string, size, window) is a usage error naming what is wrong; a clipper

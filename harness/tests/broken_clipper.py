@@ -3,12 +3,14 @@
 
 It clips polygons against rectangle windows correctly (Sutherland-Hodgman, each subject ring on
 its own, so its output is declared "bridged"), and segments against rectangle windows
-(Liang-Barsky, boundary included), except on four requests, counted across all its restarts in a
-state file: on the CRASH-th it exits, on the HANG-th it never answers, on the GARBAGE-th it
-writes a line that is not JSON, on the WRONG_ID-th it answers with another request's id. 0 turns
-a fault off.
+(Liang-Barsky, boundary included), except on some requests, counted across all its restarts in
+a state file: on the CRASH-th it exits, on the HANG-th it never answers, on the GARBAGE-th it
+writes a line that is not JSON, on the WRONG_ID-th it answers with another request's id, on the
+BAD_TIME-th it answers right but reports its own time as -5 ns, and from the LIE-th on it answers every polygon
+request with the subject unclipped (with LIE it declares all four operations, so that its area
+identities are checked too). 0 (or leaving the last ones out) turns a fault off.
 
-Usage: broken_clipper.py STATE_FILE CRASH HANG GARBAGE WRONG_ID
+Usage: broken_clipper.py STATE_FILE CRASH HANG GARBAGE WRONG_ID [BAD_TIME [LIE]]
 """
 
 import fcntl
@@ -99,13 +101,15 @@ def clip_lines(request):
 
 def main():
     state, crash, hang, garbage, wrong_id = sys.argv[1], *map(int, sys.argv[2:6])
+    bad_time, lie = (list(map(int, sys.argv[6:8])) + [0, 0])[:2]
+    ops = ["intersection", "union", "difference", "xor"] if lie else ["intersection"]
     print(
         json.dumps(
             {
                 "protocol": 1,
                 "name": "broken test clipper",
                 "polygon": {
-                    "ops": ["intersection"],
+                    "ops": ops,
                     "fill_rules": ["even-odd", "non-zero", "positive", "negative"],
                     "window": "rectangle",
                     "output": "bridged",
@@ -128,6 +132,14 @@ def main():
             continue
         if n == wrong_id:
             print(json.dumps({"id": request["id"] + 1000, "rings": []}), flush=True)
+            continue
+        if n == bad_time:
+            # A right answer: only its time is impossible.
+            key, result = ("pieces", clip_lines(request)) if "segments" in request else ("rings", clip(request))
+            print(json.dumps({"id": request["id"], key: result, "time_ns": -5}), flush=True)
+            continue
+        if lie and n >= lie and "subject" in request:
+            print(json.dumps({"id": request["id"], "rings": request["subject"]}), flush=True)
             continue
         if "segments" in request:
             print(json.dumps({"id": request["id"], "pieces": clip_lines(request)}), flush=True)

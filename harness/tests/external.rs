@@ -92,10 +92,119 @@ fn a_broken_clipper_fails_its_broken_cases_and_every_other_case_is_judged() {
 
 /// `--external broken=...` running tests/broken_clipper.py with the given faults (0: none).
 fn broken_clipper(dir: &Path, faults: [u32; 4]) -> String {
+    broken_clipper_with(dir, faults, [0, 0])
+}
+
+/// [`broken_clipper`] with the faults after the first four: an impossible time on the request
+/// given, and lies from the request given on.
+fn broken_clipper_with(dir: &Path, faults: [u32; 4], [bad_time, lie]: [u32; 2]) -> String {
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("broken_clipper.py");
     let state = dir.join("requests");
     let [crash, hang, garbage, wrong_id] = faults;
-    format!("broken=python3 '{}' '{}' {crash} {hang} {garbage} {wrong_id}", script.display(), state.display())
+    format!(
+        "broken=python3 '{}' '{}' {crash} {hang} {garbage} {wrong_id} {bad_time} {lie}",
+        script.display(),
+        state.display()
+    )
+}
+
+/// Runs `verify` of the broken clipper on `star` (one thread, every failure written) and returns
+/// the output and the JSON summary.
+fn verify_broken(dir: &Path, external: &str, cases: &str, more: &[&str]) -> (Output, serde_json::Value) {
+    let json = dir.join("summary.json");
+    let failures = dir.join("failures");
+    let mut args = vec![
+        "verify",
+        "--external",
+        external,
+        "--clipper",
+        "broken",
+        "--workload",
+        "star",
+        "--cases",
+        cases,
+        "--threads",
+        "1",
+        "--max-records",
+        "0",
+        "--out",
+        failures.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ];
+    args.extend_from_slice(more);
+    let o = clipbench(&args);
+    let summary = serde_json::from_str(
+        &std::fs::read_to_string(&json)
+            .unwrap_or_else(|e| panic!("no summary ({e}): {}{}", text(&o.stdout), text(&o.stderr))),
+    )
+    .unwrap();
+    (o, summary)
+}
+
+/// The `found` of every failure case the summary lists.
+fn found(dir: &Path, summary: &serde_json::Value) -> Vec<serde_json::Value> {
+    summary["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            let path = dir.join("failures").join(c["folder"].as_str().unwrap()).join("case.json");
+            serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+        })
+        .collect()
+}
+
+/// A reply's own time of -5 ns was dropped without a word; it is a protocol error now, which
+/// fails that case and names the time (issue 28).
+#[test]
+fn a_reply_with_an_impossible_time_fails_its_case_naming_the_time() {
+    let dir = scratch("bad-time");
+    let (o, summary) = verify_broken(&dir, &broken_clipper_with(&dir, [0, 0, 0, 0], [3, 0]), "2", &[]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let row = &summary["rows"][0];
+    assert_eq!((row["runs"].as_u64(), row["oracle_failures"].as_u64()), (Some(8), Some(1)), "{row}");
+    let cases = found(&dir, &summary);
+    let message = cases[0]["found"].as_str().unwrap();
+    assert!(message.contains("time_ns -5") && message.contains("round trip"), "{message}");
+}
+
+/// The replay command written for an external clipper's failure lacked its `--external`
+/// option, so it failed with "unknown clipper" (issue 28); it runs now.
+#[test]
+fn the_replay_command_of_an_external_clippers_failure_runs_as_printed() {
+    let dir = scratch("replay-external");
+    let external = broken_clipper(&dir, [2, 0, 0, 0]);
+    let (o, summary) = verify_broken(&dir, &external, "1", &["--call-timeout", "30"]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let cases = found(&dir, &summary);
+    let replay = cases[0]["replay"].as_str().unwrap();
+    assert!(replay.contains("--external") && replay.contains("--call-timeout 30"), "{replay}");
+    assert!(text(&o.stdout).contains(replay), "the printed line gives the same command: {}", text(&o.stdout));
+    let words = shlex::split(replay).unwrap();
+    assert_eq!(words[0], "clipbench");
+    let args: Vec<&str> = words[1..].iter().map(String::as_str).collect();
+    let again = clipbench(&args);
+    // The crash was on request 2 only: replayed, it passes.
+    assert_eq!(again.status.code(), Some(0), "{}\n{}", text(&again.stdout), text(&again.stderr));
+    assert!(text(&again.stdout).starts_with("passes now: polygon broken oracle"), "{}", text(&again.stdout));
+}
+
+/// A lying clipper's summary read "48 runs, 60 oracle failures": failed area identities were
+/// counted in the oracle column, though they are no run (issue 28). They have their own now.
+#[test]
+fn area_identity_failures_are_counted_apart_from_the_runs_oracle_failures() {
+    let dir = scratch("identities");
+    let (o, summary) = verify_broken(&dir, &broken_clipper_with(&dir, [0, 0, 0, 0], [0, 1]), "3", &[]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let row = &summary["rows"][0];
+    let (runs, oracle, identities) =
+        (row["runs"].as_u64().unwrap(), row["oracle_failures"].as_u64().unwrap(), row["identity_failures"].as_u64());
+    assert_eq!(runs, 3 * 4 * 4, "{row}");
+    assert!(oracle > 0 && oracle <= runs, "{row}");
+    assert!(identities.is_some_and(|i| i > 0 && i <= 3 * 4), "{row}");
+    let table = text(&o.stdout);
+    assert!(table.lines().next().unwrap().contains("identity fail"), "{table}");
 }
 
 #[test]

@@ -129,9 +129,27 @@ pub enum ClipError {
     Failed {
         /// The clipper's name.
         clipper: &'static str,
+        /// How it failed: a shrunk failure case must fail the same way as the one found.
+        kind: FailureKind,
         /// What went wrong, in the clipper's or the harness's words.
         reason: String,
     },
+}
+
+/// How a clipper failed to answer ([`ClipError::Failed`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FailureKind {
+    /// A library reported an internal error.
+    Internal,
+    /// A clipper process exited or closed its output.
+    Crashed,
+    /// A clipper process gave no answer within its time limit.
+    Hung,
+    /// A clipper process broke its protocol: a line that is not a reply, a wrong id, a time
+    /// that cannot be.
+    Garbled,
+    /// A clipper process answered with an error of its own.
+    Declined,
 }
 
 /// True when `v` is finite and in the valid range (NaN fails `<=`), without branches.

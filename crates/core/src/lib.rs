@@ -73,8 +73,8 @@ pub use cluster_snap::{SNAP_ULPS, snap_clusters};
 pub use curve_region::{BoundaryPiece, CurveRegion};
 pub use ellipse::{Ellipse, EllipseArc, MIN_AXIS_RATIO, MIN_RADIUS_TO_CENTRE};
 pub use error::{
-    ClipError, MAX_COORDINATE, MIN_COORDINATE, Operand, convex_window, rect_window, validate_polygons, validate_ring,
-    validate_segments, validate_window, window_covers,
+    ClipError, FailureKind, MAX_COORDINATE, MIN_COORDINATE, Operand, convex_window, rect_window, validate_polygons,
+    validate_ring, validate_segments, validate_window, window_covers,
 };
 pub use filled_arc::{ArcFill, FilledArc};
 pub use line_crossings::{LineCrossings, PARAMETER_SNAP};
@@ -86,7 +86,7 @@ pub use polygons::Polygons;
 pub use predicates::{LineSide, Orientation, SegmentIntersection, orient, segment_intersection};
 pub use rect::Rect;
 pub use ring::Ring;
-pub use segment::Segment;
+pub use segment::{FAR_REACH, Segment};
 pub use trapezoid::Trapezoid;
 pub use winding::{Location, edge_winding, locate, ring_winding, winding_number};
 pub use window_rings::WindowRings;

@@ -1,7 +1,7 @@
 //! A segment's line as a parameter axis: `t` of points on it and their exact place relative to the ends.
 
 use crate::predicates::{orient_sign, orient2d_inline as orient2d};
-use crate::{Point, Segment};
+use crate::{Point, Rect, Segment};
 
 /// Where a point of the segment's line lies relative to the segment, decided exactly.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -18,13 +18,20 @@ pub enum Along {
     After,
 }
 
-/// The directed line `P(t) = a + t (b - a)` of a segment of positive length.
+/// The directed line of a segment `a -> b` of positive length, with the parameter positions along
+/// it are measured in: `P(t) = o + t (e - o)` over the part `o -> e` of the segment they are
+/// wanted on, the segment itself (`t = 0` at `a`, `t = 1` at `b`) unless it reaches far past the
+/// window ([`LineFrame::near`]). Places relative to `a` and `b` are always exact.
 #[derive(Clone, Copy, Debug)]
 pub struct LineFrame {
-    /// The start point, `t = 0`.
+    /// The segment's start point.
     pub a: Point,
-    /// The end point, `t = 1`.
+    /// The segment's end point.
     pub b: Point,
+    /// Where `t = 0`: `a`, or where the segment's part near the window starts.
+    o: Point,
+    /// Where `t = 1`: `b`, or where that part ends.
+    e: Point,
     d: Point,
     inv_len2: f64,
     /// True when `|dx| >= |dy|`: points on the line are ordered by x, else by y (exact either way).
@@ -32,17 +39,37 @@ pub struct LineFrame {
 }
 
 impl LineFrame {
-    /// The frame of `s`; `s` must have positive length.
+    /// The frame of `s`, `t` along all of it; `s` must have positive length.
     #[inline]
     pub fn new(s: Segment) -> LineFrame {
         let d = s.b - s.a;
-        LineFrame { a: s.a, b: s.b, d, inv_len2: 1.0 / d.dot(d), x_major: d.x.abs() >= d.y.abs() }
+        LineFrame { a: s.a, b: s.b, o: s.a, e: s.b, d, inv_len2: 1.0 / d.dot(d), x_major: d.x.abs() >= d.y.abs() }
+    }
+
+    /// The frame of `s` for a window of bounding box `window`: `t` along `s`, or, where `s`
+    /// reaches far past the window, along its part near it ([`Segment::part_near`]), so that
+    /// crossings a window's width apart stay apart in `t` however long the segment is.
+    #[inline]
+    pub fn near(s: Segment, window: &Rect) -> LineFrame {
+        let mut frame = LineFrame::new(s);
+        if s.reaches_far_past(window) {
+            let part = s.part_near(window);
+            let d = part.b - part.a;
+            (frame.o, frame.e, frame.d, frame.inv_len2) = (part.a, part.b, d, 1.0 / d.dot(d));
+        }
+        frame
+    }
+
+    /// True when `t` runs over the whole segment (`t = 0` at `a`, `t = 1` at `b`).
+    #[inline]
+    fn whole(&self) -> bool {
+        self.o == self.a && self.e == self.b
     }
 
     /// The parameter of `p` projected onto the line (rounded; exactness lives in [`Self::place`]).
     #[inline]
     pub fn param(&self, p: Point) -> f64 {
-        ((p.x - self.a.x) * self.d.x + (p.y - self.a.y) * self.d.y) * self.inv_len2
+        ((p.x - self.o.x) * self.d.x + (p.y - self.o.y) * self.d.y) * self.inv_len2
     }
 
     /// The exact place of `p`, a point known to lie on the line, relative to the segment: on the line
@@ -116,21 +143,29 @@ impl LineFrame {
         if gb == 0.0 {
             (Along::AtEnd, 1.0)
         } else if (gb > 0.0) == p_left {
-            (Along::Inside, (ga / (ga - gb)).clamp(0.0, 1.0))
+            if !self.whole() {
+                // The part's ends lie on the line only to within rounding at the window's
+                // magnitude: the edge's function at them can put the crossing with a nearly
+                // parallel edge anywhere along the part. It is placed along the edge instead.
+                let (fp, fq) = (orient2d(self.a, self.b, p), orient2d(self.a, self.b, q));
+                return (Along::Inside, self.crossing_param(p, q, fp, fq));
+            }
+            let t = ga / (ga - gb);
+            (Along::Inside, if t.is_nan() { 0.5 } else { t.clamp(0.0, 1.0) })
         } else {
             (Along::After, 1.0)
         }
     }
 
-    /// The point at parameter `t`, exactly an endpoint at 0 and 1.
+    /// The point at parameter `t`, exactly an endpoint (of the part `t` runs over) at 0 and 1.
     #[inline]
     pub fn at(&self, t: f64) -> Point {
         if t <= 0.0 {
-            self.a
+            self.o
         } else if t >= 1.0 {
-            self.b
+            self.e
         } else {
-            self.a.lerp(self.b, t)
+            self.o.lerp(self.e, t)
         }
     }
 }

@@ -2,6 +2,11 @@
 
 use crate::{Point, Rect};
 
+/// How many times a window's extent a segment may reach before positions along it near the
+/// window are measured on its part near the window ([`Segment::part_near`]): below it, a
+/// parameter along the whole segment still resolves the window to well under 1e-9 of its size.
+pub const FAR_REACH: f64 = 64.0;
+
 /// A directed segment `P(t) = a + t (b - a)`, `t` in `[0, 1]`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Segment {
@@ -85,6 +90,71 @@ impl Segment {
             }
         }
         merged
+    }
+
+    /// True when the segment reaches more than [`FAR_REACH`] times `bounds`' extent along either
+    /// axis: then positions along it near `bounds` are measured on [`Segment::part_near`].
+    #[inline]
+    pub fn reaches_far_past(&self, bounds: &Rect) -> bool {
+        let reach = (self.b.x - self.a.x).abs().max((self.b.y - self.a.y).abs());
+        reach > FAR_REACH * bounds.extent()
+    }
+
+    /// The part of the segment that positions near `bounds` are measured along: the segment
+    /// itself, unless it [reaches far past](Segment::reaches_far_past) `bounds`; then its part
+    /// inside `bounds` grown by its extent on every side, from where its line enters that box
+    /// (or from `a`, if `a` is inside) to where it leaves it (or to `b`). Its direction is the
+    /// segment's.
+    ///
+    /// A parameter along a whole segment resolves about 2^-53 of its length (and line clippers
+    /// take crossings within [`crate::PARAMETER_SNAP`] of it for one), so with ends at ±1e17 a
+    /// window 10 wide is less than one step of it. The ends of this part are where the line
+    /// crosses the box's sides, placed from the line function at the box's corners (accurate to
+    /// an ulp however far the segment's ends are) along those sides: they lie on the line to
+    /// within rounding at the box's own magnitude. A line that misses the box, or a segment that
+    /// ends before reaching it, gives the segment itself (it meets nothing there).
+    pub fn part_near(&self, bounds: &Rect) -> Segment {
+        if !self.reaches_far_past(bounds) || bounds.extent() == 0.0 {
+            return *self;
+        }
+        let e = bounds.extent();
+        let (lo, hi) = (Point::new(bounds.min.x - e, bounds.min.y - e), Point::new(bounds.max.x + e, bounds.max.y + e));
+        let d = self.b - self.a;
+        let crossings: Vec<Point> = if d.y == 0.0 {
+            // An axis-parallel line crosses the box at its own y (or x), exactly.
+            let on = (lo.y..=hi.y).contains(&self.a.y);
+            if on { vec![Point::new(lo.x, self.a.y), Point::new(hi.x, self.a.y)] } else { Vec::new() }
+        } else if d.x == 0.0 {
+            let on = (lo.x..=hi.x).contains(&self.a.x);
+            if on { vec![Point::new(self.a.x, lo.y), Point::new(self.a.x, hi.y)] } else { Vec::new() }
+        } else {
+            let corners = [lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)];
+            let f = corners.map(|c| crate::predicates::orient2d(self.a, self.b, c));
+            (0..4)
+                .filter_map(|i| {
+                    let (c, next, fc, fnext) = (corners[i], corners[(i + 1) % 4], f[i], f[(i + 1) % 4]);
+                    if fc == 0.0 {
+                        Some(c)
+                    } else if fnext != 0.0 && (fc > 0.0) != (fnext > 0.0) {
+                        Some(c.lerp(next, fc / (fc - fnext)))
+                    } else {
+                        None
+                    }
+                })
+                .collect()
+        };
+        // Ordered along the segment by its major coordinate (monotone along the line).
+        let key = |p: &Point| if d.x.abs() >= d.y.abs() { p.x * d.x.signum() } else { p.y * d.y.signum() };
+        let by_key = |p: &&Point, q: &&Point| key(p).total_cmp(&key(q));
+        let (Some(&enter), Some(&leave)) = (crossings.iter().min_by(by_key), crossings.iter().max_by(by_key)) else {
+            return *self;
+        };
+        let start = if key(&self.a) > key(&enter) { self.a } else { enter };
+        let end = if key(&self.b) < key(&leave) { self.b } else { leave };
+        if key(&start) >= key(&end) {
+            return *self;
+        }
+        Segment::new(start, end)
     }
 
     /// The parameter of `p` projected onto the segment's line (not clamped).

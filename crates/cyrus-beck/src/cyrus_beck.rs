@@ -141,6 +141,11 @@ impl PreparedCyrusBeck {
         if self.table.misses_bounds(s) {
             return Outcome::BoundingBox;
         }
+        if s.reaches_far_past(&self.table.bounds) {
+            // Its parameters from the edge functions at its ends, ga / (ga - gb), cannot tell the
+            // window's edges apart: the exact crossings along its part near the window instead.
+            return Outcome::Fallback(self.crossed(index, s, out, scratch));
+        }
         let pts = &self.table.points;
         let n = pts.len() - 1;
         let (mut t_in, mut t_out) = (0.0, 1.0);
@@ -184,11 +189,7 @@ impl PreparedCyrusBeck {
             };
             match cuts_corner {
                 Some(false) => return Outcome::EmptySpan,
-                None if t_out - t_in < NEAR => {
-                    let frame = LineFrame::new(s);
-                    cross_by_vertex_sides(&self.table, &frame, scratch);
-                    return Outcome::Fallback(scratch.crossings.emit(index, &frame, out));
-                }
+                None if t_out - t_in < NEAR => return Outcome::Fallback(self.crossed(index, s, out, scratch)),
                 _ => {}
             }
         }
@@ -200,6 +201,14 @@ impl PreparedCyrusBeck {
         Outcome::Span(out.len() - before)
     }
 
+    /// The pieces of `s` from the crossings of its line with every edge (Liu's classification,
+    /// exact), for the segments Cyrus-Beck's parameters cannot place.
+    fn crossed(&self, index: usize, s: Segment, out: &mut Vec<VisiblePiece>, scratch: &mut Scratch) -> usize {
+        let frame = LineFrame::near(s, &self.table.bounds);
+        cross_by_vertex_sides(&self.table, &frame, scratch);
+        scratch.crossings.emit(index, &frame, out)
+    }
+
     /// The segment lies on the line of edge `i`: its overlap with that edge is what is visible.
     fn along_edge(
         &self,
@@ -209,7 +218,7 @@ impl PreparedCyrusBeck {
         out: &mut Vec<VisiblePiece>,
         scratch: &mut Scratch,
     ) -> usize {
-        let frame = LineFrame::new(s);
+        let frame = LineFrame::near(s, &self.table.bounds);
         let (p, q) = (self.table.points[i], self.table.points[i + 1]);
         let crossings = &mut scratch.crossings;
         crossings.clear();

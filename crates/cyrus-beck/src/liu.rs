@@ -113,7 +113,7 @@ impl PreparedLiu {
     /// meets no edge, else the number of pieces written.
     #[inline(always)]
     fn clip_met(&self, index: usize, s: Segment, out: &mut Vec<VisiblePiece>, scratch: &mut Scratch) -> Option<usize> {
-        let frame = LineFrame::new(s);
+        let frame = LineFrame::near(s, &self.table.bounds);
         cross_by_vertex_sides(&self.table, &frame, scratch);
         if scratch.crossings.is_empty() {
             return None;

@@ -410,6 +410,17 @@ fn line_clippers_plain_determinant_1e_8_off() {
     regression("line_clippers", "plain-determinant-1e-8-off");
 }
 
+/// A segment from (2.3e77, 4.9e-33) to (4.9e-33, 4.9e-33) under a window edge of slope 6e-75 it
+/// crosses 1.9e31 from a window corner at 1.1e74 (1e-43 of the window: nothing visible, within
+/// tolerance). The oracle measured the far segment along its part near the window, and took the
+/// crossing with that nearly parallel edge from the edge's line function at the part's ends, which
+/// lie on the segment's line only to within rounding at 1e74 (1e58 off): the crossing came out
+/// at the part's end, and half the part "visible". The crossing is now placed along the edge.
+#[test]
+fn line_clippers_edge_nearly_parallel_to_a_far_segment() {
+    regression("line_clippers", "edge-nearly-parallel-to-a-far-segment");
+}
+
 /// Points 1e-7 apart on a diagonal that f64 cannot hold exactly: vatti's xor retraced a ring
 /// for one ulp at a rounded crossing, which the oracle called a self-overlap. A same-ring overlap
 /// no longer than the snap distance is now a rounded vertex, as a crossing that close is.

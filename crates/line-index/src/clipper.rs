@@ -193,7 +193,7 @@ impl PreparedLineIndex {
             sign_bound: side.sign_bound(&self.bounds),
             trusted_gap: side.crossing_gap_bound(&self.bounds),
         };
-        let frame = LineFrame::new(s);
+        let frame = LineFrame::near(s, &self.bounds);
         // An end strictly outside the bounding box is outside the window, so the crossings on the
         // segment alone give the parity at the other end: only the boxes meeting the segment are
         // walked. Otherwise a segment short beside the window: its crossings and the exact place

@@ -65,6 +65,16 @@ impl std::error::Error for LineFailure {}
 /// assert_eq!(visible_intervals(&square, touch), vec![]);
 /// ```
 pub fn visible_intervals(window: &Polygons, s: Segment) -> Vec<(f64, f64)> {
+    visible_intervals_along(window, s, s)
+}
+
+/// [`visible_intervals`] as parameters along `frame`, a part of `s` holding every point of it
+/// that can be visible: `s` itself, or for a segment reaching far past the window its part near
+/// it ([`Segment::part_near`] of the window's bounding box), along which a window's width is
+/// still many steps of the parameter (along the whole of a segment with ends at ±1e17, a window
+/// 10 wide is less than one). What is visible is decided on `s`, exactly, as for `s` itself;
+/// only the parameters are measured along `frame`.
+pub fn visible_intervals_along(window: &Polygons, s: Segment, frame: Segment) -> Vec<(f64, f64)> {
     if s.is_degenerate() || !s.a.is_finite() || !s.b.is_finite() {
         return Vec::new();
     }
@@ -77,10 +87,10 @@ pub fn visible_intervals(window: &Polygons, s: Segment) -> Vec<(f64, f64)> {
         }
         match segment_intersection(s, e) {
             SegmentIntersection::None => {}
-            SegmentIntersection::Crossing(_) => ts.push(crossing_t(s, e)),
-            SegmentIntersection::Touching(p) => ts.push(t_of(s, p)),
+            SegmentIntersection::Crossing(_) => ts.push(crossing_t((s, frame), e)),
+            SegmentIntersection::Touching(p) => ts.push(t_of(frame, p)),
             SegmentIntersection::Overlap(o) => {
-                let (ta, tb) = (t_of(s, o.a), t_of(s, o.b));
+                let (ta, tb) = (t_of(frame, o.a), t_of(frame, o.b));
                 ts.extend([ta, tb]);
                 overlaps.push((ta.min(tb), ta.max(tb)));
             }
@@ -91,7 +101,7 @@ pub fn visible_intervals(window: &Polygons, s: Segment) -> Vec<(f64, f64)> {
     let mut out: Vec<(f64, f64)> = Vec::new();
     for w in ts.windows(2) {
         let (ta, tb) = (w[0], w[1]);
-        if tb <= ta || !run_is_visible(window, s, ta, tb, &overlaps) {
+        if tb <= ta || !run_is_visible(window, (s, frame), ta, tb, &overlaps) {
             continue;
         }
         match out.last_mut() {
@@ -113,8 +123,20 @@ fn t_of(s: Segment, p: Point) -> f64 {
     }
 }
 
-/// `t` on `s` where the interiors of `s` and `e` cross (known to cross).
-fn crossing_t(s: Segment, e: Segment) -> f64 {
+/// `t` along `frame` where the interiors of `s` and `e` cross (known to cross), clamped to `frame`.
+fn crossing_t((s, frame): (Segment, Segment), e: Segment) -> f64 {
+    if frame != s {
+        // A part near the window: its ends lie on the line of `s` only to within rounding at the
+        // box's magnitude, so the edge's line function at them can put the crossing with an edge
+        // nearly parallel to `s` anywhere along it (found by the `line_clippers` fuzz target: an
+        // edge of slope 6e-75 under a segment reaching 2e77, whose crossing came out at the
+        // part's end). The crossing is placed along the edge instead, at the window's own
+        // magnitude, from the exact line of `s`, and measured along `frame`.
+        let (fa, fb) = (orient2d(s.a, s.b, e.a), orient2d(s.a, s.b, e.b));
+        let u = fa / (fa - fb);
+        let at = if u.is_finite() { e.a.lerp(e.b, u.clamp(0.0, 1.0)) } else { e.a.lerp(e.b, 0.5) };
+        return t_of(frame, at);
+    }
     // From the edge's line function at the ends, each accurate to about an ulp of itself: the
     // plain cross products cancel for a segment nearly parallel to the edge (found by the
     // `line_clippers` fuzz target: segments along sliver windows 1e-16 wide).
@@ -131,11 +153,11 @@ fn crossing_t(s: Segment, e: Segment) -> f64 {
 /// placed inside the run and rounded cannot decide this where the window is thinner than an ulp
 /// (found by the `line_clippers` fuzz target: a segment running 1e-16 inside a sliver window,
 /// whose rounded midpoint fell outside).
-fn run_parity(window: &Polygons, s: Segment, tb: f64) -> bool {
+fn run_parity(window: &Polygons, (s, frame): (Segment, Segment), tb: f64) -> bool {
     let above = |p: Point| orient(s.a, s.b, p) == Orientation::CounterClockwise;
     let mut inside = false;
     for e in window.edges() {
-        if above(e.a) != above(e.b) && crosses_beyond(s, e, tb) {
+        if above(e.a) != above(e.b) && crosses_beyond((s, frame), e, tb) {
             inside = !inside;
         }
     }
@@ -143,15 +165,15 @@ fn run_parity(window: &Polygons, s: Segment, tb: f64) -> bool {
 }
 
 /// For an edge `e` whose ends are on opposite sides of the line of `s` (a point on it counting as
-/// below): whether it meets that line at or beyond parameter `tb`.
-fn crosses_beyond(s: Segment, e: Segment, tb: f64) -> bool {
+/// below): whether it meets that line at or beyond parameter `tb` (along `frame`).
+fn crosses_beyond((s, frame): (Segment, Segment), e: Segment, tb: f64) -> bool {
     let on_line = [e.a, e.b].into_iter().find(|&p| orient(s.a, s.b, p) == Orientation::Collinear);
     if let Some(v) = on_line {
-        return if on_segment(s, v) { t_of(s, v) >= tb } else { beyond_b(s, v) };
+        return if on_segment(s, v) { t_of(frame, v) >= tb } else { beyond_b(s, v) };
     }
     match segment_intersection(s, e) {
-        SegmentIntersection::Crossing(_) => crossing_t(s, e) >= tb,
-        SegmentIntersection::Touching(p) => t_of(s, p) >= tb,
+        SegmentIntersection::Crossing(_) => crossing_t((s, frame), e) >= tb,
+        SegmentIntersection::Touching(p) => t_of(frame, p) >= tb,
         // Off the segment: `a` and `b` are on one side of the edge's line, and the crossing is
         // beyond `b` when `b` is the nearer (accurate magnitudes; equal ones would be parallel).
         _ => orient2d(e.a, e.b, s.b).abs() < orient2d(e.a, e.b, s.a).abs(),
@@ -169,21 +191,24 @@ fn on_segment(s: Segment, p: Point) -> bool {
     s.bounds().contains(p)
 }
 
-/// Whether the run `(ta, tb)` of `s`, which meets no edge inside, is in the closed window.
-fn run_is_visible(window: &Polygons, s: Segment, ta: f64, tb: f64, overlaps: &[(f64, f64)]) -> bool {
+/// Whether the run `(ta, tb)` of `s` (along `frame`), which meets no edge inside, is in the closed window.
+fn run_is_visible(window: &Polygons, s: (Segment, Segment), ta: f64, tb: f64, overlaps: &[(f64, f64)]) -> bool {
     if overlaps.iter().any(|&(oa, ob)| oa <= ta && tb <= ob) {
         return true; // along an edge: boundary
     }
     run_parity(window, s, tb)
 }
 
-/// Each segment's pieces as parameter intervals `(t(piece.a), t(piece.b))` on that segment, in
-/// the order given; one list per segment.
-pub fn pieces_to_intervals(segments: &[Segment], pieces: &[VisiblePiece]) -> Vec<Vec<(f64, f64)>> {
+/// Each segment's pieces as parameter intervals `(t(piece.a), t(piece.b))`, in the order given;
+/// one list per segment. The parameters run along each segment's part near the window of
+/// bounding box `window` ([`Segment::part_near`]: the segment itself unless it reaches far past
+/// the window), as [`visible_intervals_along`] gives them.
+pub fn pieces_to_intervals(window: &Rect, segments: &[Segment], pieces: &[VisiblePiece]) -> Vec<Vec<(f64, f64)>> {
     let mut out = vec![Vec::new(); segments.len()];
     for p in pieces {
         if let Some(s) = segments.get(p.segment) {
-            out[p.segment].push((t_of_piece(s, p.piece.a), t_of_piece(s, p.piece.b)));
+            let frame = s.part_near(window);
+            out[p.segment].push((t_of_piece(&frame, p.piece.a), t_of_piece(&frame, p.piece.b)));
         }
     }
     out
@@ -200,7 +225,9 @@ fn t_of_piece(s: &Segment, p: Point) -> f64 {
 }
 
 /// Checks a clipper's pieces for a batch: segment indices valid and in input order; each piece
-/// of positive length, on its segment (within `t_tolerance` of its length), running its way,
+/// of positive length, on its segment (within `t_tolerance` of its length; of the length of its
+/// part near the window for a segment reaching far past it, as everything measured along such
+/// a segment: [`visible_intervals_along`]), running its way,
 /// inside `[0, 1]`; a segment's pieces in increasing `t`, apart (pieces that meet exactly should
 /// have been merged); and, as `t`-intervals, equal to [`visible_intervals`] within
 /// `t_tolerance` (ends may differ by it, and gaps and intervals up to it long may be on one side
@@ -214,9 +241,12 @@ pub fn check_line_batch(
 ) -> Result<(), LineFailure> {
     let bad = |why: String| Err(LineFailure::BadPiece(why));
     let window_bounds = window.bounds();
+    // Positions along each segment are measured on its part near the window (itself unless it
+    // reaches far past the window), where the window's size is many steps of the parameter.
+    let frames: Vec<Segment> = segments.iter().map(|s| s.part_near(&window_bounds)).collect();
     let mut last_segment = 0;
     for (k, p) in pieces.iter().enumerate() {
-        let Some(s) = segments.get(p.segment) else {
+        let Some(s) = frames.get(p.segment) else {
             return bad(format!("piece {k} names segment {} of a batch of {}", p.segment, segments.len()));
         };
         if p.segment < last_segment {
@@ -254,10 +284,10 @@ pub fn check_line_batch(
             }
         }
     }
-    let got = pieces_to_intervals(segments, pieces);
-    for (i, s) in segments.iter().enumerate() {
-        let expected = visible_intervals(window, *s);
-        if !same_intervals(&expected, &got[i], parameter_tolerance(&window_bounds, *s, t_tolerance)) {
+    let got = pieces_to_intervals(&window_bounds, segments, pieces);
+    for (i, (s, frame)) in segments.iter().zip(&frames).enumerate() {
+        let expected = visible_intervals_along(window, *s, *frame);
+        if !same_intervals(&expected, &got[i], parameter_tolerance(&window_bounds, *frame, t_tolerance)) {
             return Err(LineFailure::WrongPieces { segment: i, expected, got: got[i].clone() });
         }
     }

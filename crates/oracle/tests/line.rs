@@ -78,7 +78,10 @@ fn batch_check_accepts_right_pieces_and_catches_wrong_ones() {
     let segs = [seg(-10.0, 20.0, 40.0, 20.0), seg(5.0, 5.0, 25.0, 5.0), seg(50.0, 0.0, 60.0, 0.0)];
     let right = pieces(&segs, &[&[(0.2, 0.4), (0.6, 0.8)], &[(0.0, 1.0)], &[]]);
     check_line_batch(&w, &segs, &right, LINE_T_TOLERANCE).unwrap();
-    assert_eq!(pieces_to_intervals(&segs, &right), vec![vec![(0.2, 0.4), (0.6, 0.8)], vec![(0.0, 1.0)], vec![]]);
+    assert_eq!(
+        pieces_to_intervals(&w.bounds(), &segs, &right),
+        vec![vec![(0.2, 0.4), (0.6, 0.8)], vec![(0.0, 1.0)], vec![]]
+    );
 
     // A missing piece.
     let missing = pieces(&segs, &[&[(0.2, 0.4)], &[(0.0, 1.0)], &[]]);

@@ -19,7 +19,7 @@ fn same(a: &[(f64, f64)], b: &[(f64, f64)]) -> bool {
 fn intervals(c: &dyn LineClipper, w: &Polygons, s: &[Segment]) -> Vec<Vec<(f64, f64)>> {
     let mut out = Vec::new();
     c.prepare(w).unwrap().clip_batch(s, &mut out).unwrap();
-    pieces_to_intervals(s, &out)
+    pieces_to_intervals(&w.bounds(), s, &out)
 }
 
 fn main() {

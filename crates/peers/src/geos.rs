@@ -1,7 +1,7 @@
 //! GEOS (the `geos` crate against the system libgeos) as a polygon clipper.
 
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, Point, PolygonCapabilities, PolygonClipper, Polygons, Ring,
+    BoolOp, ClipError, FailureKind, FillRule, Operand, Point, PolygonCapabilities, PolygonClipper, Polygons, Ring,
     validate_polygons, winding_number,
 };
 use geos::{CoordSeq, Geom, Geometry, GeometryTypes};
@@ -35,7 +35,7 @@ impl GeosClipper {
 }
 
 fn failed(e: geos::Error) -> ClipError {
-    ClipError::Failed { clipper: NAME, reason: format!("GEOS: {e}") }
+    ClipError::Failed { clipper: NAME, kind: FailureKind::Internal, reason: format!("GEOS: {e}") }
 }
 
 /// The region `polygons` covers under `fill`, as a valid GEOS polygon or multipolygon.

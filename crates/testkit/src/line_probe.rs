@@ -36,7 +36,7 @@ pub fn seg(ax: f64, ay: f64, bx: f64, by: f64) -> Segment {
 pub fn clip(clipper: &dyn LineClipper, w: &Polygons, s: Segment) -> Vec<(f64, f64)> {
     let mut out = Vec::new();
     clipper.prepare(w).expect("window accepted").clip_batch(&[s], &mut out).expect("finite segment");
-    let intervals = pieces_to_intervals(&[s], &out).pop().unwrap_or_default();
+    let intervals = pieces_to_intervals(&w.bounds(), &[s], &out).pop().unwrap_or_default();
     for (piece, &(ta, tb)) in out.iter().zip(&intervals) {
         assert!(ta < tb, "{}: piece {piece:?} of {s:?} is reversed or empty", clipper.name());
     }
@@ -328,6 +328,10 @@ macro_rules! singular_case_tests {
             a_convex_window_with_collinear_vertices CollinearVertices,
             several_rings_under_even_odd SeveralRings,
         );
+        #[test]
+        fn segments_reaching_far_past_the_window() {
+            $crate::line_probe::check_far_segments_of(&[$($clipper),+]);
+        }
     };
     (@each $clippers:tt $($test:ident $kind:ident,)+) => {
         $(
@@ -337,6 +341,104 @@ macro_rules! singular_case_tests {
             }
         )+
     };
+}
+
+/// A segment reaching far past a small window, and its visible pieces as points.
+pub struct FarCase {
+    /// What it exercises.
+    pub name: &'static str,
+    /// The window, read under even-odd.
+    pub window: Polygons,
+    /// The segment.
+    pub segment: Segment,
+    /// Its visible pieces, in order along the segment.
+    pub pieces: Vec<(Point, Point)>,
+}
+
+/// Segments whose ends lie far beyond a window 10 wide (at ±1e150, the largest coordinates
+/// accepted, at ±1e17 and at ±2^60), through it, along its edge, from inside it and past it. A
+/// parameter along the whole segment cannot tell the window's sides apart (at ±1e17 the window
+/// is 5e-17 of the segment, less than an ulp of t = 0.5), which made every line clipper here
+/// answer nothing for the first (issue 28); the pieces are exact here, as points.
+pub fn far_cases() -> Vec<FarCase> {
+    let p = Point::new;
+    let square = window(&[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]);
+    // The U of the singular cases, scaled to 10 wide: arms x in [0,10/3] and [20/3,10].
+    let u = Polygons::from(Ring::new(U.iter().map(|&(x, y)| p(x * 10.0 / 3.0, y * 10.0 / 3.0)).collect()));
+    let (third, two_thirds) = (10.0 / 3.0, 20.0 / 3.0);
+    let far = 2f64.powi(60);
+    let case = |name, window: &Polygons, segment, pieces| FarCase { name, window: window.clone(), segment, pieces };
+    vec![
+        case("horizontal, ends at ±1e150", &square, seg(-1e150, 2.0, 1e150, 2.0), vec![(p(0.0, 2.0), p(10.0, 2.0))]),
+        case("horizontal, ends at ±1e17", &square, seg(-1e17, 2.0, 1e17, 2.0), vec![(p(0.0, 2.0), p(10.0, 2.0))]),
+        case("vertical, ends at ±1e150", &square, seg(7.0, 1e150, 7.0, -1e150), vec![(p(7.0, 10.0), p(7.0, 0.0))]),
+        case(
+            "diagonal through two corners, ends at ±1e150",
+            &square,
+            seg(-1e150, -1e150, 1e150, 1e150),
+            vec![(p(0.0, 0.0), p(10.0, 10.0))],
+        ),
+        case(
+            "slope 1/2, ends at ±2^60",
+            &square,
+            seg(-far, -far / 2.0, far, far / 2.0),
+            vec![(p(0.0, 0.0), p(10.0, 5.0))],
+        ),
+        case("along an edge, ends at ±1e150", &square, seg(-1e150, 0.0, 1e150, 0.0), vec![(p(0.0, 0.0), p(10.0, 0.0))]),
+        case("from inside to 1e150", &square, seg(5.0, 5.0, 1e150, 5.0), vec![(p(5.0, 5.0), p(10.0, 5.0))]),
+        case("passing the window at 1e150", &square, seg(-1e150, 20.0, 1e150, 20.0), vec![]),
+        case(
+            "through both arms of a U, ends at ±1e150",
+            &u,
+            seg(-1e150, 8.0, 1e150, 8.0),
+            vec![(p(0.0, 8.0), p(third, 8.0)), (p(two_thirds, 8.0), p(10.0, 8.0))],
+        ),
+    ]
+}
+
+/// Checks `clipper` on every [`far_cases`] case whose window it takes, both window orientations
+/// and both segment directions: its pieces must be the expected ones within 1e-9 of the window's
+/// size, and [`check_line_batch`] must accept them and refuse no answer at all where there are
+/// pieces. Panics naming the case otherwise.
+pub fn check_far_segments(clipper: &dyn LineClipper) {
+    for case in far_cases().into_iter().filter(|c| clipper.capabilities().window.accepts(&c.window)) {
+        let tol = 1e-9 * case.window.bounds().extent();
+        for win in [case.window.clone(), reversed(&case.window)] {
+            for (s, backwards) in [(case.segment, false), (case.segment.reversed(), true)] {
+                let tag = format!("{} ({}{})", case.name, clipper.name(), if backwards { ", reversed" } else { "" });
+                let mut out = Vec::new();
+                clipper.prepare(&win).expect("window accepted").clip_batch(&[s], &mut out).expect("finite segment");
+                let mut expected = case.pieces.clone();
+                if backwards {
+                    expected = expected.into_iter().rev().map(|(a, b)| (b, a)).collect();
+                }
+                let close = |a: Point, b: Point| (a.x - b.x).abs() <= tol && (a.y - b.y).abs() <= tol;
+                let same = out.len() == expected.len()
+                    && out.iter().zip(&expected).all(|(got, &(a, b))| close(got.piece.a, a) && close(got.piece.b, b));
+                assert!(
+                    same,
+                    "{tag}: got {:?}, expected {expected:?}",
+                    out.iter().map(|p| p.piece).collect::<Vec<_>>()
+                );
+                if let Err(failure) = check_line_batch(&win, &[s], &out, LINE_T_TOLERANCE) {
+                    panic!("{tag}: the oracle refuses the right pieces: {failure}");
+                }
+                if !expected.is_empty() {
+                    assert!(
+                        check_line_batch(&win, &[s], &[], LINE_T_TOLERANCE).is_err(),
+                        "{tag}: the oracle takes no answer"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// [`check_far_segments`] for each of `clippers`.
+pub fn check_far_segments_of(clippers: &[&dyn LineClipper]) {
+    for c in clippers {
+        check_far_segments(*c);
+    }
 }
 
 /// Checks that `clipper` turns bad input into an error or nothing: a non-finite segment fails
@@ -366,6 +468,32 @@ pub fn check_bad_input(clipper: &dyn LineClipper) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The oracle judges the far segments: their exact pieces pass, and no answer fails (issue 28).
+    #[test]
+    fn the_oracle_judges_segments_reaching_far_past_the_window() {
+        for c in far_cases() {
+            let pieces: Vec<clip_core::VisiblePiece> = c
+                .pieces
+                .iter()
+                .map(|&(a, b)| clip_core::VisiblePiece { segment: 0, piece: Segment::new(a, b) })
+                .collect();
+            assert_eq!(check_line_batch(&c.window, &[c.segment], &pieces, LINE_T_TOLERANCE), Ok(()), "{}", c.name);
+            if !pieces.is_empty() {
+                assert!(check_line_batch(&c.window, &[c.segment], &[], LINE_T_TOLERANCE).is_err(), "{}", c.name);
+                let mut short = pieces.clone();
+                short[0].piece.b = Point::new(
+                    (short[0].piece.a.x + short[0].piece.b.x) / 2.0,
+                    (short[0].piece.a.y + short[0].piece.b.y) / 2.0,
+                );
+                assert!(
+                    check_line_batch(&c.window, &[c.segment], &short, LINE_T_TOLERANCE).is_err(),
+                    "{}: half a piece",
+                    c.name
+                );
+            }
+        }
+    }
 
     #[test]
     fn every_case_agrees_with_the_oracle() {

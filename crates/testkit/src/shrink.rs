@@ -1,6 +1,9 @@
-//! Shrinks a failing case to a smaller one that still fails: deterministic, bounded work.
+//! Shrinks a failing case to a smaller one that still fails the same way: deterministic, bounded
+//! work.
 //!
-//! Greedy passes, repeated while any of them helps: drop whole rings (or segments), drop runs
+//! The caller says how a case fails (`None` when it passes); a smaller candidate is kept only when
+//! it fails as the original does, so a hang never shrinks to a crash, nor a wrong answer to a
+//! refusal. Greedy passes, repeated while any of them helps: drop whole rings (or segments), drop runs
 //! of vertices (halves first, down to single vertices), then snap every coordinate to the
 //! coarsest grid of spacing `2^k` (from 1024 down to 2^-20) on which the case still fails. A
 //! candidate that is not valid input (a ring left with fewer than 3 distinct points, an empty
@@ -24,14 +27,29 @@ impl Budget {
     }
 }
 
-/// Reduces a failing polygon case while `still_fails(subject, clip)` holds. Returns the
-/// smallest failing case found (the input itself if nothing smaller fails).
-pub fn shrink_polygons(
+/// `failure` as a predicate: true for a case that fails the way the original does. `None` when the
+/// original does not fail (then nothing smaller is kept).
+fn failing_alike<A: ?Sized, B: ?Sized, F: PartialEq>(
+    original: (&A, &B),
+    mut failure: impl FnMut(&A, &B) -> Option<F>,
+) -> Option<impl FnMut(&A, &B) -> bool> {
+    let found = failure(original.0, original.1)?;
+    Some(move |a: &A, b: &B| failure(a, b).is_some_and(|f| f == found))
+}
+
+/// Reduces a failing polygon case while it fails as it does now: `failure(subject, clip)` says
+/// how a case fails (`None` when it passes). Returns the smallest case found that fails the same
+/// way (the input itself if none smaller does, or if it does not fail).
+pub fn shrink_polygons<F: PartialEq>(
     subject: &Polygons,
     clip: &Polygons,
-    mut still_fails: impl FnMut(&Polygons, &Polygons) -> bool,
+    failure: impl FnMut(&Polygons, &Polygons) -> Option<F>,
 ) -> (Polygons, Polygons) {
     let mut budget = Budget(MAX_TRIES);
+    budget.take();
+    let Some(mut still_fails) = failing_alike((subject, clip), failure) else {
+        return (subject.clone(), clip.clone());
+    };
     let mut best = [subject.clone(), clip.clone()];
     let valid = |p: &[Polygons; 2]| {
         validate_polygons(&p[0], Operand::Subject).is_ok() && validate_polygons(&p[1], Operand::Clip).is_ok()
@@ -83,14 +101,19 @@ pub fn shrink_polygons(
     }
 }
 
-/// Reduces a failing line case while `still_fails(window, segments)` holds: drops segments,
-/// window rings and window vertices, then snaps coordinates, like [`shrink_polygons`].
-pub fn shrink_segments(
+/// Reduces a failing line case while it fails as it does now (`failure(window, segments)`, as
+/// for [`shrink_polygons`]): drops segments, window rings and window vertices, then snaps
+/// coordinates.
+pub fn shrink_segments<F: PartialEq>(
     window: &Polygons,
     segments: &[Segment],
-    mut still_fails: impl FnMut(&Polygons, &[Segment]) -> bool,
+    failure: impl FnMut(&Polygons, &[Segment]) -> Option<F>,
 ) -> (Polygons, Vec<Segment>) {
     let mut budget = Budget(MAX_TRIES);
+    budget.take();
+    let Some(mut still_fails) = failing_alike((window, segments), failure) else {
+        return (window.clone(), segments.to_vec());
+    };
     let mut best = (window.clone(), segments.to_vec());
     let mut attempt = |c: (Polygons, Vec<Segment>), best: &mut (Polygons, Vec<Segment>), budget: &mut Budget| {
         if c != *best && validate_window(&c.0).is_ok() && budget.take() && still_fails(&c.0, &c.1) {

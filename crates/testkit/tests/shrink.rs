@@ -6,9 +6,9 @@ use clip_testkit::workload::{line_case, polygon_case};
 
 /// A "bug" that fires whenever some subject vertex lies inside the clip's bounding box and
 /// the clip has a vertex left of x = 500.
-fn fake_bug(s: &Polygons, c: &Polygons) -> bool {
+fn fake_bug(s: &Polygons, c: &Polygons) -> Option<()> {
     let b = c.bounds();
-    s.points().any(|&p| b.contains(p)) && c.points().any(|p| p.x < 500.0)
+    (s.points().any(|&p| b.contains(p)) && c.points().any(|p| p.x < 500.0)).then_some(())
 }
 
 #[test]
@@ -16,7 +16,7 @@ fn polygon_cases_shrink_and_keep_failing() {
     let mut shrunk_some = false;
     for i in 0..6 {
         let case = polygon_case("multi", 3, i, WindowKind::Any).unwrap();
-        if !fake_bug(&case.subject, &case.clip) {
+        if fake_bug(&case.subject, &case.clip).is_none() {
             continue;
         }
         let mut calls = 0;
@@ -24,7 +24,7 @@ fn polygon_cases_shrink_and_keep_failing() {
             calls += 1;
             fake_bug(s, c)
         });
-        assert!(fake_bug(&s, &c));
+        assert!(fake_bug(&s, &c).is_some());
         assert!(calls <= MAX_TRIES);
         assert!(s.vertex_count() <= case.subject.vertex_count() && c.vertex_count() <= case.clip.vertex_count());
         // One subject triangle is all this bug needs; the clip may keep a second ring for
@@ -42,14 +42,14 @@ fn polygon_cases_shrink_and_keep_failing() {
 #[test]
 fn coordinates_get_snapped() {
     let case = polygon_case("star", 1, 0, WindowKind::Any).unwrap();
-    let (s, _) = shrink_polygons(&case.subject, &case.clip, |s, _| s.signed_area() > 1000.0);
+    let (s, _) = shrink_polygons(&case.subject, &case.clip, |s, _| (s.signed_area() > 1000.0).then_some(()));
     assert!(s.points().all(|p| p.x.fract() == 0.0 && p.y.fract() == 0.0), "{s:?}");
 }
 
 #[test]
 fn a_case_that_stops_failing_is_returned_whole() {
     let case = polygon_case("star", 1, 0, WindowKind::Any).unwrap();
-    let (s, c) = shrink_polygons(&case.subject, &case.clip, |_, _| false);
+    let (s, c) = shrink_polygons(&case.subject, &case.clip, |_, _| None::<()>);
     assert_eq!((s, c), (case.subject, case.clip));
 }
 
@@ -59,7 +59,7 @@ fn segment_batches_shrink() {
     // A "bug" on any segment crossing the vertical line x = 400 above y = 300.
     let bad = |s: &Segment| (s.a.x - 400.0) * (s.b.x - 400.0) < 0.0 && s.a.y.min(s.b.y) > 300.0;
     assert!(case.segments.iter().any(bad));
-    let (w, segs) = shrink_segments(&case.window, &case.segments, |_, s| s.iter().any(bad));
+    let (w, segs) = shrink_segments(&case.window, &case.segments, |_, s| s.iter().any(bad).then_some(()));
     assert_eq!(segs.len(), 1);
     assert!(bad(&segs[0]));
     assert_eq!(w.vertex_count(), 3);
@@ -74,7 +74,26 @@ fn the_budget_bounds_the_work() {
     // Fails on every other call: the shrinker must still stop.
     shrink_polygons(&case.subject, &case.clip, |_, _| {
         calls += 1;
-        calls % 2 == 0
+        (calls % 2 == 1).then_some(())
     });
     assert!(calls <= MAX_TRIES);
+}
+
+/// A hang found on a large case must not "shrink" to a crash that a smaller case shows instead:
+/// the shrunk case fails the way the original did (issue 28).
+#[test]
+fn a_shrunk_case_fails_the_same_way_as_the_original() {
+    #[derive(Debug, PartialEq)]
+    enum How {
+        Hang,
+        Crash,
+    }
+    let case = polygon_case("multi", 3, 0, WindowKind::Any).unwrap();
+    // Hangs while the subject has more than 8 vertices, crashes below: every step down from the
+    // original that keeps failing somehow ends in the crash.
+    let how = |s: &Polygons, _: &Polygons| Some(if s.vertex_count() > 8 { How::Hang } else { How::Crash });
+    assert_eq!(how(&case.subject, &case.clip), Some(How::Hang), "{}", case.subject.vertex_count());
+    let (s, c) = shrink_polygons(&case.subject, &case.clip, how);
+    assert_eq!(how(&s, &c), Some(How::Hang), "{} vertices", s.vertex_count());
+    assert!(s.vertex_count() < case.subject.vertex_count(), "it still shrinks");
 }

@@ -203,7 +203,7 @@ impl PreparedVirtualBox {
         if sum.unsigned_abs() as usize == self.points.len() {
             return Stage::CodeSum;
         }
-        let frame = LineFrame::new(s);
+        let frame = LineFrame::near(s, &self.meb);
         intersect(&self.points, &self.rings, &scratch.codes, &scratch.sides, &frame, &mut scratch.display);
         Stage::Intersected(scratch.display.emit(index, &frame, out))
     }

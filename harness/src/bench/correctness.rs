@@ -66,7 +66,7 @@ impl Judge {
         if region_area_work(&full) <= CHECK_WORK {
             return match polygon_oracle(entry, subject, clip, op, fill, output) {
                 Ok(_) => Verdict::Right,
-                Err(why) => Verdict::Wrong(why),
+                Err(why) => Verdict::Wrong(why.to_string()),
             };
         }
         let exact = *self.exact_areas.entry((slot, op, fill)).or_insert_with(|| {

@@ -24,8 +24,16 @@ use crate::measure::raw::write_csv;
 use crate::registry::Registry;
 use crate::results_files::bench::{BASELINE, CSV, META, TEXT_GROUP, write_memory};
 
+/// Why `bench` has no `--partition`, for `clipbench bench --help`.
+const NOT_PARTITIONED: &str = "\
+bench has no --partition (verify and conformance have one): its results are ratios of times measured in \
+one run on one machine, interleaved round by round, and times taken on different machines, or at different \
+moments of a shared one, cannot be compared. Split a bench by --workload and --clipper on one machine \
+instead; Clipper2, the baseline, is timed in every part.";
+
 /// Arguments of `clipbench bench`.
 #[derive(Debug, clap::Args)]
+#[command(after_help = NOT_PARTITIONED)]
 pub struct BenchArgs {
     /// Fewer sizes (large cases up to 10^5 vertices), rounds and a shorter cap: a few minutes.
     #[arg(long)]

@@ -54,6 +54,11 @@ pub struct ConformanceArgs {
     /// CLIPBENCH_TESTDATA names).
     #[arg(long, value_name = "DIR", default_value_os_t = clip_testkit::testdata_dir())]
     pub testdata: PathBuf,
+    /// Run only part K of N of the suite's cases (as 3/8), as `verify --partition`: case j of
+    /// the suite (in its order, after --case, from 0) is in part j mod N + 1, so N jobs run the
+    /// whole suite between them; their per-clipper counts add up to a whole run's.
+    #[arg(long, value_name = "K/N")]
+    pub partition: Option<crate::partition::Partition>,
     /// External clippers (docs/PROTOCOL.md).
     #[command(flatten)]
     pub external: crate::external::ExternalArgs,
@@ -94,6 +99,9 @@ pub fn run(args: &ConformanceArgs, registry: Registry) -> Result<ExitCode, CliEr
         if cases.is_empty() {
             return Err(CliError::usage(format!("{suite_name} has no case '{name}'")));
         }
+    }
+    if let Some(part) = args.partition {
+        cases = cases.into_iter().enumerate().filter(|(j, _)| part.keeps(*j)).map(|(_, c)| c).collect();
     }
     let lines = args.suite == Suite::Clipper2Lines;
     let clippers: Vec<(&'static str, Origin)> = if lines {
@@ -157,7 +165,7 @@ fn judge_polygon(entry: &PolygonEntry, case: &SuiteCase) -> Verdict {
     }
     let output = match run_polygon(entry, subject, clip, op, fill) {
         Ok(output) => output,
-        Err(message) => return Verdict::Fail("a result".into(), message),
+        Err(failure) => return Verdict::Fail("a result".into(), failure.message),
     };
     let judged = match expected {
         PolygonExpectation::Clipper2 { number, area, count } => {
@@ -202,7 +210,7 @@ fn judge_line(entry: &LineEntry, case: &SuiteCase) -> Verdict {
     }
     match run_line(entry, window, segments).and_then(|pieces| line_oracle(entry, window, segments, &pieces)) {
         Ok(()) => Verdict::Pass(Passed::default()),
-        Err(message) => Verdict::Fail("the exact visible intervals".into(), message),
+        Err(failure) => Verdict::Fail("the exact visible intervals".into(), failure.message),
     }
 }
 

@@ -34,9 +34,9 @@ pub struct ExternalArgs {
     #[arg(long = "clippers", value_name = "FILE")]
     pub clippers_file: Option<PathBuf>,
     /// Seconds an external clipper may take to answer one request (or its handshake) before it
-    /// is killed, the case failed, and a fresh process started.
-    #[arg(long, value_name = "SECONDS", default_value_t = 20.0)]
-    pub call_timeout: f64,
+    /// is killed, the case failed, and a fresh process started: more than 0, at most a day.
+    #[arg(long, value_name = "SECONDS", default_value = DEFAULT_CALL_TIMEOUT, value_parser = parse_call_timeout)]
+    pub call_timeout: Duration,
     /// Judge external clippers like this project's own: their failures fail the run.
     #[arg(long)]
     pub strict: bool,
@@ -54,10 +54,7 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
     if specs.is_empty() {
         return Ok(registry);
     }
-    if !(args.call_timeout.is_finite() && args.call_timeout > 0.0) {
-        return Err(CliError::usage("--call-timeout must be a positive number of seconds"));
-    }
-    let timeout = Duration::from_secs_f64(args.call_timeout);
+    let timeout = args.call_timeout;
     let origin = if args.strict { Origin::Strict } else { Origin::External };
     for spec in specs {
         let taken = registry.names();
@@ -72,6 +69,10 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
             CliError::usage(format!("external clipper '{}' ({}): {what}", spec.name, spec::shown(&spec.command)))
         };
         let (worker, handshake) = Worker::start(&spec, timeout).map_err(blame)?;
+        let mut option = spec.option();
+        if parse_call_timeout(DEFAULT_CALL_TIMEOUT).is_ok_and(|default| timeout != default) {
+            option.push_str(&format!(" --call-timeout {}", timeout.as_secs_f64()));
+        }
         let (polygon, line) = declared(&handshake).map_err(blame)?;
         // The registry hands out `&'static str` names and capability slices: leaked once per
         // external clipper, for a registry that lives as long as the run.
@@ -83,6 +84,7 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
                 origin,
                 tolerance: GEO_TOLERANCE,
                 own_time: Some(Arc::clone(&pool.own_time)),
+                external: Some(option.clone()),
             });
         }
         if let Some(capabilities) = line {
@@ -90,10 +92,29 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
                 clipper: Box::new(ExternalLine { pool: Arc::clone(&pool), capabilities }),
                 origin,
                 tolerance: GEO_TOLERANCE,
+                external: Some(option.clone()),
             });
         }
     }
     Ok(registry)
+}
+
+/// `--call-timeout` when none is given, in seconds.
+pub const DEFAULT_CALL_TIMEOUT: &str = "20";
+
+/// The longest `--call-timeout`: a day is longer than any call worth waiting for, and far from
+/// the largest time a `Duration` holds (about 1.8e19 s), past which the conversion fails.
+pub const MAX_CALL_TIMEOUT_SECONDS: f64 = 86_400.0;
+
+/// `--call-timeout`'s value: a number of seconds above 0 and at most [`MAX_CALL_TIMEOUT_SECONDS`].
+fn parse_call_timeout(text: &str) -> Result<Duration, String> {
+    let seconds: f64 = text.trim().parse().map_err(|_| format!("'{text}' is not a number of seconds"))?;
+    if !(seconds > 0.0 && seconds <= MAX_CALL_TIMEOUT_SECONDS) {
+        return Err(format!(
+            "{text} seconds: the time limit must be above 0 and at most {MAX_CALL_TIMEOUT_SECONDS} (a day)"
+        ));
+    }
+    Ok(Duration::from_secs_f64(seconds))
 }
 
 /// The capabilities a handshake declares, or what is wrong with it.

@@ -9,6 +9,8 @@ use std::sync::{Arc, Mutex};
 use std::thread;
 use std::time::{Duration, Instant};
 
+use clip_core::FailureKind;
+
 use super::protocol::Handshake;
 use super::spec::ExternalSpec;
 
@@ -25,7 +27,7 @@ const EXIT_GRACE: Duration = Duration::from_millis(500);
 pub struct Worker {
     child: Child,
     stdin: Option<ChildStdin>,
-    lines: Receiver<Result<String, String>>,
+    lines: Receiver<Result<String, (FailureKind, String)>>,
     stderr: Arc<Mutex<VecDeque<String>>>,
 }
 
@@ -33,53 +35,71 @@ impl Worker {
     /// Starts the command and reads its handshake line; the error says what went wrong in the
     /// clipper's own words where it gave any.
     pub fn start(spec: &ExternalSpec, timeout: Duration) -> Result<(Worker, Handshake), String> {
+        Worker::started(spec, timeout).map_err(|(_, why)| why)
+    }
+
+    /// [`Worker::start`], the error with how the process failed.
+    pub fn started(spec: &ExternalSpec, timeout: Duration) -> Result<(Worker, Handshake), (FailureKind, String)> {
         let mut command = Command::new(&spec.command[0]);
         command.args(&spec.command[1..]).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped());
         if let Some(dir) = &spec.dir {
             command.current_dir(dir);
         }
-        let mut child =
-            command.spawn().map_err(|e| format!("cannot start {}: {e}", super::spec::shown(&spec.command)))?;
+        let mut child = command
+            .spawn()
+            .map_err(|e| (FailureKind::Crashed, format!("cannot start {}: {e}", super::spec::shown(&spec.command))))?;
         let (Some(stdin), Some(stdout), Some(stderr)) = (child.stdin.take(), child.stdout.take(), child.stderr.take())
         else {
             let _ = child.kill();
-            return Err("its standard streams could not be connected".into());
+            return Err((FailureKind::Crashed, "its standard streams could not be connected".into()));
         };
         let mut worker = Worker { child, stdin: Some(stdin), lines: read_lines(stdout), stderr: keep_tail(stderr) };
-        let line = worker.next_line(timeout).map_err(|e| format!("at the handshake, {e}"))?;
+        let line = worker.next_line(timeout).map_err(|(kind, e)| (kind, format!("at the handshake, {e}")))?;
         let handshake: Handshake = serde_json::from_str(&line).map_err(|e| {
-            format!("its handshake is not a protocol handshake ({e}): {}{}", clipped(&line), worker.stderr_words())
+            let why =
+                format!("its handshake is not a protocol handshake ({e}): {}{}", clipped(&line), worker.stderr_words());
+            (FailureKind::Garbled, why)
         })?;
         Ok((worker, handshake))
     }
 
-    /// Sends one request line and returns the next line the clipper writes.
-    pub fn exchange(&mut self, request: &str, timeout: Duration) -> Result<String, String> {
+    /// Sends one request line and returns the next line the clipper writes; the error says how
+    /// the process failed.
+    pub fn exchange(&mut self, request: &str, timeout: Duration) -> Result<String, (FailureKind, String)> {
         let sent = match self.stdin.as_mut() {
             Some(stdin) => {
                 stdin.write_all(request.as_bytes()).and_then(|()| stdin.write_all(b"\n")).and_then(|()| stdin.flush())
             }
-            None => return Err("its input is closed".into()),
+            None => return Err((FailureKind::Crashed, "its input is closed".into())),
         };
         if let Err(e) = sent {
             // It died before reading: say how, from its exit.
-            return Err(format!("the request could not be written ({e}); {}", self.death()));
+            return Err((FailureKind::Crashed, format!("the request could not be written ({e}); {}", self.death())));
         }
         self.next_line(timeout)
     }
 
     /// The next line of output, within `timeout`.
-    fn next_line(&mut self, timeout: Duration) -> Result<String, String> {
+    fn next_line(&mut self, timeout: Duration) -> Result<String, (FailureKind, String)> {
         match self.lines.recv_timeout(timeout) {
             Ok(Ok(line)) => Ok(line),
-            Ok(Err(problem)) => Err(format!("{problem}; {}", self.death())),
-            Err(RecvTimeoutError::Disconnected) => Err(self.death()),
+            Ok(Err((kind, problem))) => Err((kind, format!("{problem}; {}", self.death()))),
+            Err(RecvTimeoutError::Disconnected) => Err((FailureKind::Crashed, self.death())),
             Err(RecvTimeoutError::Timeout) => {
                 let _ = self.child.kill();
                 let _ = self.child.wait();
-                Err(format!("no answer within {:.1} s (killed){}", timeout.as_secs_f64(), self.stderr_words()))
+                let why = format!("no answer within {:.1} s (killed){}", timeout.as_secs_f64(), self.stderr_words());
+                Err((FailureKind::Hung, why))
             }
         }
+    }
+
+    /// Ends the process now, without the grace a well-behaved one gets at the end of a run: it
+    /// failed, and its replacement is wanted.
+    pub fn kill(mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+        self.stdin = None;
     }
 
     /// How the process ended (waiting briefly, then killing it), with its last words on stderr.
@@ -127,7 +147,7 @@ impl Drop for Worker {
 
 /// A thread reading stdout line by line into a channel; an error (end of output, an over-long
 /// line, bytes that are not UTF-8) is sent once and ends it.
-fn read_lines(stdout: impl Read + Send + 'static) -> Receiver<Result<String, String>> {
+fn read_lines(stdout: impl Read + Send + 'static) -> Receiver<Result<String, (FailureKind, String)>> {
     let (send, receive) = mpsc::channel();
     thread::spawn(move || {
         let mut reader = BufReader::new(stdout);
@@ -135,14 +155,14 @@ fn read_lines(stdout: impl Read + Send + 'static) -> Receiver<Result<String, Str
             let mut buf = Vec::new();
             let read = (&mut reader).take(MAX_LINE_BYTES + 1).read_until(b'\n', &mut buf);
             let item = match read {
-                Ok(0) => Err("it closed its output".to_owned()),
+                Ok(0) => Err((FailureKind::Crashed, "it closed its output".to_owned())),
                 Ok(_) if buf.last() != Some(&b'\n') && buf.len() as u64 > MAX_LINE_BYTES => {
-                    Err(format!("it wrote a line longer than {MAX_LINE_BYTES} bytes"))
+                    Err((FailureKind::Garbled, format!("it wrote a line longer than {MAX_LINE_BYTES} bytes")))
                 }
                 Ok(_) => String::from_utf8(buf)
                     .map(|s| s.trim_end_matches(['\n', '\r']).to_owned())
-                    .map_err(|_| "it wrote bytes that are not UTF-8".to_owned()),
-                Err(e) => Err(format!("its output could not be read ({e})")),
+                    .map_err(|_| (FailureKind::Garbled, "it wrote bytes that are not UTF-8".to_owned())),
+                Err(e) => Err((FailureKind::Crashed, format!("its output could not be read ({e})"))),
             };
             let last = item.is_err();
             if send.send(item).is_err() || last {

@@ -113,6 +113,69 @@ pub struct Reply {
     pub time_ns: Option<f64>,
 }
 
+/// How a reply line breaks the protocol.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Violation {
+    /// Not JSON, or not a reply's fields.
+    NotAReply {
+        /// What the JSON reader said.
+        problem: String,
+        /// The start of the line.
+        line: String,
+    },
+    /// A reply to another request.
+    WrongId {
+        /// The id in the reply.
+        answered: u64,
+        /// The id of the request.
+        asked: u64,
+    },
+    /// Not exactly one of `rings`, `pieces` and `error`.
+    NotOneResult {
+        /// The request's id.
+        id: u64,
+        /// The start of the line.
+        line: String,
+    },
+    /// A `time_ns` that is not a number of nanoseconds the call could have taken: negative, not
+    /// finite, or longer than the round trip it was part of.
+    ImpossibleTime {
+        /// The request's id.
+        id: u64,
+        /// The time given.
+        time_ns: f64,
+        /// The round trip the harness measured, in nanoseconds.
+        round_trip_ns: f64,
+    },
+}
+
+impl Violation {
+    /// True when the next line the process writes still answers the next request: the reply was
+    /// read whole and only says something impossible.
+    pub fn stream_in_step(&self) -> bool {
+        matches!(self, Violation::ImpossibleTime { .. })
+    }
+}
+
+impl std::fmt::Display for Violation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Violation::NotAReply { problem, line } => {
+                write!(f, "it answered something that is not a reply ({problem}): {line}")
+            }
+            Violation::WrongId { answered, asked } => write!(f, "it answered id {answered} to request {asked}"),
+            Violation::NotOneResult { id, line } => {
+                write!(f, "reply {id} must carry exactly one of rings, pieces and error: {line}")
+            }
+            Violation::ImpossibleTime { id, time_ns, round_trip_ns } => write!(
+                f,
+                "reply {id} gives time_ns {time_ns}: a time must be a number of nanoseconds from 0 to the call's \
+                 round trip ({round_trip_ns} ns)"
+            ),
+        }
+    }
+}
+
 /// Our rings as wire rings.
 pub fn to_wire(p: &Polygons) -> Vec<WireRing> {
     p.rings.iter().map(|r| r.points.iter().map(|q| [q.x, q.y]).collect()).collect()

@@ -15,6 +15,20 @@ pub struct ExternalSpec {
     pub command: Vec<String>,
     /// Working directory of the process (default: the harness's).
     pub dir: Option<PathBuf>,
+    /// The `--clippers` file it was read from, if any.
+    pub file: Option<PathBuf>,
+}
+
+impl ExternalSpec {
+    /// The option that registers it again, as a shell would need it typed: `--external
+    /// 'NAME=COMMAND'`, or `--clippers FILE` for one read from a file.
+    pub fn option(&self) -> String {
+        let quoted = |word: &str| shlex::try_quote(word).map_or_else(|_| word.to_owned(), |q| q.into_owned());
+        match &self.file {
+            Some(file) => format!("--clippers {}", quoted(&file.to_string_lossy())),
+            None => format!("--external {}", quoted(&format!("{}={}", self.name, shown(&self.command)))),
+        }
+    }
 }
 
 /// `NAME=COMMAND`, the command split into words with shell quoting rules.
@@ -24,7 +38,7 @@ pub fn parse_flag(text: &str) -> Result<ExternalSpec, CliError> {
     };
     let name = checked_name(name.trim()).map_err(|e| CliError::usage(format!("--external '{text}': {e}")))?;
     let command = split_command(command).map_err(|e| CliError::usage(format!("--external {name}: {e}")))?;
-    Ok(ExternalSpec { name, command, dir: None })
+    Ok(ExternalSpec { name, command, dir: None, file: None })
 }
 
 /// The clippers of a TOML file: `[[clipper]]` tables with `name`, `command` and optionally
@@ -33,8 +47,12 @@ pub fn parse_flag(text: &str) -> Result<ExternalSpec, CliError> {
 pub fn parse_file(path: &Path) -> Result<Vec<ExternalSpec>, CliError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| CliError::usage(format!("{}: cannot read it: {e}", path.display())))?;
-    parse_toml(&text, path.parent().unwrap_or(Path::new("")))
-        .map_err(|e| CliError::usage(format!("{}: {e}", path.display())))
+    let mut specs = parse_toml(&text, path.parent().unwrap_or(Path::new("")))
+        .map_err(|e| CliError::usage(format!("{}: {e}", path.display())))?;
+    for spec in &mut specs {
+        spec.file = Some(path.to_owned());
+    }
+    Ok(specs)
 }
 
 #[derive(Deserialize)]
@@ -68,7 +86,7 @@ fn parse_toml(text: &str, base: &Path) -> Result<Vec<ExternalSpec>, String> {
         }
         let command =
             split_command(table.command.get_ref()).map_err(|e| format!("{}: {e}", at(table.command.span().start)))?;
-        specs.push(ExternalSpec { name, command, dir: table.dir.map(|d| base.join(d)) });
+        specs.push(ExternalSpec { name, command, dir: table.dir.map(|d| base.join(d)), file: None });
     }
     Ok(specs)
 }
@@ -117,6 +135,18 @@ mod tests {
         assert!(parse_flag("a b=x").unwrap_err().message.contains("' '"));
         assert!(parse_flag("x=").unwrap_err().message.contains("empty"));
         assert!(parse_flag("x=python3 'open").unwrap_err().message.contains("quotes"));
+    }
+
+    #[test]
+    fn the_option_that_registers_a_clipper_again_splits_back_to_it() {
+        let s = parse_flag("shapely=python3 'my dir/clip.py' --fast").unwrap();
+        let option = s.option();
+        let words = shlex::split(&option).unwrap();
+        assert_eq!(words[0], "--external", "{option}");
+        assert_eq!(parse_flag(&words[1]).unwrap(), s);
+        let mut from_file = s.clone();
+        from_file.file = Some(PathBuf::from("my clippers.toml"));
+        assert_eq!(shlex::split(&from_file.option()).unwrap(), ["--clippers", "my clippers.toml"]);
     }
 
     #[test]

@@ -3,7 +3,10 @@
 //! not an error): the nesting is bounded here first. And it reads `NaN` or `inf` as a word and
 //! then reports a missing parenthesis: every coordinate is checked here to be a finite number,
 //! and the error names it and where it is. Nor does it look past the end of the first geometry:
-//! text after it is refused here rather than ignored.
+//! text after it is refused here rather than ignored. Its other messages name no place ("Invalid
+//! WKT format", "Missing closing parenthesis for type"): an empty file, a word that is no
+//! geometry type, a character that is not ASCII, a position of too many numbers and a parenthesis
+//! never closed are named here with their line and column.
 
 /// The deepest nesting of parentheses read: a MULTIPOLYGON's coordinates are 3 deep and each
 /// GEOMETRYCOLLECTION around it adds one, so this leaves room for any real file while staying
@@ -24,12 +27,44 @@ impl Token<'_> {
     }
 }
 
+/// The geometry types the wkt crate reads.
+const TYPES: [&str; 7] =
+    ["POINT", "LINESTRING", "POLYGON", "MULTIPOINT", "MULTILINESTRING", "MULTIPOLYGON", "GEOMETRYCOLLECTION"];
+
+/// Numbers a WKT position may hold: x y, then z and m.
+const POSITION_NUMBERS: std::ops::RangeInclusive<usize> = 2..=4;
+
 /// Checks `text` for what the wkt crate would crash on or misreport.
 pub fn check(text: &str) -> Result<(), String> {
+    for (n, line) in text.lines().enumerate().filter(|_| !text.is_ascii()) {
+        if let Some((i, c)) = line.char_indices().find(|(_, c)| !c.is_ascii()) {
+            let what = if c == '\u{feff}' { "a byte order mark".to_owned() } else { format!("'{c}'") };
+            let column = line[..i].chars().count() + 1;
+            return Err(format!("{what} (line {}, column {column}) is not ASCII: WKT is written in ASCII", n + 1));
+        }
+    }
     let mut depth = 0usize;
     // Set when the geometry's outer parentheses close, or at `EMPTY` outside them.
     let mut ended = false;
+    // Where each open parenthesis is, innermost last.
+    let mut open: Vec<String> = Vec::new();
+    // The numbers of the position being read, and where it starts.
+    let mut position: (usize, String) = (0, String::new());
+    let mut first = true;
     for token in tokens(text) {
+        if first {
+            first = false;
+            let word = token.text.trim_end_matches(['Z', 'z', 'M', 'm']);
+            let known = |w: &str| TYPES.iter().any(|t| t.eq_ignore_ascii_case(w));
+            if !known(token.text) && !known(word) {
+                return Err(format!(
+                    "'{}' ({}) is not a WKT geometry type ({})",
+                    token.text,
+                    token.at(),
+                    TYPES.join(", ")
+                ));
+            }
+        }
         if ended {
             return Err(format!(
                 "text after the end of the geometry ({}): '{}' (a WKT file holds one geometry; put several in a \
@@ -38,28 +73,83 @@ pub fn check(text: &str) -> Result<(), String> {
                 token.text
             ));
         }
+        if matches!(token.text, "(" | ")" | ",") {
+            check_position(&position)?;
+            position = (0, String::new());
+        }
         match token.text {
             "(" => {
                 depth += 1;
                 if depth > MAX_DEPTH {
                     return Err(format!("parentheses nested deeper than {MAX_DEPTH} levels ({})", token.at()));
                 }
+                open.push(token.at());
             }
             ")" => {
                 depth = depth.saturating_sub(1);
+                open.pop();
                 ended = depth == 0;
             }
             word if depth == 0 && word.eq_ignore_ascii_case("EMPTY") => ended = true,
             "," => {}
-            word if depth > 0 && is_number_like(word) => match word.parse::<f64>() {
-                Ok(v) if v.is_finite() => {}
-                Ok(_) => return Err(format!("coordinate '{word}' ({}) is not finite", token.at())),
-                Err(_) => return Err(format!("coordinate '{word}' ({}) is not a number", token.at())),
-            },
+            word if depth > 0 && is_number_like(word) => {
+                match word.parse::<f64>() {
+                    Ok(v) if v.is_finite() => {}
+                    Ok(_) => return Err(format!("coordinate '{word}' ({}) is not finite", token.at())),
+                    Err(_) => return Err(format!("coordinate '{word}' ({}) is not a number", token.at())),
+                }
+                if position.0 == 0 {
+                    position.1 = token.at();
+                }
+                position.0 += 1;
+            }
             _ => {}
         }
     }
+    if first {
+        return Err("it is empty: a WKT file holds one geometry".into());
+    }
+    if let Some(at) = open.last() {
+        return Err(format!("the '(' at {at} is never closed: a ')' is missing"));
+    }
     Ok(())
+}
+
+/// A position's count of numbers (`count`, starting at `at`), which must be 2 to 4 when any.
+fn check_position((count, at): &(usize, String)) -> Result<(), String> {
+    if *count == 0 || POSITION_NUMBERS.contains(count) {
+        return Ok(());
+    }
+    Err(format!(
+        "the position at {at} has {count} number{}: a WKT position has 2 to 4 (x y, then z and m)",
+        if *count == 1 { "" } else { "s" }
+    ))
+}
+
+/// `text` with every `()` (an empty ring or line string, as some writers put it) written as
+/// `EMPTY`, which the wkt crate reads; run on text [`check`] passed.
+pub fn empty_parentheses_as_empty(text: &str) -> std::borrow::Cow<'_, str> {
+    let mut out = String::new();
+    let mut copied = 0;
+    let mut previous: Option<Token<'_>> = None;
+    for token in tokens(text) {
+        if let Some(p) = &previous
+            && p.text == "("
+            && token.text == ")"
+        {
+            let start = p.text.as_ptr() as usize - text.as_ptr() as usize;
+            let end = token.text.as_ptr() as usize - text.as_ptr() as usize + 1;
+            out.push_str(&text[copied..start]);
+            out.push_str(" EMPTY ");
+            copied = end;
+        }
+        previous = Some(token);
+    }
+    if copied == 0 {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    out.push_str(&text[copied..]);
+    std::borrow::Cow::Owned(out)
 }
 
 /// A word meant as a number: one the wkt crate reads as a number (it starts with a digit, `.`,

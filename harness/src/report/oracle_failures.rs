@@ -17,7 +17,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         "## Where the clippers disagree with the oracle\n\n\
          `clipbench verify` with {} generated cases per workload (seed {}): every clipper on every case, operation \
          and fill rule it supports, against the exact oracle (output validity, membership at sample points, region \
-         area) and the area identities. Each cell is failures / checked results; a refusal of valid input, or an \
+         area) and the area identities. Each cell is failures / checked results, then the failed area identities \
+         (one check per case and fill rule, over its four results) where there are any; a refusal of valid input, or an \
          external clipper that crashed, hung or answered garbage, counts as a failure. Peers (geo, Clipper2, GEOS, \
          i_overlay, Clipper 1, clipper2-rust and external clippers) are judged with the looser peer tolerance \
          (`GEO_TOLERANCE`, 1e-6 of the inputs' box area), this project's clippers with 1e-9.\n\n{notes}\n",
@@ -82,8 +83,11 @@ fn failure_table(rows: &[VerifyRow], kind: &str) -> Option<String> {
             let mut line = vec![format!("`{c}`"), origin.to_owned()];
             line.extend(workloads.iter().map(|&w| {
                 cells.get(&(c, w)).map_or("–".to_owned(), |r| {
-                    let cell = format!("{} / {}", r.oracle_failures, r.runs);
-                    if r.oracle_failures > 0 { format!("**{cell}**") } else { cell }
+                    let mut cell = format!("{} / {}", r.oracle_failures, r.runs);
+                    if r.identity_failures > 0 {
+                        cell.push_str(&format!(" + {} identity", r.identity_failures));
+                    }
+                    if r.oracle_failures + r.identity_failures > 0 { format!("**{cell}**") } else { cell }
                 })
             }));
             line
@@ -121,6 +125,8 @@ mod tests {
     fn case(clipper: &str, check: &str, vertices: usize) -> CaseEntry {
         CaseEntry {
             folder: format!("{clipper}-{check}-{vertices}"),
+            seed: 1,
+            index: 0,
             kind: "polygon".into(),
             clipper: clipper.into(),
             workload: "star".into(),

@@ -7,6 +7,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::cli_error::CliError;
+use crate::partition::Partition;
 
 /// The summary, one [`VerifyResults`] (also what `--json` writes).
 pub const JSON: &str = "verify.json";
@@ -34,6 +35,9 @@ pub struct VerifyResults {
     /// The failure folders written, shrunk, in the order found.
     #[serde(default)]
     pub cases: Vec<CaseEntry>,
+    /// The part of the cases run (`verify --partition K/N`), none for all of them.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub partition: Option<Partition>,
 }
 
 /// The counts of one clipper on one workload.
@@ -51,13 +55,32 @@ pub struct VerifyRow {
     pub cases: usize,
     /// Checked results: one per case, operation and fill rule (one per case for lines).
     pub runs: usize,
-    /// Results the oracle rejected (including refusals, failures to answer and failed area
-    /// identities).
+    /// Results the oracle rejected (including refusals and failures to answer): at most `runs`.
     pub oracle_failures: usize,
+    /// Cases and fill rules whose four results break an area identity (not runs themselves;
+    /// counted in `oracle_failures` by files written before they were counted apart).
+    #[serde(default)]
+    pub identity_failures: usize,
     /// Results that differ from another clipper's while both passed the oracle, per other clipper.
     pub disagreements: BTreeMap<String, usize>,
     /// Zero-width bridges in the output, for clippers whose capabilities say they make them.
     pub bridges: Option<usize>,
+}
+
+impl VerifyRow {
+    /// Adds another part's counts of the same clipper, kind and workload.
+    pub fn add(&mut self, other: &VerifyRow) {
+        self.cases += other.cases;
+        self.runs += other.runs;
+        self.oracle_failures += other.oracle_failures;
+        self.identity_failures += other.identity_failures;
+        for (name, n) in &other.disagreements {
+            *self.disagreements.entry(name.clone()).or_default() += n;
+        }
+        if let Some(b) = other.bridges {
+            self.bridges = Some(self.bridges.unwrap_or(0) + b);
+        }
+    }
 }
 
 /// One shrunk failure case written under [`FAILURES`].
@@ -65,6 +88,12 @@ pub struct VerifyRow {
 pub struct CaseEntry {
     /// Its folder under the failures folder (holding case.json, WKT and picture.svg).
     pub folder: String,
+    /// The run's seed.
+    #[serde(default)]
+    pub seed: u64,
+    /// The case's index in its workload.
+    #[serde(default)]
+    pub index: usize,
     /// `polygon` or `line`.
     pub kind: String,
     /// The clipper the failure is counted under.
@@ -83,6 +112,23 @@ pub struct CaseEntry {
     pub shrunk_vertices: [usize; 2],
     /// The failure on the shrunk inputs.
     pub shrunk: String,
+}
+
+/// The positions of the first `max` items of each group (`key`) in order, all of them when `max`
+/// is 0, and how many were left out: which failures a run shrinks and writes (the first of each
+/// clipper, workload and check), and so which a merge of a run's parts keeps.
+pub fn first_of_each<T, K: PartialEq>(items: &[T], max: usize, key: impl Fn(&T) -> K) -> (Vec<usize>, usize) {
+    let mut chosen: Vec<usize> = Vec::new();
+    let mut skipped = 0;
+    for (i, item) in items.iter().enumerate() {
+        let k = key(item);
+        if max == 0 || chosen.iter().filter(|&&c| key(&items[c]) == k).count() < max {
+            chosen.push(i);
+        } else {
+            skipped += 1;
+        }
+    }
+    (chosen, skipped)
 }
 
 /// Reads [`JSON`] from `out`; no file means no verify results.

@@ -13,7 +13,7 @@ use clip_testkit::workload::{CURVES_PER_CASE, curve_case, filled_object};
 use clip_vatti::Vatti;
 
 use super::finding::{CaseOutcome, Finding, Kind};
-use crate::checks::{Check, guarded};
+use crate::checks::{Check, Failing, guarded};
 use crate::curve_input::CurveObject;
 use crate::registry::CurveEntry;
 
@@ -172,6 +172,7 @@ impl CurvePlan<'_> {
                 fill: None,
                 clipper,
                 check,
+                how: if check == Check::Oracle { Failing::Wrong } else { Failing::Disagrees },
                 message,
             };
             // The polygon route, once per filled object: (area, bound).

@@ -4,7 +4,7 @@
 use clip_core::{BoolOp, FillRule, WindowKind};
 
 use super::summary::Row;
-use crate::checks::Check;
+use crate::checks::{Check, Failing};
 use crate::registry::Origin;
 
 /// What a case clips: polygons, lines, curves or text.
@@ -52,14 +52,17 @@ pub struct Finding {
     pub clipper: &'static str,
     /// Which check failed.
     pub check: Check,
+    /// How it failed: a shrunk case must fail the same way.
+    pub how: Failing,
     /// The check's one-line explanation.
     pub message: String,
 }
 
 impl Finding {
-    /// A folder name that says what failed, unique within a run.
-    pub fn folder_name(&self) -> String {
-        let mut name = format!("{}-{:05}-{}", self.workload, self.index, window_name(self.window));
+    /// A folder name that says what failed, unique among runs of any seeds and parts: the
+    /// workload, the run's `seed` and the case index first.
+    pub fn folder_name(&self, seed: u64) -> String {
+        let mut name = format!("{}-s{seed}-{:05}-{}", self.workload, self.index, window_name(self.window));
         if let Some(op) = self.op {
             name.push_str(&format!("-{op}"));
         }

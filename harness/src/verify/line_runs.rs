@@ -6,7 +6,7 @@ use clip_testkit::workload::line_case;
 
 use super::finding::{CaseOutcome, Finding, Kind};
 use super::polygon_runs::{takes, variants};
-use crate::checks::{Check, line_oracle, lines_agree, run_line};
+use crate::checks::{Check, Failure, line_oracle, lines_agree, run_line};
 use crate::registry::LineEntry;
 
 /// What to run on every line case.
@@ -30,7 +30,7 @@ impl LinePlan<'_> {
             let case = line_case(workload, self.seed, index, variant, self.segments).map_err(|e| e.to_string())?;
             let here: Vec<usize> = (0..self.entries.len()).filter(|&i| takes(own[i], variant)).collect();
             let counted = |i: usize| own[i] == variant;
-            let finding = |clipper: &'static str, check: Check, message: String| Finding {
+            let finding = |clipper: &'static str, check: Check, failure: Failure| Finding {
                 kind: Kind::Line,
                 workload,
                 index,
@@ -39,7 +39,8 @@ impl LinePlan<'_> {
                 fill: None,
                 clipper,
                 check,
-                message,
+                how: failure.how,
+                message: failure.message,
             };
             let mut outputs: Vec<Option<Vec<VisiblePiece>>> = vec![None; self.entries.len()];
             let mut passed = vec![false; self.entries.len()];
@@ -54,9 +55,9 @@ impl LinePlan<'_> {
                     let row = &mut outcome.rows[i];
                     row.cases += 1;
                     row.runs += 1;
-                    if let Err(message) = &verdict {
+                    if let Err(failure) = &verdict {
                         row.oracle_failures += 1;
-                        outcome.findings.push(finding(e.clipper.name(), Check::Oracle, message.clone()));
+                        outcome.findings.push(finding(e.clipper.name(), Check::Oracle, failure.clone()));
                     }
                 }
                 passed[i] = verdict.is_ok();
@@ -67,15 +68,15 @@ impl LinePlan<'_> {
                     let (Some(px), Some(py)) = (&outputs[x], &outputs[y]) else { continue };
                     // A pair where one result failed the oracle is that result's failure.
                     let verdict = if passed[x] && passed[y] {
-                        lines_agree((self.entries[x], px), (self.entries[y], py), &case.segments)
+                        lines_agree((self.entries[x], px), (self.entries[y], py), &case.window, &case.segments)
                     } else {
                         Ok(())
                     };
                     if let Some((me, other)) = outcome.compared((x, y), &counted, verdict.is_err())
-                        && let Err(message) = verdict
+                        && let Err(failure) = verdict
                     {
                         let check = Check::Disagreement(self.entries[other].clipper.name());
-                        outcome.findings.push(finding(self.entries[me].clipper.name(), check, message));
+                        outcome.findings.push(finding(self.entries[me].clipper.name(), check, failure));
                     }
                 }
             }

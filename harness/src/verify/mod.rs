@@ -35,8 +35,9 @@ use crate::cli_error::CliError;
 use crate::console;
 use crate::measure::out_dir::ready_out_dir;
 use crate::measure::provenance::Provenance;
+use crate::partition::Partition;
 use crate::registry::Registry;
-use crate::results_files::verify::{self as verify_files, CaseEntry};
+use crate::results_files::verify::{self as verify_files, CaseEntry, first_of_each};
 use crate::write::write_file;
 
 /// Arguments of `clipbench verify`.
@@ -51,8 +52,9 @@ pub struct VerifyArgs {
     /// `ellipses`) the curve clippers.
     #[arg(long = "workload", value_name = "NAME")]
     pub workloads: Vec<String>,
-    /// Generated cases per workload; each case runs every supported operation and fill rule.
-    #[arg(long, default_value_t = 100)]
+    /// Generated cases per workload (1 or more); each case runs every supported operation and
+    /// fill rule.
+    #[arg(long, default_value_t = 100, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..))]
     pub cases: usize,
     /// Seed of the case generators: the same seed gives the same cases and the same summary.
     #[arg(long, default_value_t = 1)]
@@ -73,9 +75,16 @@ pub struct VerifyArgs {
     /// Failures shrunk and written per clipper, workload and check (0: all of them).
     #[arg(long, default_value_t = 10)]
     pub max_records: usize,
-    /// Worker threads (default: one per core). The summary does not depend on it.
-    #[arg(long)]
+    /// Worker threads, 1 to 1024 (default: one per core; never more than there are cases). The
+    /// summary does not depend on it.
+    #[arg(long, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_THREADS as u64))]
     pub threads: Option<usize>,
+    /// Run only part K of N of the cases (as 3/8): N jobs, each with the same options and its own
+    /// K and --results folder, run the whole set between them with no coordination; `clipbench
+    /// merge` then joins their folders into the one a single run writes. Case j of the run's list
+    /// (workload by workload, index by index, from 0) is in part j mod N + 1.
+    #[arg(long, value_name = "K/N")]
+    pub partition: Option<Partition>,
     /// Also write the summary as JSON to this file.
     #[arg(long, value_name = "FILE")]
     pub json: Option<PathBuf>,
@@ -89,9 +98,13 @@ pub struct VerifyArgs {
     #[command(flatten)]
     pub external: crate::external::ExternalArgs,
     /// Re-run one saved failure (the case.json of a failure folder) instead of a verify run.
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["workloads", "cases", "json", "threads"])]
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["workloads", "cases", "json", "threads", "partition"])]
     pub replay: Option<PathBuf>,
 }
+
+/// The most worker threads `--threads` takes: more than cases or cores only costs time, and some
+/// thousands of threads exhaust what a process may start.
+pub const MAX_THREADS: usize = 1024;
 
 /// Runs the command: exit 1 when a clipper of this project fails the oracle.
 pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> {
@@ -151,8 +164,13 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
     if items.is_empty() {
         return Err(CliError::usage("nothing to run: no selected clipper handles the selected workloads"));
     }
+    // This part's cases; a part may have none (more parts than cases) and writes empty results.
+    let items: Vec<(&'static str, usize)> = match args.partition {
+        Some(part) => items.into_iter().enumerate().filter(|(j, _)| part.keeps(*j)).map(|(_, item)| item).collect(),
+        None => items,
+    };
     let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.unwrap_or(0))
+        .num_threads(args.threads.map_or(0, |t| t.min(items.len().max(1))))
         .build()
         .map_err(|e| CliError::failed(format!("cannot start worker threads: {e}")))?;
     let progress = progress_bar(items.len());
@@ -200,19 +218,22 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         .chain(registry.curve.iter().filter(|e| e.origin.fails_run()).map(|e| e.clipper.name()))
         .chain(text.names.iter().copied())
         .collect();
-    let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures > 0);
+    let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures + r.identity_failures > 0);
 
     // Shrink and write the first failures of each clipper and workload.
-    let (chosen, skipped) = choose(&findings, args.max_records);
+    let (chosen, skipped) = first_of_each(&findings, args.max_records, |f| (f.clipper, f.workload, f.check));
+    let chosen: Vec<&Finding> = chosen.into_iter().map(|i| &findings[i]).collect();
     let records: Vec<Result<record::Record, String>> = pool.install(|| {
         chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &out, &text)).collect()
     });
     let mut written = Vec::new();
     let mut cases = Vec::new();
+    let mut replay = None;
     for r in records {
         let r = r.map_err(CliError::failed)?;
         written.push(r.write(&out)?);
         cases.push(case_entry(&r));
+        replay.get_or_insert(r.case.replay);
     }
 
     let summary = Summary {
@@ -222,18 +243,19 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         failures_recorded: written.len(),
         failures_not_recorded: skipped,
         ours_failed,
+        partition: args.partition,
     };
     console::print(&table(&summary.rows))?;
     console::print_line(
         "(vs X: results that differ from X's while both passed the oracle; a difference where one fails is its oracle failure)",
     )?;
-    if !written.is_empty() {
+    if let Some(first) = replay {
         console::print_line(format_args!(
-            "{} failure case(s) shrunk and written under {}{}; replay one with: clipbench verify --replay {}",
+            "{} failure case(s) shrunk and written under {}{}; replay one with: {}",
             written.len(),
             out.display(),
             if skipped > 0 { format!(" ({skipped} more not written: --max-records)") } else { String::new() },
-            written[0].join("case.json").display()
+            first
         ))?;
     }
     let results = summary.to_file(cases);
@@ -251,6 +273,7 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
             "workloads": workloads,
             "ops": polygon.ops.iter().map(|o| o.name()).collect::<Vec<_>>(),
             "fill_rules": polygon.fills.iter().map(|f| f.name()).collect::<Vec<_>>(),
+            "partition": args.partition.map(|p| p.to_string()),
         });
         Provenance::now("verify", args.seed, parameters).write(&dir.join(verify_files::META))?;
     }
@@ -267,6 +290,8 @@ fn case_entry(r: &record::Record) -> CaseEntry {
     let c = &r.case;
     CaseEntry {
         folder: r.folder.clone(),
+        seed: c.seed,
+        index: c.index,
         kind: c.kind.clone(),
         clipper: c.clipper.clone(),
         workload: c.workload.clone(),
@@ -302,22 +327,6 @@ fn select_workloads(names: &[String]) -> Result<Vec<&'static str>, CliError> {
                 .ok_or_else(|| CliError::usage(format!("unknown workload '{n}' (workloads: {})", all.join(", "))))
         })
         .collect()
-}
-
-/// The first `max` findings of each clipper, workload and check (all when `max` is 0), in
-/// order, and how many were left out.
-fn choose(findings: &[Finding], max: usize) -> (Vec<Finding>, usize) {
-    let mut chosen: Vec<Finding> = Vec::new();
-    let mut skipped = 0;
-    for f in findings {
-        let same = chosen.iter().filter(|c| c.clipper == f.clipper && c.workload == f.workload && c.check == f.check);
-        if max == 0 || same.count() < max {
-            chosen.push(f.clone());
-        } else {
-            skipped += 1;
-        }
-    }
-    (chosen, skipped)
 }
 
 /// A progress bar on standard error, hidden when that is not a terminal.

@@ -6,7 +6,7 @@ use clip_oracle::polygon::{bridge_count_along, operand_areas, snap_distance};
 use clip_testkit::workload::polygon_case;
 
 use super::finding::{CaseOutcome, Finding, Kind};
-use crate::checks::{Check, area_identities, polygon_oracle, polygons_agree, run_polygon};
+use crate::checks::{Check, Failure, area_identities, polygon_oracle, polygons_agree, run_polygon};
 use crate::registry::PolygonEntry;
 
 /// What to run on every polygon case.
@@ -55,7 +55,7 @@ impl PolygonPlan<'_> {
                 outcome.rows[i].cases += 1;
             }
             let finding =
-                |clipper: &'static str, op: Option<BoolOp>, fill: FillRule, check: Check, message: String| Finding {
+                |clipper: &'static str, op: Option<BoolOp>, fill: FillRule, check: Check, failure: Failure| Finding {
                     kind: Kind::Polygon,
                     workload,
                     index,
@@ -64,7 +64,8 @@ impl PolygonPlan<'_> {
                     fill: Some(fill),
                     clipper,
                     check,
-                    message,
+                    how: failure.how,
+                    message: failure.message,
                 };
             for &fill in &self.fills {
                 // outputs[i][op] for each clipper here; None when unsupported or refused.
@@ -93,14 +94,14 @@ impl PolygonPlan<'_> {
                                 let snap = snap_distance(&subject.bounds().union(clip.bounds()), e.tolerance);
                                 row.bridges = Some(row.bridges.unwrap_or(0) + bridge_count_along(out, clip, snap));
                             }
-                            if let Err(message) = &verdict {
+                            if let Err(failure) = &verdict {
                                 row.oracle_failures += 1;
                                 outcome.findings.push(finding(
                                     e.clipper.name(),
                                     Some(op),
                                     fill,
                                     Check::Oracle,
-                                    message.clone(),
+                                    failure.clone(),
                                 ));
                             }
                         }
@@ -131,10 +132,10 @@ impl PolygonPlan<'_> {
                         continue;
                     }
                     let operands = *operands.get_or_insert_with(|| operand_areas(subject, clip, fill));
-                    if let Err(message) = area_identities(self.entries[i], subject, clip, fill, operands, &four) {
-                        outcome.rows[i].oracle_failures += 1;
+                    if let Err(failure) = area_identities(self.entries[i], subject, clip, fill, operands, &four) {
+                        outcome.rows[i].identity_failures += 1;
                         let name = self.entries[i].clipper.name();
-                        outcome.findings.push(finding(name, None, fill, Check::AreaIdentities, message));
+                        outcome.findings.push(finding(name, None, fill, Check::AreaIdentities, failure));
                     }
                 }
             }
@@ -157,7 +158,7 @@ impl PolygonPlan<'_> {
         subject: &Polygons,
         clip: &Polygons,
         fill: FillRule,
-        finding: &dyn Fn(&'static str, Option<BoolOp>, FillRule, Check, String) -> Finding,
+        finding: &dyn Fn(&'static str, Option<BoolOp>, FillRule, Check, Failure) -> Finding,
     ) {
         let slot = op_slot(op);
         for &x in here {
@@ -170,10 +171,10 @@ impl PolygonPlan<'_> {
                     None => Ok(()),
                 };
                 if let Some((me, other)) = outcome.compared((x, y), counted, verdict.is_err())
-                    && let Err(message) = verdict
+                    && let Err(failure) = verdict
                 {
                     let check = Check::Disagreement(self.entries[other].clipper.name());
-                    outcome.findings.push(finding(self.entries[me].clipper.name(), Some(op), fill, check, message));
+                    outcome.findings.push(finding(self.entries[me].clipper.name(), Some(op), fill, check, failure));
                 }
             }
         }

@@ -5,7 +5,7 @@ use clip_core::{BoolOp, FillRule, Operand, Polygons, Segment, validate_polygons,
 use clip_oracle::polygon::operand_areas;
 
 use crate::checks::{
-    Check, area_identities, line_oracle, lines_agree, polygon_oracle, polygons_agree, run_line, run_polygon,
+    Check, Failure, area_identities, line_oracle, lines_agree, polygon_oracle, polygons_agree, run_line, run_polygon,
 };
 use crate::registry::Registry;
 
@@ -25,7 +25,7 @@ pub struct Target<'a> {
 /// Why the polygon check still fails on these inputs, or `None` when it passes or the inputs
 /// are not ones the clippers must accept (invalid, or a window of the wrong kind): the shrinker
 /// must not turn a wrong answer into a correct refusal.
-pub fn polygon_failure(registry: &Registry, target: Target, subject: &Polygons, clip: &Polygons) -> Option<String> {
+pub fn polygon_failure(registry: &Registry, target: Target, subject: &Polygons, clip: &Polygons) -> Option<Failure> {
     let entry = registry.find_polygon(target.clipper)?;
     let fill = target.fill?;
     let acceptable = |e: &crate::registry::PolygonEntry| e.clipper.capabilities().window.accepts(clip);
@@ -62,7 +62,7 @@ pub fn polygon_failure(registry: &Registry, target: Target, subject: &Polygons, 
 }
 
 /// Why the line check still fails on these inputs, or `None` (see [`polygon_failure`]).
-pub fn line_failure(registry: &Registry, target: Target, window: &Polygons, segments: &[Segment]) -> Option<String> {
+pub fn line_failure(registry: &Registry, target: Target, window: &Polygons, segments: &[Segment]) -> Option<Failure> {
     let entry = registry.find_line(target.clipper)?;
     if validate_window(window).is_err() || validate_segments(segments).is_err() {
         return None;
@@ -84,7 +84,7 @@ pub fn line_failure(registry: &Registry, target: Target, window: &Polygons, segm
                 return None;
             }
             let (a, b) = (checked(entry).ok()?, checked(other).ok()?);
-            lines_agree((entry, &a), (other, &b), segments).err()
+            lines_agree((entry, &a), (other, &b), window, segments).err()
         }
     }
 }

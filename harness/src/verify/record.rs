@@ -84,7 +84,8 @@ impl Record {
     }
 }
 
-/// Regenerates a finding's case, shrinks it while the same check still fails, and builds its folder.
+/// Regenerates a finding's case, shrinks it while the same check still fails the same way, and
+/// builds its folder.
 /// `segments` is the run's segments per line case, so the line case regenerates the same.
 pub fn record(
     registry: &Registry,
@@ -94,8 +95,13 @@ pub fn record(
     out: &Path,
     text: &TextPlan,
 ) -> Result<Record, String> {
-    let folder = finding.folder_name();
+    let folder = finding.folder_name(seed);
     let case_path = out.join(&folder).join("case.json");
+    let others: Vec<&str> = match finding.check {
+        Check::Disagreement(o) => vec![finding.clipper, o],
+        _ => vec![finding.clipper],
+    };
+    let replay = replay_command(&case_path, &registry.external_options(&others));
     let (other, check) = match finding.check {
         Check::Disagreement(o) => (Some(o.to_owned()), "disagreement"),
         Check::Oracle => (None, "oracle"),
@@ -117,7 +123,7 @@ pub fn record(
         generated_vertices: [0, 0],
         shrunk_vertices: [0, 0],
         inputs: [String::new(), String::new()],
-        replay: format!("clipbench verify --replay {}", case_path.display()),
+        replay,
     };
     let target = Target { clipper: finding.clipper, check: finding.check, op: finding.op, fill: finding.fill };
     let mut files = match finding.kind {
@@ -129,6 +135,33 @@ pub fn record(
     files.push(("case.json".into(), serde_json::to_string_pretty(&case).map_err(|e| e.to_string())? + "\n"));
     files.push(("replay.txt".into(), case.replay.clone() + "\n"));
     Ok(Record { folder, files, case })
+}
+
+/// `clipbench verify --replay CASE` with the options that register the external clippers it
+/// runs (a replay without them would not know their names).
+pub fn replay_command(case: &Path, external: &[String]) -> String {
+    let path = case.to_string_lossy();
+    let mut command = format!(
+        "clipbench verify --replay {}",
+        shlex::try_quote(&path).map_or(path.clone(), |q| q.into_owned().into())
+    );
+    for option in external {
+        command.push(' ');
+        command.push_str(option);
+    }
+    command
+}
+
+/// What the case file says of the shrunk inputs: the failure, or that it is gone or changed (the
+/// inputs are then the generated ones, kept whole).
+fn shrunk_message(now: Option<crate::checks::Failure>, finding: &Finding) -> String {
+    match now {
+        Some(f) if f.how == finding.how => f.message,
+        Some(f) => {
+            format!("fails another way when rerun ({:?} where {:?} was found): {}", f.how, finding.how, f.message)
+        }
+        None => "passes when rerun".into(),
+    }
 }
 
 /// A text failure is not shrunk: the case (string, size, origin) is in the message, the window
@@ -154,11 +187,12 @@ fn polygon_files(
     case: &mut CaseFile,
 ) -> Result<Vec<(String, String)>, String> {
     let generated = polygon_case(finding.workload, seed, finding.index, finding.window).map_err(|e| e.to_string())?;
-    let (subject, clip) =
-        shrink_polygons(&generated.subject, &generated.clip, |s, c| polygon_failure(registry, target, s, c).is_some());
+    // Kept only while it fails as found: a flaky hang that comes back as a crash is not shrunk.
+    let failure = |s: &Polygons, c: &Polygons| polygon_failure(registry, target, s, c).filter(|f| f.how == finding.how);
+    let (subject, clip) = shrink_polygons(&generated.subject, &generated.clip, |s, c| failure(s, c).map(|f| f.how));
     case.generated_vertices = [generated.subject.vertex_count(), generated.clip.vertex_count()];
     case.shrunk_vertices = [subject.vertex_count(), clip.vertex_count()];
-    case.shrunk = polygon_failure(registry, target, &subject, &clip).unwrap_or_else(|| "passes after shrinking".into());
+    case.shrunk = shrunk_message(polygon_failure(registry, target, &subject, &clip), finding);
     case.inputs = ["subject.wkt".into(), "clip.wkt".into()];
     let fill = finding.fill.ok_or("a polygon finding without a fill rule")?;
     // Every selected clipper that takes this window, on the op that failed (all four for identities).
@@ -179,7 +213,7 @@ fn polygon_files(
                     outputs.push((label.clone(), out));
                     text
                 }
-                Err(message) => message,
+                Err(failure) => failure.message,
             };
             files.push((format!("output-{label}.wkt"), text + "\n"));
         }
@@ -201,11 +235,12 @@ fn line_files(
 ) -> Result<Vec<(String, String)>, String> {
     let generated =
         line_case(finding.workload, seed, finding.index, finding.window, count).map_err(|e| e.to_string())?;
+    let failure = |w: &Polygons, s: &[Segment]| line_failure(registry, target, w, s).filter(|f| f.how == finding.how);
     let (window, segments) =
-        shrink_segments(&generated.window, &generated.segments, |w, s| line_failure(registry, target, w, s).is_some());
+        shrink_segments(&generated.window, &generated.segments, |w, s| failure(w, s).map(|f| f.how));
     case.generated_vertices = [generated.window.vertex_count(), 2 * generated.segments.len()];
     case.shrunk_vertices = [window.vertex_count(), 2 * segments.len()];
-    case.shrunk = line_failure(registry, target, &window, &segments).unwrap_or_else(|| "passes after shrinking".into());
+    case.shrunk = shrunk_message(line_failure(registry, target, &window, &segments), finding);
     case.inputs = ["window.wkt".into(), "segments.wkt".into()];
     let mut files = vec![
         ("window.wkt".to_owned(), polygons_to_wkt(&window, false) + "\n"),
@@ -219,7 +254,7 @@ fn line_files(
                 outputs.push((e.clipper.name(), pieces));
                 text
             }
-            Err(message) => message,
+            Err(failure) => failure.message,
         };
         files.push((format!("output-{}.wkt", e.clipper.name()), text + "\n"));
     }
@@ -277,4 +312,90 @@ fn curve_files(
         files.push(("picture.svg".into(), curves_svg(&generated.window, &pictures, finding.clipper)));
     }
     Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::checks::Failing;
+    use crate::registry::{Origin, Registry};
+    use clip_core::{ClipError, FailureKind, FillRule, PolygonCapabilities, PolygonClipper, WindowKind};
+    use clip_oracle::polygon::REGION_TOLERANCE;
+
+    /// A planted bug: on a subject of more than 6 vertices it fails as `big` says, on smaller ones
+    /// it crashes, so every case the shrinker tries below the original fails too, another way.
+    struct Planted {
+        big: Option<FailureKind>,
+    }
+
+    impl PolygonClipper for Planted {
+        fn name(&self) -> &'static str {
+            "planted"
+        }
+
+        fn capabilities(&self) -> PolygonCapabilities {
+            PolygonCapabilities {
+                ops: &[BoolOp::Intersection],
+                fill_rules: &[FillRule::EvenOdd],
+                ..PolygonCapabilities::GENERAL
+            }
+        }
+
+        fn clip(&self, subject: &Polygons, _: &Polygons, _: BoolOp, _: FillRule) -> Result<Polygons, ClipError> {
+            let fail =
+                |kind| Err(ClipError::Failed { clipper: "planted", kind, reason: format!("{kind:?} (planted)") });
+            match self.big {
+                _ if subject.vertex_count() <= 6 => fail(FailureKind::Crashed),
+                Some(kind) => fail(kind),
+                // A wrong answer: the subject itself, unclipped.
+                None => Ok(subject.clone()),
+            }
+        }
+    }
+
+    /// The shrinker turned a hang into a crash, and an oracle miss into the same crash (issue
+    /// 28): a shrunk case fails the way the case found did.
+    #[test]
+    fn a_shrunk_failure_fails_the_same_check_the_same_way() {
+        let out = std::env::temp_dir().join(format!("clipbench-record-{}", std::process::id()));
+        let text = TextPlan { font: None, names: Vec::new(), seed: 1 };
+        for (big, how) in [(Some(FailureKind::Hung), Failing::NoAnswer(FailureKind::Hung)), (None, Failing::Wrong)] {
+            let registry = Registry::default().polygon(Origin::Ours, REGION_TOLERANCE, Planted { big });
+            let generated = polygon_case("star", 1, 0, WindowKind::Any).unwrap();
+            assert!(generated.subject.vertex_count() > 6);
+            let target = Target {
+                clipper: "planted",
+                check: Check::Oracle,
+                op: Some(BoolOp::Intersection),
+                fill: Some(FillRule::EvenOdd),
+            };
+            let found = polygon_failure(&registry, target, &generated.subject, &generated.clip).unwrap();
+            assert_eq!(found.how, how, "{}", found.message);
+            let finding = Finding {
+                kind: Kind::Polygon,
+                workload: "star",
+                index: 0,
+                window: WindowKind::Any,
+                op: Some(BoolOp::Intersection),
+                fill: Some(FillRule::EvenOdd),
+                clipper: "planted",
+                check: Check::Oracle,
+                how: found.how,
+                message: found.message,
+            };
+            let record = record(&registry, 1, 10, &finding, &out, &text).unwrap();
+            let [subject, _] = record.case.shrunk_vertices;
+            assert!(subject > 6, "{how:?}: shrunk to {subject} subject vertices, where it crashes instead");
+            assert!(subject < generated.subject.vertex_count(), "{how:?}: it still shrinks");
+            let again = polygon_failure(
+                &registry,
+                target,
+                &crate::read::shapes_from_text(&record.files[0].1, false).unwrap().0.polygons(),
+                &crate::read::shapes_from_text(&record.files[1].1, false).unwrap().0.polygons(),
+            )
+            .unwrap();
+            assert_eq!(again.how, how, "{}", again.message);
+            assert_eq!(record.case.shrunk, again.message);
+        }
+    }
 }

@@ -19,7 +19,7 @@ use crate::registry::Registry;
 
 /// Replays the case file at `path`: exit 1 when the failure is still there, 0 when it is gone.
 pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
-    let text = std::fs::read_to_string(path).map_err(|e| InputError::new(path, format!("cannot read it: {e}")))?;
+    let text = crate::read::read_text(path)?;
     let (case, replay) = read_case(&text, path, registry)?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let (first, second) = (dir.join(&case.inputs[0]), dir.join(&case.inputs[1]));
@@ -38,13 +38,13 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
             validate_window(&window).map_err(|e| InputError::new(&first, e.to_string()))?;
             replay.takes_window(&window, &first)?;
             let segments = read_segments(&second)?;
-            line_failure(registry, replay.target, &window, &segments)
+            line_failure(registry, replay.target, &window, &segments).map(String::from)
         }
         Kind::Polygon => {
             let subject = read_polygons(&first, Operand::Subject)?;
             let clip = read_polygons(&second, Operand::Clip)?;
             replay.takes_window(&clip, &second)?;
-            polygon_failure(registry, replay.target, &subject, &clip)
+            polygon_failure(registry, replay.target, &subject, &clip).map(String::from)
         }
     };
     let what = format!(
@@ -74,8 +74,18 @@ pub fn replay(path: &Path, registry: &Registry) -> Result<ExitCode, CliError> {
 /// what `--replay` runs, or the one-line error saying what does not hang together. The `readers`
 /// fuzz target calls this with any text.
 pub fn read_case(text: &str, path: &Path, registry: &Registry) -> Result<(CaseFile, Replay), CliError> {
-    let case: CaseFile =
-        serde_json::from_str(text).map_err(|e| InputError::new(path, format!("not a verify case file: {e}")))?;
+    let bad = |problem: String| CliError::from(InputError::new(path, problem));
+    let value: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| bad(format!("not a verify case file (not JSON: {e})")))?;
+    if let Some(inputs) = value.get("inputs").and_then(serde_json::Value::as_array)
+        && inputs.len() != 2
+    {
+        return Err(bad(format!(
+            "'inputs' lists {} file(s); a case has two: subject and clip, or the window and the segments or curves",
+            inputs.len()
+        )));
+    }
+    let case: CaseFile = serde_json::from_value(value).map_err(|e| bad(format!("not a verify case file: {e}")))?;
     let replay = replay_case::checked(&case, registry, path)?;
     Ok((case, replay))
 }

@@ -20,8 +20,11 @@ pub struct Row {
     pub cases: usize,
     /// Checked results: one per case, operation and fill rule (one per case for lines).
     pub runs: usize,
-    /// Results the oracle rejected (including refusals and failed area identities).
+    /// Results the oracle rejected (including refusals and failures to answer): at most `runs`.
     pub oracle_failures: usize,
+    /// Cases and fill rules whose four results break an area identity (counted apart from the
+    /// runs, of which they are not one).
+    pub identity_failures: usize,
     /// Results that differ by region (or by visible intervals) from another clipper's while both
     /// passed the oracle, per other clipper; where one side failed, the difference is counted as
     /// that side's oracle failure instead.
@@ -41,6 +44,7 @@ impl Row {
         self.cases += other.cases;
         self.runs += other.runs;
         self.oracle_failures += other.oracle_failures;
+        self.identity_failures += other.identity_failures;
         for (name, n) in &other.disagreements {
             *self.disagreements.entry(name).or_default() += n;
         }
@@ -65,6 +69,8 @@ pub struct Summary {
     pub failures_not_recorded: usize,
     /// True when a clipper of this project failed the oracle (the run exits non-zero).
     pub ours_failed: bool,
+    /// The part of the cases run, none for all.
+    pub partition: Option<crate::partition::Partition>,
 }
 
 impl Summary {
@@ -84,6 +90,7 @@ impl Summary {
                     cases: r.cases,
                     runs: r.runs,
                     oracle_failures: r.oracle_failures,
+                    identity_failures: r.identity_failures,
                     disagreements: r.disagreements.iter().map(|(k, v)| ((*k).to_owned(), *v)).collect(),
                     bridges: r.bridges,
                 })
@@ -92,6 +99,7 @@ impl Summary {
             failures_not_recorded: self.failures_not_recorded,
             ours_failed: self.ours_failed,
             cases,
+            partition: self.partition,
         }
     }
 }
@@ -107,8 +115,12 @@ pub fn table(rows: &[Row]) -> String {
         }
     }
     let with_bridges = rows.iter().any(|r| r.bridges.is_some());
+    let with_identities = rows.iter().any(|r| r.kind == "polygon");
     let mut header = vec!["clipper".to_owned(), "kind".into(), "workload".into(), "cases".into(), "runs".into()];
     header.push("oracle fail".into());
+    if with_identities {
+        header.push("identity fail".into());
+    }
     header.extend(others.iter().map(|o| format!("vs {o}")));
     if with_bridges {
         header.push("bridges".into());
@@ -123,6 +135,9 @@ pub fn table(rows: &[Row]) -> String {
             r.runs.to_string(),
             r.oracle_failures.to_string(),
         ];
+        if with_identities {
+            cells.push(if r.kind == "polygon" { r.identity_failures.to_string() } else { "-".to_owned() });
+        }
         cells.extend(others.iter().map(|o| r.disagreements.get(o).map_or("-".to_owned(), |n| n.to_string())));
         if with_bridges {
             cells.push(r.bridges.map_or("-".to_owned(), |b| b.to_string()));

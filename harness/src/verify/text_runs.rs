@@ -10,7 +10,7 @@ use clip_text::{DEFAULT_TOLERANCE, OutlineFont, Strategy, Text, TextWindow, clip
 use clip_vatti::Vatti;
 
 use super::finding::{CaseOutcome, Finding, Kind};
-use crate::checks::Check;
+use crate::checks::{Check, Failing};
 use crate::registry::Origin;
 
 /// The rows verify shows for text: the notes' strategies on DejaVu Sans (string, character,
@@ -47,6 +47,7 @@ impl TextPlan {
                         fill: None,
                         clipper: name,
                         check: Check::Oracle,
+                        how: Failing::Wrong,
                         message,
                     });
                 }

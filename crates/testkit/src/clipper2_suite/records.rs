@@ -75,6 +75,7 @@ fn parse_record(number: usize, start: usize, lines: &[&str]) -> Result<Clipper2C
         clips: Vec::new(),
     };
     let (mut op, mut fill) = (None, None);
+    let (mut area, mut count) = (None, None);
     let mut block = Block::None;
     for (offset, raw) in lines.iter().enumerate().skip(1) {
         let line = raw.trim();
@@ -96,9 +97,9 @@ fn parse_record(number: usize, start: usize, lines: &[&str]) -> Result<Clipper2C
                 other => return Err(fail(offset, format!("unknown FILLRULE '{other}'"))),
             });
         } else if let Some(v) = value("SOL_AREA:") {
-            case.area = v.parse().map_err(|_| fail(offset, format!("SOL_AREA '{v}' is not an integer")))?;
+            area = Some(v.parse().map_err(|_| fail(offset, format!("SOL_AREA '{v}' is not an integer")))?);
         } else if let Some(v) = value("SOL_COUNT:") {
-            case.count = v.parse().map_err(|_| fail(offset, format!("SOL_COUNT '{v}' is not an integer")))?;
+            count = Some(v.parse().map_err(|_| fail(offset, format!("SOL_COUNT '{v}' is not an integer")))?);
         } else if line.starts_with("SUBJECTS_OPEN") {
             block = Block::OpenSubjects;
         } else if line.starts_with("SUBJECTS") {
@@ -120,6 +121,13 @@ fn parse_record(number: usize, start: usize, lines: &[&str]) -> Result<Clipper2C
     }
     case.op = op.ok_or_else(|| fail(0, "no CLIPTYPE".into()))?;
     case.fill = fill.ok_or_else(|| fail(0, "no FILLRULE".into()))?;
+    // Every record of Clipper2's files states both, even as 0 or -1 ("not checked"): a record
+    // without them is cut short, and must not pass for one expecting nothing.
+    case.area = area.ok_or_else(|| fail(0, "no SOL_AREA: the record is cut short".into()))?;
+    case.count = count.ok_or_else(|| fail(0, "no SOL_COUNT: the record is cut short".into()))?;
+    if case.subjects.is_empty() && case.open_subjects.is_empty() {
+        return Err(fail(0, "no SUBJECTS or SUBJECTS_OPEN paths: the record is cut short".into()));
+    }
     Ok(case)
 }
 
@@ -142,7 +150,7 @@ mod tests {
 
     #[test]
     fn records_with_all_path_kinds() {
-        let text = "CAPTION: 1. \nCLIPTYPE: DIFFERENCE\nFILLRULE: EVENODD\nSOL_AREA: 8\nSOL_COUNT: 1\nSUBJECTS\n5,4, 8,4, 8,8, 5,8\nSUBJECTS_OPEN\n6,7, 6,5\nCLIPS\n7,9, 4,9, 4,6, 7,6\n\nCAPTION: 2.\nCLIPTYPE: UNION\nFILLRULE: NONZERO\nSUBJECTS\n0 0 1 0 1 1\n";
+        let text = "CAPTION: 1. \nCLIPTYPE: DIFFERENCE\nFILLRULE: EVENODD\nSOL_AREA: 8\nSOL_COUNT: 1\nSUBJECTS\n5,4, 8,4, 8,8, 5,8\nSUBJECTS_OPEN\n6,7, 6,5\nCLIPS\n7,9, 4,9, 4,6, 7,6\n\nCAPTION: 2.\nCLIPTYPE: UNION\nFILLRULE: NONZERO\nSOL_AREA: 0\nSOL_COUNT: 0\nSUBJECTS\n0 0 1 0 1 1\n";
         let cases = parse_clipper2(text);
         assert_eq!(cases.len(), 2);
         let c = cases[0].as_ref().unwrap();
@@ -153,9 +161,23 @@ mod tests {
         assert_eq!((c.number, c.line, c.subjects[0].len()), (2, 13, 3));
     }
 
+    /// A record cut after its header was read as one expecting area 0 and count 0, which every
+    /// clipper's empty answer passes (issue 28).
+    #[test]
+    fn a_record_cut_short_is_malformed_naming_what_is_missing() {
+        let header = "CAPTION: 1.\nCLIPTYPE: UNION\nFILLRULE: EVENODD\n";
+        let e = parse_clipper2(header).remove(0).unwrap_err();
+        assert_eq!((e.line, e.problem.as_str()), (1, "no SOL_AREA: the record is cut short"));
+        let e = parse_clipper2(&format!("{header}SOL_AREA: 5\n")).remove(0).unwrap_err();
+        assert_eq!(e.problem, "no SOL_COUNT: the record is cut short");
+        let e = parse_clipper2(&format!("{header}SOL_AREA: 5\nSOL_COUNT: 1\n")).remove(0).unwrap_err();
+        assert!(e.problem.starts_with("no SUBJECTS"), "{}", e.problem);
+        assert!(parse_clipper2(&format!("{header}SOL_AREA: 5\nSOL_COUNT: 1\nSUBJECTS\n0,0, 1,0, 1,1\n"))[0].is_ok());
+    }
+
     #[test]
     fn a_malformed_record_is_reported_with_its_line_and_the_rest_still_read() {
-        let text = "CAPTION: 1.\nCLIPTYPE: UNION\nFILLRULE: EVENODD\nSUBJECTS\n1,2, 3\nCAPTION: 2.\nCLIPTYPE: NOPE\nCAPTION: 3.\nCLIPTYPE: XOR\nFILLRULE: POSITIVE\n";
+        let text = "CAPTION: 1.\nCLIPTYPE: UNION\nFILLRULE: EVENODD\nSUBJECTS\n1,2, 3\nCAPTION: 2.\nCLIPTYPE: NOPE\nCAPTION: 3.\nCLIPTYPE: XOR\nFILLRULE: POSITIVE\nSOL_AREA: -1\nSOL_COUNT: -1\nSUBJECTS_OPEN\n0,0, 1,1\n";
         let cases = parse_clipper2(text);
         assert_eq!(cases[0].as_ref().unwrap_err().line, 5);
         assert!(cases[1].as_ref().unwrap_err().problem.contains("NOPE"));
