@@ -97,11 +97,8 @@ impl Chart {
         root.fill(&WHITE)?;
         let root = root.titled(&self.title, ("sans-serif", 22))?;
         let (plot, legend) = root.split_horizontally(PLOT_SIZE.0);
-        let mut ctx = ChartBuilder::on(&plot)
-            .margin(20)
-            .x_label_area_size(55)
-            .y_label_area_size(80)
-            .build_cartesian_2d(x, y)?;
+        let mut ctx =
+            ChartBuilder::on(&plot).margin(20).x_label_area_size(55).y_label_area_size(80).build_cartesian_2d(x, y)?;
         ctx.configure_mesh()
             .x_labels(6)
             .y_labels(10)
