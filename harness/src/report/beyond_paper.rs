@@ -204,7 +204,8 @@ pub fn large_table(records: &[LargeRecord]) -> (String, Option<(f64, f64)>) {
     (intro + &table(&head, &body), liu.map(|l| (best_indexed, l)))
 }
 
-/// ns per segment against edges on the concave windows (Cyrus-Beck on the convex ones), log-log.
+/// ns per segment against edges on the concave windows (Cyrus-Beck on the convex ones), log-log;
+/// the title names the shapes its series were timed on.
 pub fn chart(rows: &[Row], set: &str) -> Chart {
     let series = COLUMNS
         .iter()
@@ -224,9 +225,17 @@ pub fn chart(rows: &[Row], set: &str) -> Chart {
                 spread: Vec::new(),
             })
         })
-        .collect();
+        .collect::<Vec<Series>>();
+    // The title names every window shape the series were timed on.
+    let convex = series.iter().any(|s| s.label.ends_with("(convex windows)"));
+    let concave = series.iter().any(|s| !s.label.ends_with("(convex windows)"));
+    let windows = match (concave, convex) {
+        (true, true) => "lobed concave windows (Cyrus-Beck: convex windows of the same size)",
+        (false, true) => "convex windows",
+        _ => "lobed concave windows",
+    };
     Chart {
-        title: format!("Line clipping beyond Table 4: {set} segments, lobed concave windows"),
+        title: format!("Line clipping beyond Table 4: ns per {set} segment against window edges, {windows}"),
         x_label: "window edges".to_owned(),
         y_label: "time per segment (ns)".to_owned(),
         log_x: true,
@@ -377,8 +386,32 @@ mod tests {
         assert_eq!(crossover(&rows, "concave", "long"), Some(1000));
         assert_eq!(crossover(&rows, "convex", "long"), None);
         let text = reading(&rows, Some((0.5, 20.0)));
+        assert!(chart(&rows, "long").title.ends_with(", lobed concave windows"), "{}", chart(&rows, "long").title);
         assert!(text.contains("from 1000 edges on"), "{text}");
         assert!(text.contains("1/120 of Liu's"), "{text}");
         assert!(text.contains("40x"), "{text}");
+    }
+
+    #[test]
+    fn the_title_names_the_convex_windows_cyrus_beck_ran_on() {
+        let raw = vec![
+            m("concave-long", "liu", 50, 40.0),
+            m("convex-long", "cyrus-beck", 50, 20.0),
+            m("convex-long", "liu", 50, 30.0),
+        ];
+        let rows = rows(&raw);
+        let chart = chart(&rows, "long");
+        assert!(
+            chart.title.contains("concave") && chart.title.contains("Cyrus-Beck: convex windows"),
+            "{}",
+            chart.title
+        );
+        assert!(chart.series.iter().any(|s| s.label.ends_with("(convex windows)")));
+        let only_convex = chart_of(&[m("convex-long", "cyrus-beck", 50, 20.0)]);
+        assert!(only_convex.ends_with(", convex windows"), "{only_convex}");
+    }
+
+    fn chart_of(raw: &[Measurement]) -> String {
+        chart(&rows(raw), "long").title
     }
 }

@@ -4,6 +4,7 @@
 
 mod case_geojson;
 mod curve_runs;
+mod failure_mark;
 mod finding;
 mod line_runs;
 mod polygon_runs;

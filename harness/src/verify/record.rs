@@ -1,17 +1,21 @@
 //! Turns a failure into a folder a person can look at and replay: the case regenerated and
-//! shrunk, inputs and every clipper's output as WKT, a case file, an SVG picture, the case as
+//! shrunk, inputs and every clipper's output as WKT, a case file, an SVG picture (inputs and each
+//! output in panels apart, the failing point or edge marked with its coordinates), the case as
 //! GeoJSON (`case.geojson`, for QGIS or geojson.io), a replay line.
 
 use std::path::{Path, PathBuf};
 
 use clip_core::{BoolOp, Polygons, Segment, VisiblePiece};
-use clip_testkit::case_record::{CurvePicture, curves_svg, lines_svg, polygons_svg, polygons_to_wkt, segments_to_wkt};
+use clip_testkit::case_record::{
+    CurvePicture, curves_svg, line_failure_svg, polygon_failure_svg, polygons_to_wkt, segments_to_wkt,
+};
 use clip_testkit::shrink::{shrink_polygons, shrink_segments};
 use clip_testkit::workload::{CURVES_PER_CASE, curve_case, line_case, polygon_case};
 use serde::{Deserialize, Serialize};
 
 use super::case_geojson::{Layer, case_geojson};
 use super::curve_runs::{case_objects, curve_failure, run_objects};
+use super::failure_mark::{line_mark, polygon_mark};
 use super::finding::{Finding, Kind, window_name};
 use super::polygon_runs::takes;
 use super::recheck::{Target, line_failure, polygon_failure};
@@ -219,7 +223,13 @@ fn polygon_files(
         }
     }
     let named: Vec<(&str, &Polygons)> = outputs.iter().map(|(n, p)| (n.as_str(), p)).collect();
-    files.push(("picture.svg".into(), polygons_svg(&subject, &clip, &named)));
+    // The failing clipper's output first, its panel beside the inputs.
+    let mut named = named;
+    named.sort_by_key(|(n, _)| *n != finding.clipper);
+    let failing = named.first().filter(|(n, _)| *n == finding.clipper).map(|(_, p)| *p);
+    let caption = format!("{} {}: {}", finding.clipper, case.check, case.shrunk);
+    let mark = polygon_mark(&case.shrunk, failing);
+    files.push(("picture.svg".into(), polygon_failure_svg(&subject, &clip, fill, &named, &caption, mark)));
     let mut layers = vec![Layer::Rings("subject", "subject", &subject), Layer::Rings("clip", "clip", &clip)];
     layers.extend(named.iter().map(|(n, p)| Layer::Rings("output", n, p)));
     files.push(("case.geojson".into(), case_geojson(&layers, Some(fill.name()))));
@@ -259,7 +269,12 @@ fn line_files(
         files.push((format!("output-{}.wkt", e.clipper.name()), text + "\n"));
     }
     let named: Vec<(&str, &[VisiblePiece])> = outputs.iter().map(|(n, p)| (*n, p.as_slice())).collect();
-    files.push(("picture.svg".into(), lines_svg(&window, &segments, &named)));
+    let mut named = named;
+    named.sort_by_key(|(n, _)| *n != finding.clipper);
+    let failing = named.first().filter(|(n, _)| *n == finding.clipper).map(|(_, p)| *p);
+    let caption = format!("{} {}: {}", finding.clipper, case.check, case.shrunk);
+    let mark = line_mark(&case.shrunk, &segments, failing);
+    files.push(("picture.svg".into(), line_failure_svg(&window, &segments, &named, &caption, mark)));
     let pieces: Vec<(&str, Vec<Segment>)> =
         named.iter().map(|(n, p)| (*n, p.iter().map(|v| v.piece).collect())).collect();
     let mut layers =

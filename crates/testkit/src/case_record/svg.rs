@@ -3,9 +3,9 @@
 use clip_core::{FillRule, Point, Polygons, Rect, Segment, VisiblePiece};
 use core::fmt::Write;
 
-const SUBJECT_COLOUR: &str = "#1f77b4";
-const CLIP_COLOUR: &str = "#d62728";
-const OUTPUT_COLOURS: [&str; 6] = ["#2ca02c", "#ff7f0e", "#9467bd", "#17becf", "#8c564b", "#e377c2"];
+pub(super) const SUBJECT_COLOUR: &str = "#1f77b4";
+pub(super) const CLIP_COLOUR: &str = "#d62728";
+pub(super) const OUTPUT_COLOURS: [&str; 6] = ["#2ca02c", "#ff7f0e", "#9467bd", "#17becf", "#8c564b", "#e377c2"];
 const WIDTH: f64 = 800.0;
 const PAD: f64 = 20.0;
 /// Outputs with at most this many vertices get a dot on each vertex (shows spikes and bridges).
@@ -15,18 +15,24 @@ const DOTTED_VERTICES: usize = 400;
 pub(super) struct View {
     bounds: Rect,
     pub(super) scale: f64,
-    height: f64,
+    pub(super) width: f64,
+    pub(super) height: f64,
 }
 
 impl View {
     pub(super) fn new(bounds: Rect) -> View {
+        View::sized(bounds, WIDTH)
+    }
+
+    /// A view `width` px wide (a panel of a picture of several).
+    pub(super) fn sized(bounds: Rect, width: f64) -> View {
         let b = if bounds.is_empty() { Rect::new(0.0, 0.0, 1.0, 1.0) } else { bounds };
         let extent = b.extent().max(f64::MIN_POSITIVE);
         let b = b.inflate(extent * 0.02);
         let (w, h) = (b.width().max(extent * 0.05), b.height().max(extent * 0.05));
-        let scale = (WIDTH - 2.0 * PAD) / w;
-        let height = (h * scale + 2.0 * PAD).min(4.0 * WIDTH);
-        View { bounds: Rect::new(b.min.x, b.min.y, b.min.x + w, b.min.y + h), scale, height }
+        let scale = (width - 2.0 * PAD) / w;
+        let height = (h * scale + 2.0 * PAD).min(4.0 * width);
+        View { bounds: Rect::new(b.min.x, b.min.y, b.min.x + w, b.min.y + h), scale, width, height }
     }
 
     pub(super) fn map(&self, p: Point) -> (f64, f64) {
@@ -35,7 +41,8 @@ impl View {
 
     pub(super) fn open(&self) -> String {
         format!(
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{WIDTH}\" height=\"{h:.0}\" viewBox=\"0 0 {WIDTH} {h:.0}\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h:.0}\" viewBox=\"0 0 {w} {h:.0}\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+            w = self.width,
             h = self.height
         )
     }
@@ -83,7 +90,7 @@ fn svg_fill_rule(fill: FillRule) -> Option<&'static str> {
     }
 }
 
-fn vertex_dots(out: &mut String, view: &View, p: &Polygons, colour: &str) {
+pub(super) fn vertex_dots(out: &mut String, view: &View, p: &Polygons, colour: &str) {
     if p.vertex_count() > DOTTED_VERTICES {
         return;
     }
@@ -111,7 +118,7 @@ pub(super) fn legend(out: &mut String, entries: &[(String, &str)]) {
     }
 }
 
-fn describe(name: &str, p: &Polygons) -> String {
+pub(super) fn describe(name: &str, p: &Polygons) -> String {
     format!("{name}: {} ring(s), {} vertices", p.rings.len(), p.vertex_count())
 }
 
@@ -150,7 +157,7 @@ pub fn polygons_svg_with_fill(
     out
 }
 
-fn line(out: &mut String, view: &View, s: Segment, colour: &str, width: f64) {
+pub(super) fn line(out: &mut String, view: &View, s: Segment, colour: &str, width: f64) {
     let ((x1, y1), (x2, y2)) = (view.map(s.a), view.map(s.b));
     let _ = writeln!(
         out,
