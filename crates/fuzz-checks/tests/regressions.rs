@@ -428,3 +428,12 @@ fn line_clippers_edge_nearly_parallel_to_a_far_segment() {
 fn vatti_ulp_long_self_overlap() {
     regression("vatti", "ulp-long-self-overlap");
 }
+
+/// One ring runs three times along y = x + 0.6, through vertices that f64 holds only nearly on
+/// that line: the even-odd union has slivers about 1e-15 wide made of input vertices alone. Its
+/// edges were long, so the form check skipped the output, and a sliver inside an outer was left
+/// running counter-clockwise. A ring that thin is now near rounding as a short edge is.
+#[test]
+fn vatti_sliver_of_nearly_collinear_input_vertices_counter_clockwise() {
+    regression("vatti", "sliver-of-nearly-collinear-input-vertices-counter-clockwise");
+}

@@ -14,11 +14,11 @@ use crate::raw_rings::RawRings;
 /// The most output edges checked: the pair test is quadratic in the worst case.
 pub(crate) const MAX_EDGES: usize = 1024;
 
-/// Output edges shorter than this many ulps of the inputs' largest coordinate make the output
-/// worth checking: features that small are where rounded crossings misplace edges.
+/// Output edges shorter, or rings thinner, than this many ulps of the inputs' largest coordinate
+/// make the output worth checking: features that small are where rounding misplaces edges.
 const ULPS_NEAR_ROUNDING: f64 = 4096.0;
 
-/// True when `rings` (at most [`MAX_EDGES`] edges, with an edge within
+/// True when `rings` (at most [`MAX_EDGES`] edges, with an edge or a ring's width within
 /// [`ULPS_NEAR_ROUNDING`] ulps of the largest coordinate of `subject` and `clip`) cross,
 /// overlap, or nest against their orientation. False for outputs not checked.
 pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
@@ -29,8 +29,8 @@ pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[
     crossing_or_overlapping(rings) || nested_against_orientation(rings)
 }
 
-/// Whether an output edge is shorter than [`ULPS_NEAR_ROUNDING`] ulps of the inputs' largest
-/// coordinate. Plain loops: this runs on every small clip.
+/// Whether an output edge is shorter, or a ring thinner, than [`ULPS_NEAR_ROUNDING`] ulps of the
+/// inputs' largest coordinate. Plain loops: this runs on every small clip.
 fn near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
     reaches_rounding(subject, clip, rings.iter().map(|r| r.points.as_slice()))
 }
@@ -41,17 +41,26 @@ pub(crate) fn raw_near_rounding(subject: &Polygons, clip: &Polygons, raw: &RawRi
 }
 
 fn reaches_rounding<'a>(subject: &Polygons, clip: &Polygons, rings: impl Iterator<Item = &'a [Point]>) -> bool {
-    let mut shortest2 = f64::INFINITY;
+    let (mut shortest2, mut thinnest) = (f64::INFINITY, f64::INFINITY);
     for p in rings.filter(|p| !p.is_empty()) {
-        let mut a = p[p.len() - 1];
+        // Twice the area (about the first vertex, so that far coordinates cancel) over the L1
+        // perimeter: at most the ring's width. A sliver of long edges (nearly collinear input
+        // vertices) is as near rounding as a short edge.
+        let o = p[0];
+        let (mut a, mut twice_area, mut perimeter) = (p[p.len() - 1], 0.0, 0.0);
         for &b in p {
             let (dx, dy) = (b.x - a.x, b.y - a.y);
             shortest2 = shortest2.min(dx * dx + dy * dy);
+            perimeter += dx.abs() + dy.abs();
+            twice_area += (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
             a = b;
         }
+        if perimeter > 0.0 {
+            thinnest = thinnest.min(twice_area.abs() / perimeter);
+        }
     }
-    // The largest coordinate that leaves the shortest edge above the limit.
-    let largest_far = shortest2.sqrt() / (ULPS_NEAR_ROUNDING * f64::EPSILON);
+    // The largest coordinate that leaves the shortest edge and the thinnest ring above the limit.
+    let largest_far = shortest2.sqrt().min(thinnest) / (ULPS_NEAR_ROUNDING * f64::EPSILON);
     [subject, clip]
         .iter()
         .flat_map(|p| &p.rings)
