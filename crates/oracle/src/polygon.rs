@@ -1,18 +1,18 @@
 //! The exact, library-independent oracle for boolean operations on polygons.
 //!
-//! Three checks, cheapest first to fail usefully: the output's form ([`check_valid_output`], for
-//! conventional output), exact membership at sample points away from every edge, and the area
-//! of the symmetric difference between the output and the exact answer ([`region_area`]).
+//! Three checks, cheapest first to fail usefully: the output's form ([`check_form`], for
+//! conventional output: strict and exact), exact membership at sample points away from every
+//! edge, and the area of the symmetric difference between the output and the exact answer
+//! ([`region_area`]).
 
+mod bridges;
+mod form;
 mod region_area;
 pub(crate) mod sampling;
-mod validity;
 
+pub use bridges::{bridge_count, bridge_count_along, bridge_count_within};
+pub use form::{EdgeAt, FormFailure, Visit, check_form};
 pub use region_area::{region_area, region_area_with_witness, region_area_work};
-pub use validity::{
-    bridge_count, bridge_count_along, bridge_count_within, check_valid_output, check_valid_output_within,
-    check_valid_result_within,
-};
 
 use clip_core::{BoolOp, FillRule, OutputForm, Point, Polygons, Rect};
 use core::fmt;
@@ -60,15 +60,15 @@ pub fn rounding_distance(b: &Rect) -> f64 {
     ROUNDING_ULPS * (binade * f64::EPSILON).max(f64::MIN_POSITIVE)
 }
 
-/// How many rounding distances ([`rounding_distance`]) a vertex may sit off where it belongs
-/// before the validity check calls a crossing near it real: a computed crossing is off by a few
-/// ulps, and a shallow angle between the edges moves the crossing it makes farther still (found by
-/// the `vatti` fuzz target at 1e15, where 2 ulps were not enough).
+/// How many rounding distances ([`rounding_distance`]) apart two edges of bridged output may be
+/// and still count as one bridge: their ends were rounded separately, and a shallow angle moves
+/// them farther still (found by the `vatti` fuzz target at 1e15, where 2 ulps were not enough).
 pub const SNAP_ROUNDINGS: f64 = 4.0;
 
-/// The distance within which a crossing of two output edges counts as touching, and an edge
-/// pair as a bridge: the relative tolerance of the box's extent, or [`SNAP_ROUNDINGS`] rounding
-/// distances at its magnitude where that is larger.
+/// The distance within which an edge pair counts as a bridge, and (times [`MARGIN_FACTOR`]) the
+/// margin sample points keep from every edge: the relative tolerance of the box's extent, or
+/// [`SNAP_ROUNDINGS`] rounding distances at its magnitude where that is larger. The form check
+/// uses no such distance: it is exact.
 pub fn snap_distance(b: &Rect, relative: f64) -> f64 {
     (b.extent() * relative).max(SNAP_ROUNDINGS * rounding_distance(b))
 }
@@ -100,7 +100,7 @@ impl OutputRules {
 
     /// The rules for a clipper whose output takes `form`, on `subject` read under `input_fill`.
     /// [`OutputForm::ConventionalForConventionalSubject`] is checked as conventional output when
-    /// the subject passes [`check_valid_output`] (exactly) and the rule is not negative (which
+    /// the subject passes [`check_form`] and the rule is not negative (which
     /// reads a conventional subject as empty), and by region under the input's rule otherwise.
     pub fn for_form(
         form: OutputForm,
@@ -112,7 +112,7 @@ impl OutputRules {
             OutputForm::Conventional => true,
             OutputForm::InputRule => false,
             OutputForm::ConventionalForConventionalSubject => {
-                input_fill != FillRule::Negative && check_valid_output(subject).is_ok()
+                input_fill != FillRule::Negative && check_form(subject).is_ok()
             }
         };
         if conventional {
@@ -126,9 +126,8 @@ impl OutputRules {
 /// Why an output is wrong.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PolygonFailure {
-    /// The output's form breaks the conventions: crossing rings, wrong orientation, a zero-area
-    /// ring, a repeated vertex, a non-finite coordinate.
-    Invalid(String),
+    /// The output's form breaks the conventions: which fault, and where.
+    Invalid(FormFailure),
     /// A sample point away from every edge is on the wrong side.
     WrongPoint {
         /// The point.
@@ -174,9 +173,8 @@ impl fmt::Display for PolygonFailure {
 
 impl std::error::Error for PolygonFailure {}
 
-/// The full oracle for one output of `subject op clip` under `fill`: validity (if
-/// conventional; crossings within [`snap_distance`] of an end point count as touching, see
-/// [`check_valid_output_within`]), every sample point (a 12 x 12 grid and 112 seeded random points over the
+/// The full oracle for one output of `subject op clip` under `fill`: its form (if
+/// conventional, [`check_form`], exact), every sample point (a 12 x 12 grid and 112 seeded random points over the
 /// bounding box of inputs and output) farther than a margin from every edge classified exactly,
 /// and the area of the symmetric difference within the tolerance. On success, that area: two
 /// outputs that pass differ by at most the sum of theirs (the triangle inequality), which lets a
@@ -191,7 +189,7 @@ pub fn check_polygon_result(
 ) -> Result<f64, PolygonFailure> {
     let Some(b) = finite_box(subject, clip, output)? else { return Ok(0.0) };
     if rules.conventional {
-        check_valid_result_within(output, snap_distance(&b, rules.relative_tolerance), [subject, clip])?;
+        check_valid_output(output)?;
     }
     check_sample_points(subject, clip, op, fill, output, rules, &b)?;
     let tol = tolerance(subject, clip, rules.relative_tolerance);
@@ -222,11 +220,24 @@ pub fn check_polygon_samples(
 /// The first step of both checks: every output vertex finite, then the box of inputs and output;
 /// `None` when it is empty (nothing anywhere, so nothing to check).
 fn finite_box(subject: &Polygons, clip: &Polygons, output: &Polygons) -> Result<Option<Rect>, PolygonFailure> {
-    if let Some(p) = output.points().find(|p| !p.is_finite()) {
-        return Err(PolygonFailure::Invalid(format!("non-finite output vertex ({}, {})", p.x, p.y)));
+    if let Some(failure) = check_finite(output) {
+        return Err(PolygonFailure::Invalid(failure));
     }
     let b = subject.bounds().union(clip.bounds()).union(output.bounds());
     Ok((!b.is_empty()).then_some(b))
+}
+
+/// [`check_form`] as an oracle verdict.
+pub fn check_valid_output(output: &Polygons) -> Result<(), PolygonFailure> {
+    check_form(output).map_err(PolygonFailure::Invalid)
+}
+
+/// The first non-finite vertex, if any (bridged output too is checked for it).
+fn check_finite(output: &Polygons) -> Option<FormFailure> {
+    output.rings.iter().enumerate().find_map(|(ring, r)| {
+        let vertex = r.points.iter().position(|p| !p.is_finite())?;
+        Some(FormFailure::NonFinite { ring, vertex, point: r.points[vertex] })
+    })
 }
 
 fn check_sample_points(

@@ -8,7 +8,7 @@
 //!   `rand_pcg::Pcg64` from a hash of the three, so cases do not depend on iteration order or
 //!   thread count. Polygon workloads [`workload::POLYGON_WORKLOADS`] (`vatti-t3`, `star`,
 //!   `scribble`, `scribble-rect`, `holes`, `multi`, `grid`, `large`, `spiky-box`,
-//!   `many-subjects`, and the sweep stresses `comb`, i_overlay's performance suite and `maps`,
+//!   `many-subjects`, `near-coincident`, and the sweep stresses `comb`, i_overlay's performance suite and `maps`,
 //!   which reads the world map in `testdata/world`), line workloads [`workload::LINE_WORKLOADS`]
 //!   (`wang-t4`, `lines-degenerate`, `lines-large`), curve workloads
 //!   [`workload::CURVE_WORKLOADS`] (`circles`, `ellipses`), and [`workload::hard_cases`], inputs

@@ -7,6 +7,7 @@ mod extensions;
 mod hard_cases;
 mod large_lines;
 mod maps;
+mod near_coincident;
 mod overlay_suite;
 mod shapes;
 mod text;
@@ -51,6 +52,7 @@ pub const POLYGON_WORKLOADS: &[&str] = &[
     "large",
     "spiky-box",
     "many-subjects",
+    "near-coincident",
     "comb",
     "nested",
     "concentric",
@@ -210,7 +212,10 @@ fn polygon_name(workload: &str) -> Result<&'static str, UnknownWorkload> {
 /// rectangle overlapping it (one in four clockwise), so the clippers' rectangle paths are checked
 /// on any subject under every fill rule; `many-subjects` is a subject of 4-40 edges over one clip polygon of
 /// [`MANY_SUBJECTS_CLIP_EDGES`] edges that is the same for every index of a seed (a sized case
-/// sizes that clip); the others draw 6-200 edges per operand, log-uniformly.
+/// sizes that clip); `near-coincident` is a star with notches and spikes narrower than 1e-12 of
+/// its extent against a copy turned by 1e-16 to 1e-6 rad, shifted by a few ulps, or tracing its
+/// edges a few ulps off (index mod 3; see its module); the others draw 6-200 edges per operand,
+/// log-uniformly.
 ///
 /// The workloads that stress a sweep (a sized case gives their edge count over both operands):
 /// `comb` (even indices a comb against a comb shifted half a tooth, odd ones a comb against a
@@ -282,6 +287,10 @@ fn make_polygon_case(
             let s = extensions::many_subjects_subject(&mut rng, index);
             let what = format!("many-subjects subject {} edges over a fixed star clip of {m} edges", s.len());
             (s.into(), extensions::many_subjects_clip(seed, m).into(), what)
+        }
+        ("near-coincident", _) => {
+            let n = size(&mut rng);
+            near_coincident::near_coincident(&mut rng, index, n)
         }
         ("scribble", _) => {
             let (n, m) = (size(&mut rng), size(&mut rng));

@@ -138,3 +138,29 @@ fn hard_cases_are_valid_and_invalid_inputs_are_refused() {
         assert!(validate_polygons(&p, Operand::Subject).is_err(), "{name} accepted");
     }
 }
+
+#[test]
+fn near_coincident_clips_lie_within_a_millionth_of_the_extent_of_their_subjects() {
+    for index in 0..30 {
+        let c = polygon_case("near-coincident", 1, index, WindowKind::Any).unwrap();
+        let extent = c.subject.bounds().extent();
+        let kind = ["turned", "shifted", "traced"][index % 3];
+        assert!(c.description.contains(kind), "{}", c.description);
+        // Every clip vertex is near the subject's boundary (the traced kind pulls one edge in six
+        // a few per cent off), and a clip is the subject itself only where the case says so.
+        let off = |q: clip_core::Point| {
+            c.subject
+                .edges()
+                .map(|e| clip_core::predicates::orient2d(e.a, e.b, q).abs() / e.length())
+                .fold(f64::MAX, f64::min)
+        };
+        let near = c.clip.points().filter(|&&q| off(q) <= 1e-6 * extent).count();
+        let want = if kind == "traced" { c.clip.vertex_count() / 2 } else { c.clip.vertex_count() };
+        assert!(near >= want, "{}: {near} of {} vertices near the subject", c.description, c.clip.vertex_count());
+        let copy = c.clip.rings[0] == c.subject.rings[0] || c.clip.rings[0] == c.subject.rings[0].reversed();
+        assert_eq!(copy, c.description.contains("exact copy"), "{}", c.description);
+    }
+    let sized = polygon_case_sized("near-coincident", 1, 0, 10_000, WindowKind::Any).unwrap();
+    let n = sized.subject.vertex_count();
+    assert!((9_000..=11_000).contains(&n), "{n}");
+}

@@ -54,7 +54,10 @@ impl Group {
 /// window-limited clippers join (Sutherland-Hodgman, four-state, and Clipper2's dedicated
 /// rectangle clipper `clipper2-rect`, the peer to compare them with); `spiky-box` (Vatti's
 /// envelope pre-filter) at the large sizes and `many-subjects` (small subjects over one clip of
-/// 10^3 or 10^5 edges, 10^4 quick; times per subject; the prepared clip's case), all operations.
+/// 10^3 or 10^5 edges, 10^4 quick; times per subject; the prepared clip's case), all operations;
+/// `near-coincident` (a notched star against its copy turned by a tiny angle, shifted by ulps or
+/// traced a few ulps off, one case of each) at the large sizes, all operations: what robustness
+/// costs where every crossing is shallow.
 ///
 /// Then the groups that stress a sweep, sized by the edges of both operands from 10^2 to 10^6
 /// (10^5 quick), peak memory from 10^4 on (`lines-net` from 10^3): `comb` (comb against comb
@@ -129,6 +132,16 @@ pub fn groups(quick: bool) -> Vec<Group> {
             // Clipper2 spends minutes per subject over a 10^5-edge lobed clip (its intersection
             // list), so quick runs stop at 10^4.
             sizes: if quick { vec![1_000, 10_000] } else { vec![1_000, 100_000] },
+            ops: BoolOp::ALL.to_vec(),
+            memory_from: None,
+        },
+        Group {
+            label: "near-coincident",
+            workload: "near-coincident",
+            window: WindowKind::Any,
+            // Index mod 3 picks the clip: turned, shifted, traced.
+            indices: vec![0, 1, 2],
+            sizes: large.clone(),
             ops: BoolOp::ALL.to_vec(),
             memory_from: None,
         },

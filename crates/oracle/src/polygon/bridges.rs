@@ -1,0 +1,182 @@
+//! The count of zero-width bridges in bridged output (docs/DESIGN.md): pairs of edges running
+//! both ways along one stretch.
+
+use clip_core::predicates::on_segment;
+use clip_core::{Point, Polygons, Rect, Segment, SegmentIntersection, segment_intersection};
+
+/// One edge of an output ring, with its box.
+#[derive(Clone, Copy, Debug)]
+struct RingEdge {
+    segment: Segment,
+    bounds: Rect,
+}
+
+fn ring_edges(p: &Polygons) -> Vec<RingEdge> {
+    p.edges().map(|segment| RingEdge { segment, bounds: segment.bounds() }).collect()
+}
+
+/// Calls `visit` once on every pair of edges whose bounding boxes meet, each pair in the one
+/// cell of a [`CellIndex`] that holds the lower-left corner of the overlap of their boxes. So
+/// output whose edges crowd along a curve (10^4-gons) or across a checkerboard costs about
+/// linear time rather than quadratic.
+fn for_each_close_pair(edges: &[RingEdge], mut visit: impl FnMut(&RingEdge, &RingEdge)) {
+    let boxes: Vec<Rect> = edges.iter().map(|e| e.bounds).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return };
+    for members in index.entries.chunk_by(|a, b| a.0 == b.0) {
+        for (k, &(cell, i)) in members.iter().enumerate() {
+            let e = &edges[i as usize];
+            for &(_, j) in &members[k + 1..] {
+                let f = &edges[j as usize];
+                if !e.bounds.intersects(&f.bounds) {
+                    continue;
+                }
+                let corner = Point::new(e.bounds.min.x.max(f.bounds.min.x), e.bounds.min.y.max(f.bounds.min.y));
+                if index.cell(corner) == cell {
+                    visit(e, f);
+                }
+            }
+        }
+    }
+}
+
+/// Boxes binned into a uniform grid whose square cells are about as large as a typical box,
+/// kept sparse as sorted (cell, box) entries: every cell a box covers lists it.
+struct CellIndex {
+    origin: Point,
+    size: f64,
+    columns: u64,
+    rows: u64,
+    /// (cell key, box index), sorted.
+    entries: Vec<(u64, u32)>,
+}
+
+impl CellIndex {
+    /// The index of `boxes`, or `None` when there are none. Cells start at the median box's
+    /// larger side and double until the boxes cover at most eight cells each on average (a few
+    /// long boxes among many small ones must not cover millions).
+    fn new(boxes: &[Rect]) -> Option<CellIndex> {
+        let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
+        if b.is_empty() {
+            return None;
+        }
+        let mut sides: Vec<f64> = boxes.iter().map(|r| r.width().max(r.height())).collect();
+        let middle = sides.len() / 2;
+        let median = *sides.select_nth_unstable_by(middle, f64::total_cmp).1;
+        let mut size = median.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
+        loop {
+            let covered: f64 =
+                boxes.iter().map(|r| ((r.width() / size).floor() + 2.0) * ((r.height() / size).floor() + 2.0)).sum();
+            if covered <= 8.0 * boxes.len() as f64 || !size.is_finite() {
+                break;
+            }
+            size *= 2.0;
+        }
+        let count = |span: f64| ((span / size).floor() as u64).saturating_add(1);
+        let mut index =
+            CellIndex { origin: b.min, size, columns: count(b.width()), rows: count(b.height()), entries: Vec::new() };
+        let mut entries = Vec::with_capacity(2 * boxes.len());
+        for (i, r) in boxes.iter().enumerate() {
+            let ((x0, y0), (x1, y1)) = (index.coordinates(r.min), index.coordinates(r.max));
+            for y in y0..=y1 {
+                entries.extend((x0..=x1).map(|x| (y * index.columns + x, i as u32)));
+            }
+        }
+        entries.sort_unstable();
+        index.entries = entries;
+        Some(index)
+    }
+
+    /// The column and row holding `p` (clamped to the grid).
+    fn coordinates(&self, p: Point) -> (u64, u64) {
+        let index = |v: f64, lo: f64, n: u64| {
+            let k = ((v - lo) / self.size).floor();
+            if k > 0.0 { (k as u64).min(n - 1) } else { 0 }
+        };
+        (index(p.x, self.origin.x, self.columns), index(p.y, self.origin.y, self.rows))
+    }
+
+    /// The key of the cell holding `p`.
+    fn cell(&self, p: Point) -> u64 {
+        let (x, y) = self.coordinates(p);
+        y * self.columns + x
+    }
+}
+
+/// True when `p` is on `e` (exactly, when `snap` is 0) or within `snap` of it.
+fn within(p: Point, e: Segment, snap: f64) -> bool {
+    if snap == 0.0 {
+        return on_segment(p, e);
+    }
+    let (dx, dy) = (e.b.x - e.a.x, e.b.y - e.a.y);
+    if p.x < e.a.x.min(e.b.x) - snap || p.x > e.a.x.max(e.b.x) + snap {
+        return false;
+    }
+    let length2 = dx * dx + dy * dy;
+    let t = if length2 > 0.0 { (((p.x - e.a.x) * dx + (p.y - e.a.y) * dy) / length2).clamp(0.0, 1.0) } else { 0.0 };
+    let (ex, ey) = (p.x - (e.a.x + t * dx), p.y - (e.a.y + t * dy));
+    ex * ex + ey * ey <= snap * snap
+}
+
+/// The number of zero-width bridges in an output: pairs of edges (of any rings) that overlap
+/// along a positive length while running in opposite directions. Such pairs enclose no area;
+/// Sutherland-Hodgman leaves them along the window when a concave result falls apart.
+pub fn bridge_count(output: &Polygons) -> usize {
+    bridge_count_within(output, 0.0)
+}
+
+/// [`bridge_count`], where edges within `snap` of each other's line count as overlapping: on a
+/// slanted window side, the two edges of a bridge end at points rounded separately, so they are
+/// collinear only to within rounding. With `snap` 0 the overlap is exact.
+pub fn bridge_count_within(output: &Polygons, snap: f64) -> usize {
+    count_opposite_pairs(&ring_edges(output), snap)
+}
+
+/// How many pairs of `edges` overlap running in opposite directions (within `snap` when positive).
+fn count_opposite_pairs(edges: &[RingEdge], snap: f64) -> usize {
+    let mut count = 0;
+    for_each_close_pair(edges, |e, f| {
+        count += usize::from(if snap > 0.0 {
+            opposite_within(e.segment, f.segment, snap)
+        } else {
+            opposite_overlap(e.segment, f.segment)
+        });
+    });
+    count
+}
+
+/// The bridges of docs/DESIGN.md: [`bridge_count_within`] counted only among the output edges
+/// that run along a side of `window` (both ends on it, or within `snap` of it). Zero-width spikes
+/// and edges running both ways that a subject brings inside the window are its own, not the
+/// clipper's, and are not counted.
+pub fn bridge_count_along(output: &Polygons, window: &Polygons, snap: f64) -> usize {
+    let on_a_side = |e: &RingEdge| window.edges().any(|w| within(e.segment.a, w, snap) && within(e.segment.b, w, snap));
+    let edges: Vec<RingEdge> = ring_edges(output).into_iter().filter(on_a_side).collect();
+    count_opposite_pairs(&edges, snap)
+}
+
+/// Exactly collinear, overlapping along a positive length, in opposite directions.
+fn opposite_overlap(e: Segment, f: Segment) -> bool {
+    if let SegmentIntersection::Overlap(_) = segment_intersection(e, f) {
+        let (d, g) = (e.b - e.a, f.b - f.a);
+        // Collinear, so the signs along either axis agree; use the larger component.
+        if d.x.abs() >= d.y.abs() { (d.x > 0.0) != (g.x > 0.0) } else { (d.y > 0.0) != (g.y > 0.0) }
+    } else {
+        false
+    }
+}
+
+/// Opposite directions, `f` within `snap` of `e`'s line, and overlapping along it by more than
+/// `snap`.
+fn opposite_within(e: Segment, f: Segment, snap: f64) -> bool {
+    let d = e.b - e.a;
+    let length = (d.x * d.x + d.y * d.y).sqrt();
+    if length <= snap {
+        return false;
+    }
+    let (ux, uy) = (d.x / length, d.y / length);
+    let along = |p: Point| (p.x - e.a.x) * ux + (p.y - e.a.y) * uy;
+    let across = |p: Point| ((p.x - e.a.x) * uy - (p.y - e.a.y) * ux).abs();
+    let (fa, fb) = (along(f.a), along(f.b));
+    let overlap = fa.max(fb).min(length) - fa.min(fb).max(0.0);
+    fb < fa && overlap > snap && across(f.a) <= snap && across(f.b) <= snap
+}
