@@ -207,6 +207,63 @@ fn area_identity_failures_are_counted_apart_from_the_runs_oracle_failures() {
     assert!(table.lines().next().unwrap().contains("identity fail"), "{table}");
 }
 
+/// An external clipper that answers polygon requests with the subject unclipped (a wrong
+/// region) while the subject has at least `WRONG_FROM` vertices, and declines smaller ones with
+/// an error reply (its process kept, so shrinking stays quick).
+const WRONG_THEN_DECLINING: &str = r#"import json, sys
+WRONG_FROM = int(sys.argv[1])
+print(json.dumps({"protocol": 1, "name": "wrong, then declining", "polygon": {"ops": ["intersection"],
+    "fill_rules": ["even-odd", "non-zero", "positive", "negative"], "window": "rectangle", "output": "bridged"}}), flush=True)
+for line in sys.stdin:
+    request = json.loads(line)
+    if sum(len(ring) for ring in request["subject"]) >= WRONG_FROM:
+        print(json.dumps({"id": request["id"], "rings": request["subject"]}), flush=True)
+    else:
+        print(json.dumps({"id": request["id"], "error": "declined on purpose"}), flush=True)
+"#;
+
+/// A wrong answer found on a large case shrank to whatever smaller case failed at all: here the
+/// clipper's refusal of small inputs (issue 28). The shrunk case fails as the case found does, by
+/// the oracle's verdict on a wrong region, on the smallest subject still answered wrong.
+#[test]
+fn a_wrong_answer_shrinks_to_a_smaller_wrong_answer_not_to_a_refusal() {
+    let dir = scratch("shrink-same-way");
+    let script = dir.join("wrong_then_declining.py");
+    std::fs::write(&script, WRONG_THEN_DECLINING).unwrap();
+    let external = format!("liar=python3 '{}' 8", script.display());
+    let json = dir.join("summary.json");
+    let o = clipbench(&[
+        "verify",
+        "--external",
+        &external,
+        "--clipper",
+        "liar",
+        "--workload",
+        "star",
+        "--cases",
+        "1",
+        "--fill",
+        "even-odd",
+        "--threads",
+        "1",
+        "--out",
+        dir.join("failures").to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let summary: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let cases = found(&dir, &summary);
+    assert_eq!(cases.len(), 1, "{summary}");
+    let case = &cases[0];
+    let (generated, shrunk) =
+        (case["generated_vertices"][0].as_u64().unwrap(), case["shrunk_vertices"][0].as_u64().unwrap());
+    let message = case["shrunk"].as_str().unwrap();
+    assert!(!message.contains("declined on purpose"), "shrunk to the refusal: {message}");
+    assert_eq!(case["check"], "oracle");
+    assert!((8..generated).contains(&shrunk), "{shrunk} of {generated} vertices: {message}");
+}
+
 #[test]
 fn an_external_line_clipper_is_judged_by_the_line_oracle() {
     let dir = scratch("lines");
