@@ -437,3 +437,11 @@ fn vatti_ulp_long_self_overlap() {
 fn vatti_sliver_of_nearly_collinear_input_vertices_counter_clockwise() {
     regression("vatti", "sliver-of-nearly-collinear-input-vertices-counter-clockwise");
 }
+
+/// A geo boolean-op fixture whose ring holds a position of one number: the conformance reader
+/// handed it to the geojson crate's conversion, which indexes x and y unchecked and panicked.
+/// The fixture reader now checks positions and rings first, as `clip`'s GeoJSON reader does.
+#[test]
+fn readers_geo_fixture_with_a_position_of_one_number() {
+    regression("readers", "geo-fixture-with-a-position-of-one-number");
+}
