@@ -13,6 +13,7 @@ pub mod markdown;
 mod oracle_failures;
 mod provenance_line;
 pub mod results_folder;
+pub mod revisions;
 pub mod sections;
 pub mod summary;
 pub mod table3;
