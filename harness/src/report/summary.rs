@@ -4,19 +4,19 @@
 //! then one picture of trust against speed.
 
 use std::collections::BTreeMap;
-use std::path::Path;
 
-use super::bench_tables::{Points, points};
+use super::bench_points::{Point, Points};
+use super::derived::Derived;
 use super::markdown::{num, num_interval, table};
+use super::results_folder::ResultsFolder;
 use crate::cli_error::CliError;
 use crate::measure::interval::Interval;
-use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::geometric_mean;
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
 use crate::registry::Registry;
-use crate::results_files::bench::{BASELINE, CSV, MemoryRecord, TEXT_GROUP, read_memory};
-use crate::results_files::verify::{VerifyRow, read};
+use crate::results_files::bench::{BASELINE, MemoryRecord};
+use crate::results_files::verify::VerifyRow;
 
 /// The trust-against-speed plot.
 pub const PLOT: &str = "summary-trust-speed.svg";
@@ -102,8 +102,7 @@ pub fn rows(verify: &[VerifyRow], bench: &Points, memory: &[MemoryRecord]) -> BT
                 rows.last_mut().expect("just pushed")
             }
         };
-        let mine: Vec<(usize, &super::bench_tables::Point)> =
-            bench.iter().filter(|(k, _)| k.3 == clipper).map(|(k, p)| (k.2, p)).collect();
+        let mine: Vec<(usize, &Point)> = bench.iter().filter(|(k, _)| k.3 == clipper).map(|(k, p)| (k.2, p)).collect();
         row.bench_wrong = Some((mine.iter().filter(|(_, p)| !p.trusted()).count(), mine.len()));
         let ratios = |large: bool| -> Vec<&Interval> {
             mine.iter()
@@ -214,22 +213,16 @@ pub fn chart(rows: &[SummaryRow]) -> Chart {
     }
 }
 
-/// The summary section (after drawing its plot); `None` when `out` holds neither verify nor
-/// bench results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let verify = read(out)?.map(|v| v.rows).unwrap_or_default();
-    let bench_rows: Vec<Measurement> = if out.join(CSV).exists() {
-        read_csv(&out.join(CSV))?.into_iter().filter(|r: &Measurement| r.workload != TEXT_GROUP).collect()
-    } else {
-        Vec::new()
-    };
-    if verify.is_empty() && bench_rows.is_empty() {
+/// The summary section and its plot; `None` when the folder holds neither verify nor bench
+/// results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let verify = folder.verify()?.map_or(&[][..], |v| v.rows.as_slice());
+    if verify.is_empty() && folder.polygon_bench_rows()?.is_empty() {
         return Ok(None);
     }
-    let by_kind = rows(&verify, &points(&bench_rows), &read_memory(out)?);
+    let by_kind = rows(verify, folder.bench_points()?, folder.bench_memory()?);
     let mut text = format!(
-        "## Summary: which clipper to trust, and how fast it is\n\n\
-         Per kind of clipper: where it comes from; the results the exact oracle rejected out of those it checked, \
+        "Per kind of clipper: where it comes from; the results the exact oracle rejected out of those it checked, \
          over every workload `verify` ran (section \"Where the clippers disagree with the oracle\"); the bench points \
          where it answered wrongly (those count in no ratio); its time relative to `{BASELINE}` as the geometric mean \
          of its bench ratios below and from {LARGE_FROM} edges, with the geometric means of the points' 95% interval \
@@ -240,20 +233,20 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
             text.push_str(&format!("{kind} clippers:\n\n{}\n", kind_table(rows)));
         }
     }
-    if let Some(polygon) = by_kind.get("polygon") {
-        let chart = chart(polygon);
-        if !chart.series.is_empty() {
-            chart.write_svg(&out.join(PLOT))?;
-            text.push_str(&format!("![trust against speed]({PLOT})\n\n"));
-        }
+    let chart = by_kind.get("polygon").map(|polygon| chart(polygon)).filter(|c| !c.series.is_empty());
+    if chart.is_some() {
+        text.push_str(&format!("![trust against speed]({PLOT})\n\n"));
     }
-    Ok(Some(text))
+    let derived = Derived::new(text);
+    Ok(Some(match chart {
+        Some(chart) => derived.with_plot(PLOT, chart),
+        None => derived,
+    }))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::bench_tables::Point;
 
     fn verify_row(clipper: &str, origin: &str, kind: &str, failures: usize, runs: usize) -> VerifyRow {
         VerifyRow {

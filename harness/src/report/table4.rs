@@ -1,11 +1,10 @@
 //! Wang et al.'s Table 4 from its raw CSV: per window, each line clipper's time per batch, the
 //! gain of New2 over Liu beside the paper's, the rejection stages' shares, a plot and a reading.
 
-use std::collections::BTreeMap;
-use std::path::Path;
-
+use super::derived::Derived;
 use super::markdown::{header, num, table};
 use super::provenance_line::provenance_line;
+use super::results_folder::ResultsFolder;
 use crate::cli_error::CliError;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::median;
@@ -15,9 +14,8 @@ use crate::plot::palette::SIZE_ROWS;
 use crate::results_files::wang_table4::{
     CSV, META, STAGE_TIMES_CSV, STAGES_CSV, StageRecord, StageTimeRecord, WINDOWS_CSV, WindowRecord,
 };
+use std::collections::BTreeMap;
 
-/// The markdown table file.
-pub const MD: &str = "wang-table4.md";
 /// The gain plot.
 pub const PLOT: &str = "wang-table4-gain.svg";
 
@@ -474,23 +472,17 @@ pub fn reading(rows: &[Row]) -> String {
     text
 }
 
-/// Recomputes the table from `out`'s CSVs and writes its markdown and plot.
-pub fn write(out: &Path) -> Result<(), CliError> {
-    super::write_markdown(out, MD, section(out)?)
-}
-
-/// The table's markdown section after writing its plot; `None` when `out` holds no Table 4 results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let csv = out.join(CSV);
+/// The table's section and its plot; `None` when the folder holds no Table 4 results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let csv = folder.join(CSV);
     if !csv.exists() {
         return Ok(None);
     }
     let measurements: Vec<Measurement> = read_csv(&csv)?;
-    let windows: Vec<WindowRecord> = read_csv(&out.join(WINDOWS_CSV))?;
-    let stages: Vec<StageRecord> = read_csv(&out.join(STAGES_CSV))?;
+    let windows: Vec<WindowRecord> = read_csv(&folder.join(WINDOWS_CSV))?;
+    let stages: Vec<StageRecord> = read_csv(&folder.join(STAGES_CSV))?;
     let rows = rows(&measurements, &windows);
-    chart(&rows).write_svg(&out.join(PLOT))?;
-    let stage_times_path = out.join(STAGE_TIMES_CSV);
+    let stage_times_path = folder.join(STAGE_TIMES_CSV);
     let stage_times = if stage_times_path.exists() {
         let records: Vec<StageTimeRecord> = read_csv(&stage_times_path)?;
         let (md, sums) = stage_times_table(&records);
@@ -506,11 +498,10 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     } else {
         String::new()
     };
-    let (provenance, notes) = provenance_line(&out.join(META))?;
+    let (provenance, notes) = provenance_line(&folder.join(META))?;
     let param = |k: &str| provenance.parameters.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0);
-    Ok(Some(format!(
-        "## Wang et al. 2005, Table 4: line clipping against concave windows\n\n\
-         Workload `wang-t4`: {} random segments (endpoints uniform in 800 x 600) clipped against star-shaped concave \
+    let body = format!(
+        "Workload `wang-t4`: {} random segments (endpoints uniform in 800 x 600) clipped against star-shaped concave \
          windows of 6 to 50 edges at the paper's two size rows; W1 = 600 / L and W2 = 600 x 800 / MEB area are \
          measured on our windows (L read as MEB width + height, see `clip_testkit::workload::wang`). Times are \
          medians over {} interleaved repetitions (geo: {}) of one batch, in ms per batch of 10000 segments, which is \
@@ -527,7 +518,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         stages_table(&stages),
         stage_times,
         notes
-    )))
+    );
+    Ok(Some(Derived::new(body).with_plot(PLOT, chart(&rows))))
 }
 
 #[cfg(test)]

@@ -15,6 +15,8 @@ pub const JSON: &str = "verify.json";
 pub const META: &str = "verify.meta.json";
 /// The folder of shrunk failure cases, one sub-folder per [`CaseEntry`].
 pub const FAILURES: &str = "verify-failures";
+/// The picture of the failure in each case's folder, which the report shows.
+pub const PICTURE: &str = "picture.svg";
 
 /// A verify run: counts per clipper and workload, and the failure cases written.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

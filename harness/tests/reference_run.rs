@@ -1,0 +1,23 @@
+//! The committed reference run (`scripts/reference-run.sh`): every result in results/ measured at
+//! one git revision, from committed code, so the revision REPORT.md states names what measured
+//! every figure.
+
+use std::collections::BTreeSet;
+use std::path::Path;
+
+use clipbench::report::revisions::of_folder;
+
+#[test]
+#[ignore = "enabled once results/ holds one reference run"]
+fn every_committed_result_names_one_revision() {
+    let results = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("results");
+    let revisions = of_folder(&results).unwrap();
+    assert!(!revisions.is_empty(), "no .meta.json sidecar in {}", results.display());
+    let distinct: BTreeSet<&str> = revisions.values().map(String::as_str).collect();
+    assert_eq!(distinct.len(), 1, "results/ holds more than one revision: {revisions:#?}");
+    let revision = distinct.first().copied().unwrap_or_default();
+    assert!(
+        !revision.ends_with("+dirty") && revision != "unknown",
+        "results/ was measured at {revision}, which no commit names"
+    );
+}
