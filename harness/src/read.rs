@@ -4,6 +4,8 @@ mod geojson_checks;
 mod wkt_geometry;
 mod wkt_text;
 
+pub use geojson_checks::RingEnds;
+
 use std::fmt;
 use std::path::Path;
 use std::str::FromStr;
@@ -185,7 +187,7 @@ fn geojson_geometries(json: &geojson::GeoJson) -> Result<Parsed, String> {
     let mut beyond_xy = false;
     for (place, g) in found {
         let Some(g) = g else { continue };
-        let geometry = geo_geometry(&g.value, &place, &mut beyond_xy)?;
+        let geometry = geo_geometry(&g.value, &place, RingEnds::MustClose, &mut beyond_xy)?;
         parsed.geometries.push(Placed { place, geometry });
     }
     if beyond_xy {
@@ -194,11 +196,16 @@ fn geojson_geometries(json: &geojson::GeoJson) -> Result<Parsed, String> {
     Ok(parsed)
 }
 
-/// A GeoJSON geometry at `place` as geo types, its positions and rings checked first: the
-/// conversion indexes a position's x and y unchecked, so a position `[0]` would panic in it.
-/// Sets `beyond_xy` when a position has more than x and y.
-pub fn geo_geometry(value: &geojson::GeometryValue, place: &Place, beyond_xy: &mut bool) -> Result<Geometry, String> {
-    geojson_checks::check_geometry(value, place, beyond_xy)?;
+/// A GeoJSON geometry at `place` as geo types, its positions (and rings, as `ends` says) checked
+/// first: the conversion indexes a position's x and y unchecked, so a position `[0]` would panic
+/// in it. Sets `beyond_xy` when a position has more than x and y.
+pub fn geo_geometry(
+    value: &geojson::GeometryValue,
+    place: &Place,
+    ends: RingEnds,
+    beyond_xy: &mut bool,
+) -> Result<Geometry, String> {
+    geojson_checks::check_geometry(value, place, ends, beyond_xy)?;
     Geometry::try_from(value).map_err(|e| format!("{place}: unusable GeoJSON: {e}"))
 }
 
