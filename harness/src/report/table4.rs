@@ -2,10 +2,12 @@
 //! gain of New2 over Liu beside the paper's, the rejection stages' shares, a plot and a reading.
 
 use super::derived::Derived;
-use super::markdown::{header, num, table};
+use super::markdown::{header, num, num_interval, table};
 use super::provenance_line::provenance_line;
 use super::results_folder::ResultsFolder;
+use super::wording::Sides;
 use crate::cli_error::CliError;
+use crate::measure::interval::{CaseSamples, Interval, bootstrap, mean_ratio, seed_of};
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::median;
 use crate::papers::{WANG_TABLE4, wang_row};
@@ -49,6 +51,9 @@ pub struct Row {
     pub ms: [f64; 6],
     /// Repetitions behind each median.
     pub repetitions: [usize; 6],
+    /// Liu's time over New2's with its 95% bootstrap interval over the repetitions: above 1 where
+    /// New2 is faster.
+    pub speedup: Interval,
 }
 
 impl Row {
@@ -64,6 +69,13 @@ impl Row {
     pub fn gain(&self) -> f64 {
         (self.ms[0] - self.ms[2]) * 100.0 / self.ms[2]
     }
+
+    /// [`Row::gain`] with its 95% interval.
+    pub fn gain_interval(&self) -> Interval {
+        let percent = |r: f64| (r - 1.0) * 100.0;
+        let s = self.speedup;
+        Interval { estimate: self.gain(), low: percent(s.low), high: percent(s.high) }
+    }
 }
 
 /// Computes the rows from raw timings and the window records.
@@ -78,6 +90,14 @@ pub fn rows(measurements: &[Measurement], windows: &[WindowRecord]) -> Vec<Row> 
             let size_row = SIZE_ROWS_NAMES.iter().position(|(n, _)| *n == w.size_row)?;
             let case = format!("{}-{}", w.shape, w.size_row);
             let series = COLUMNS.map(|(c, _)| times.get(&(case.clone(), w.edges, c.to_owned())));
+            let speedup = match (series[0], series[2]) {
+                (Some(liu), Some(new2)) => bootstrap(
+                    &[CaseSamples { times: liu, baseline: Some(new2) }],
+                    seed_of(&format!("wang-t4/{case}/{}", w.edges)),
+                    mean_ratio,
+                ),
+                _ => None,
+            };
             Some(Row {
                 shape: w.shape.clone(),
                 edges: w.edges,
@@ -85,6 +105,7 @@ pub fn rows(measurements: &[Measurement], windows: &[WindowRecord]) -> Vec<Row> 
                 w1_w2: (w.w1, w.w2),
                 ms: series.map(|s| s.map_or(f64::NAN, |v| median(v))),
                 repetitions: series.map(|s| s.map_or(0, Vec::len)),
+                speedup: speedup.unwrap_or(Interval::exact(f64::NAN)),
             })
         })
         .collect()
@@ -123,7 +144,7 @@ pub fn markdown_table(rows: &[Row]) -> String {
                 num(r.ms[0], 3),
                 num(r.ms[1], 3),
                 num(r.ms[2], 3),
-                format!("**{}**", num(r.gain(), 1)),
+                format!("**{}**", num_interval(&r.gain_interval(), 1)),
                 pv(|p| p.liu),
                 pv(|p| p.new1),
                 pv(|p| p.new2),
@@ -160,7 +181,7 @@ pub fn convex_table(rows: &[Row]) -> String {
                 num(r.ms[0], 3),
                 num(r.ms[1], 3),
                 num(r.ms[2], 3),
-                num(r.gain(), 1),
+                num_interval(&r.gain_interval(), 1),
                 num(r.ms[5], 3),
                 num(r.ms[3], 3),
                 num(r.ms[4], 2),
@@ -403,8 +424,19 @@ pub fn chart(rows: &[Row]) -> Chart {
     }
 }
 
-/// A short reading, every statement computed from the rows.
+/// A short reading, every statement computed from the rows; a claim counts only the windows whose
+/// interval supports it.
 pub fn reading(rows: &[Row]) -> String {
+    // The gain moves only when the two windows' intervals do not overlap.
+    let trend = |a: &Interval, b: &Interval| {
+        if b.low > a.high {
+            "grows"
+        } else if b.high < a.low {
+            "falls"
+        } else {
+            "does not move beyond its intervals"
+        }
+    };
     let mut text = String::new();
     for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
         let ours: Vec<&Row> = rows.iter().filter(|r| r.shape == "concave" && r.size_row == i).collect();
@@ -412,20 +444,21 @@ pub fn reading(rows: &[Row]) -> String {
         let pa = wang_row(a.edges, i).map_or(f64::NAN, |p| p.gain);
         let pb = wang_row(b.edges, i).map_or(f64::NAN, |p| p.gain);
         text.push_str(&format!(
-            "- {label}: our gain goes from {}% at {} edges to {}% at {}; the paper's from {}% to {}%.\n",
-            num(a.gain(), 1),
+            "- {label}: our gain (%) {} from {} at {} edges to {} at {}; the paper's from {}% to {}%.\n",
+            trend(&a.gain_interval(), &b.gain_interval()),
+            num_interval(&a.gain_interval(), 1),
             a.edges,
-            num(b.gain(), 1),
+            num_interval(&b.gain_interval(), 1),
             b.edges,
             num(pa, 1),
             num(pb, 1)
         ));
     }
     let concave: Vec<&Row> = rows.iter().filter(|r| r.shape == "concave").collect();
-    let faster = concave.iter().filter(|r| r.ms[2] < r.ms[0]).count();
+    let sides = Sides::of_speedups(concave.iter().map(|r| &r.speedup));
     text.push_str(&format!(
-        "- New2 is faster than Liu on {faster} of {} concave windows (the paper: 12 of 12).\n",
-        concave.len()
+        "- Against Liu, New2 is {} (the paper: faster at 12 of 12).\n",
+        sides.sentence("concave windows")
     ));
     let box45: Vec<f64> = concave.iter().map(|r| (r.ms[1] - r.ms[2]) * 100.0 / r.ms[2]).collect();
     let paper45: Vec<f64> = WANG_TABLE4.iter().map(|r| (r.new1 - r.new2) * 100.0 / r.new2).collect();
@@ -573,6 +606,7 @@ mod tests {
             w1_w2: (2.7, 41.0),
             ms: [0.18, f64::NAN, new2_ms, f64::NAN, f64::NAN, f64::NAN],
             repetitions: [1; 6],
+            speedup: Interval::exact(0.18 / new2_ms),
         };
         // Mixed batch: Liu 18 ns (order 2), New2 21.5 (order 7): the excess 5 exceeds the boxes' 4.
         let text = stage_reading(&sums, &[row(0.215)]);
@@ -605,6 +639,35 @@ mod tests {
         assert_eq!(rows[0].gain(), 50.0);
         assert_eq!(rows[0].repetitions, [3, 0, 2, 0, 0, 0]);
         assert!(rows[0].ms[3].is_nan());
-        assert!(reading(&rows).contains("our gain goes from 50.0% at 6 edges"));
+        assert!(reading(&rows).contains("from 50.0 (50.0-4400.0) at 6 edges"), "{}", reading(&rows));
+    }
+
+    #[test]
+    fn a_window_whose_interval_crosses_one_is_not_counted_faster() {
+        let reps = |c: &str, times: &[f64], edges: usize| {
+            times.iter().map(|&t| Measurement { size: edges, ..m(c, 0, t) }).collect::<Vec<_>>()
+        };
+        let mut raw = reps("liu", &[3.0, 3.1, 2.9, 3.0, 3.05], 6);
+        raw.extend(reps("virtual-box", &[2.0, 2.1, 1.9, 2.0, 2.05], 6));
+        raw.extend(reps("liu", &[1.0, 1.2, 0.8, 1.1, 0.9], 8));
+        raw.extend(reps("virtual-box", &[1.0, 0.9, 1.1, 1.2, 0.8], 8));
+        let window = |edges| WindowRecord {
+            shape: "concave".into(),
+            size_row: "W1".into(),
+            edges,
+            w1: 2.7,
+            w2: 41.0,
+            paper_w1: 2.76,
+            paper_w2: 40.0,
+        };
+        let rows = rows(&raw, &[window(6), window(8)]);
+        assert!(rows[0].speedup.above(1.0), "{:?}", rows[0].speedup);
+        assert!(!rows[1].speedup.above(1.0) && !rows[1].speedup.below(1.0), "{:?}", rows[1].speedup);
+        let text = reading(&rows);
+        assert!(
+            text.contains("New2 is faster at 1 of 2 concave windows, slower at 0, indistinguishable at 1"),
+            "{text}"
+        );
+        assert!(text.contains("our gain (%) falls from 50.0"), "{text}");
     }
 }
