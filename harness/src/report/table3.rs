@@ -5,7 +5,7 @@ use super::derived::Derived;
 use super::markdown::{header, num, num_interval, table};
 use super::provenance_line::provenance_line;
 use super::results_folder::ResultsFolder;
-use super::wording::Sides;
+use super::wording::{self, Sides};
 use crate::cli_error::CliError;
 use crate::measure::interval::{CaseSamples, Interval, bootstrap, mean_ratio, seed_of};
 use crate::measure::raw::{Measurement, read_csv};
@@ -178,23 +178,13 @@ pub fn reading(rows: &[Row]) -> String {
             "stays about level"
         }
     };
-    // Ours moves only when the two sizes' intervals do not overlap.
-    let our_trend = |a: &Interval, b: &Interval| {
-        if b.low > a.high {
-            "grows"
-        } else if b.high < a.low {
-            "falls"
-        } else {
-            "does not move beyond its intervals"
-        }
-    };
     let mut text = String::new();
     for (i, name) in ["clip", "fill", "total"].iter().enumerate() {
         let (a, b) = (&first.improvement_interval[i], &last.improvement_interval[i]);
         let (pa, pb) = (paper(first.edges, i), paper(last.edges, i));
         text.push_str(&format!(
             "- Our {name} improvement factor {} from {} at {} edges to {} at {}; the paper's {} from {} to {}.\n",
-            our_trend(a, b),
+            wording::trend(a, b),
             num_interval(a, 2),
             first.edges,
             num_interval(b, 2),

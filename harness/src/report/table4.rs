@@ -5,7 +5,7 @@ use super::derived::Derived;
 use super::markdown::{header, num, num_interval, table};
 use super::provenance_line::provenance_line;
 use super::results_folder::ResultsFolder;
-use super::wording::Sides;
+use super::wording::{self, Sides};
 use crate::cli_error::CliError;
 use crate::measure::interval::{CaseSamples, Interval, bootstrap, mean_ratio, seed_of};
 use crate::measure::raw::{Measurement, read_csv};
@@ -427,16 +427,6 @@ pub fn chart(rows: &[Row]) -> Chart {
 /// A short reading, every statement computed from the rows; a claim counts only the windows whose
 /// interval supports it.
 pub fn reading(rows: &[Row]) -> String {
-    // The gain moves only when the two windows' intervals do not overlap.
-    let trend = |a: &Interval, b: &Interval| {
-        if b.low > a.high {
-            "grows"
-        } else if b.high < a.low {
-            "falls"
-        } else {
-            "does not move beyond its intervals"
-        }
-    };
     let mut text = String::new();
     for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
         let ours: Vec<&Row> = rows.iter().filter(|r| r.shape == "concave" && r.size_row == i).collect();
@@ -445,7 +435,7 @@ pub fn reading(rows: &[Row]) -> String {
         let pb = wang_row(b.edges, i).map_or(f64::NAN, |p| p.gain);
         text.push_str(&format!(
             "- {label}: our gain (%) {} from {} at {} edges to {} at {}; the paper's from {}% to {}%.\n",
-            trend(&a.gain_interval(), &b.gain_interval()),
+            wording::trend(&a.gain_interval(), &b.gain_interval()),
             num_interval(&a.gain_interval(), 1),
             a.edges,
             num_interval(&b.gain_interval(), 1),
