@@ -353,9 +353,8 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        Ok(clip_planned(subject, clip, None, op, fill, Plan::of(subject, clip, op, false)))
+        let plan = validated_plan(subject, clip, op, None)?;
+        Ok(clip_planned(subject, clip, None, op, fill, plan))
     }
 
     fn clip_trapezoids(
@@ -365,10 +364,18 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        Ok(trapezoids_planned(subject, clip, None, op, fill, Plan::of(subject, clip, op, false)))
+        let plan = validated_plan(subject, clip, op, None)?;
+        Ok(trapezoids_planned(subject, clip, None, op, fill, plan))
     }
+}
+
+/// Both operands checked, then the plan for them; `sweep` fixes the sweep instead of the rule's
+/// choice.
+fn validated_plan(subject: &Polygons, clip: &Polygons, op: BoolOp, sweep: Option<Sweep>) -> Result<Plan, ClipError> {
+    validate_polygons(subject, Operand::Subject)?;
+    validate_polygons(clip, Operand::Clip)?;
+    let plan = Plan::of(subject, clip, op, false);
+    Ok(Plan { sweep: sweep.or(plan.sweep), ..plan })
 }
 
 impl PolygonClipper for FixedSweep {
@@ -384,9 +391,7 @@ impl PolygonClipper for FixedSweep {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        let plan = Plan { sweep: Some(self.0), ..Plan::of(subject, clip, op, false) };
+        let plan = validated_plan(subject, clip, op, Some(self.0))?;
         Ok(clip_planned(subject, clip, None, op, fill, plan))
     }
 
@@ -397,9 +402,7 @@ impl PolygonClipper for FixedSweep {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        let plan = Plan { sweep: Some(self.0), ..Plan::of(subject, clip, op, false) };
+        let plan = validated_plan(subject, clip, op, Some(self.0))?;
         Ok(trapezoids_planned(subject, clip, None, op, fill, plan))
     }
 }
