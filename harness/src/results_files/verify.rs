@@ -42,17 +42,21 @@ pub struct VerifyResults {
     pub partition: Option<Partition>,
 }
 
-/// The counts of one clipper on one workload.
+/// The counts of one clipper on one workload, as the file holds them.
+pub type VerifyRow = CountsRow<String>;
+
+/// The counts of one clipper on one workload, its names of type `S`: owned in the file
+/// ([`VerifyRow`]), static while verify counts.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct VerifyRow {
+pub struct CountsRow<S: Ord> {
     /// Clipper name.
-    pub clipper: String,
+    pub clipper: S,
     /// `ours`, `peer`, `external` or `strict`.
-    pub origin: String,
+    pub origin: S,
     /// `polygon` or `line`.
-    pub kind: String,
+    pub kind: S,
     /// Workload name.
-    pub workload: String,
+    pub workload: S,
     /// Generated input cases the clipper ran on.
     pub cases: usize,
     /// Checked results: one per case, operation and fill rule (one per case for lines).
@@ -63,15 +67,17 @@ pub struct VerifyRow {
     /// counted in `oracle_failures` by files written before they were counted apart).
     #[serde(default)]
     pub identity_failures: usize,
-    /// Results that differ from another clipper's while both passed the oracle, per other clipper.
-    pub disagreements: BTreeMap<String, usize>,
+    /// Results that differ by region (or by visible intervals) from another clipper's while both
+    /// passed the oracle, per other clipper; where one side failed, the difference is counted as
+    /// that side's oracle failure instead.
+    pub disagreements: BTreeMap<S, usize>,
     /// Zero-width bridges in the output, for clippers whose capabilities say they make them.
     pub bridges: Option<usize>,
 }
 
-impl VerifyRow {
+impl<S: Ord + Clone> CountsRow<S> {
     /// Adds another part's counts of the same clipper, kind and workload.
-    pub fn add(&mut self, other: &VerifyRow) {
+    pub fn add(&mut self, other: &CountsRow<S>) {
         self.cases += other.cases;
         self.runs += other.runs;
         self.oracle_failures += other.oracle_failures;
@@ -81,6 +87,26 @@ impl VerifyRow {
         }
         if let Some(b) = other.bridges {
             self.bridges = Some(self.bridges.unwrap_or(0) + b);
+        }
+    }
+
+    /// The same counts with owned names, as the file holds them.
+    pub fn to_file(&self) -> VerifyRow
+    where
+        S: AsRef<str>,
+    {
+        let own = |s: &S| s.as_ref().to_owned();
+        CountsRow {
+            clipper: own(&self.clipper),
+            origin: own(&self.origin),
+            kind: own(&self.kind),
+            workload: own(&self.workload),
+            cases: self.cases,
+            runs: self.runs,
+            oracle_failures: self.oracle_failures,
+            identity_failures: self.identity_failures,
+            disagreements: self.disagreements.iter().map(|(k, v)| (own(k), *v)).collect(),
+            bridges: self.bridges,
         }
     }
 }
