@@ -5,7 +5,7 @@
 mod clipper;
 mod process;
 pub mod protocol;
-mod spec;
+pub mod spec;
 
 use std::path::PathBuf;
 use std::sync::Arc;
