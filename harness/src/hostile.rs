@@ -119,7 +119,11 @@ pub fn run(args: &HostileArgs, registry: Registry) -> Result<ExitCode, CliError>
     });
     let mut tallies: Vec<HostileTally> = entries
         .iter()
-        .map(|e| HostileTally { clipper: e.clipper.name().to_owned(), ..HostileTally::default() })
+        .map(|e| HostileTally {
+            clipper: e.clipper.name().to_owned(),
+            handshake: e.handshake.clone(),
+            ..HostileTally::default()
+        })
         .collect();
     let mut incidents = Vec::new();
     for (&(e, c, op, fill), (outcome, message)) in calls.iter().zip(results) {

@@ -144,11 +144,13 @@ pub fn run(args: &ConformanceArgs, registry: Registry) -> Result<ExitCode, CliEr
     let tallies: Vec<ConformanceTally> = clippers
         .iter()
         .zip(&tally)
-        .map(|((name, _), &(passed, failed, skipped))| ConformanceTally {
+        .enumerate()
+        .map(|(k, ((name, _), &(passed, failed, skipped)))| ConformanceTally {
             clipper: (*name).to_owned(),
             passed,
             failed,
             skipped,
+            handshake: if lines { None } else { registry.polygon[k].handshake.clone() },
         })
         .collect();
     for t in &tallies {

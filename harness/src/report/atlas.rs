@@ -206,6 +206,14 @@ impl Atlas {
         (!rows.is_empty()).then(|| rows.iter().fold((0, 0), |(f, n), r| (f + r.oracle_failures, n + r.runs)))
     }
 
+    /// The name an external clipper's handshake gave (library and version), from the first
+    /// file that recorded it.
+    fn handshake(&self, clipper: &str) -> Option<&str> {
+        let conformance = self.conformance.iter().flat_map(|(_, t)| t.iter().flatten()).filter(|t| t.clipper == clipper);
+        let hostile = self.hostile.iter().flatten().filter(|t| t.clipper == clipper);
+        conformance.filter_map(|t| t.handshake.as_deref()).chain(hostile.filter_map(|t| t.handshake.as_deref())).next()
+    }
+
     fn hostile_of(&self, clipper: &str) -> Option<&HostileTally> {
         self.hostile.as_ref()?.iter().find(|t| t.clipper == clipper)
     }
@@ -261,7 +269,7 @@ impl Atlas {
     }
 
     fn identity_table(&self, clippers: &[String]) -> String {
-        let head = ["clipper", "library", "language", "called as", "notes"].map(str::to_owned);
+        let head = ["clipper", "library", "language", "version (its handshake)", "called as", "notes"].map(str::to_owned);
         let body: Vec<Vec<String>> = clippers
             .iter()
             .map(|c| {
@@ -282,13 +290,19 @@ impl Atlas {
                     }
                     None => (ABSENT.to_owned(), ABSENT.to_owned(), ABSENT.to_owned()),
                 };
-                vec![format!("`{c}`"), library, language, called, self.notes(c)]
+                let version = match self.handshake(c) {
+                    Some(name) => name.to_owned(),
+                    None if spec.is_some() => "not recorded".to_owned(),
+                    None => ABSENT.to_owned(),
+                };
+                vec![format!("`{c}`"), library, language, version, called, self.notes(c)]
             })
             .collect();
         format!(
-            "Who they are. The version each ran is the one its handshake names (the runs behind these files did not \
-             record it; adapters/node/package.json and adapters/python/requirements.txt pin the npm and PyPI ones, \
-             Debian's packages the rest). The notes come from the counts below.\n\n{}\n",
+            "Who they are: library and language as adapters/clippers.toml describes them; the version is what each \
+             adapter's handshake said it runs, as `conformance --json` and `hostile --json` record it (\"not recorded\" \
+             in files from before they did: adapters/node/package.json and adapters/python/requirements.txt pin the \
+             npm and PyPI versions, Debian's packages the rest). The notes come from the counts below.\n\n{}\n",
             table(&head, &body)
         )
     }
@@ -455,5 +469,210 @@ fn suite_label(suite: &str) -> &str {
         "clipper2-polygons" => "Clipper2's Polygons.txt",
         "geo-booleanop" => "geo's fixtures",
         other => other,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A fresh folder for one test.
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("clipbench-atlas-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    fn write(path: &Path, text: &str) {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, text).unwrap();
+    }
+
+    fn verify_file(path: &Path, cases: usize, rows: &[(&str, &str, usize, usize)]) {
+        let results = VerifyResults {
+            seed: 1,
+            cases_per_workload: cases,
+            rows: rows
+                .iter()
+                .map(|&(clipper, workload, failures, runs)| VerifyRow {
+                    clipper: clipper.into(),
+                    origin: "external".into(),
+                    kind: "polygon".into(),
+                    workload: workload.into(),
+                    cases,
+                    runs,
+                    oracle_failures: failures,
+                    ..VerifyRow::default()
+                })
+                .collect(),
+            failures_recorded: 0,
+            failures_not_recorded: 0,
+            ours_failed: false,
+            cases: Vec::new(),
+            partition: None,
+        };
+        write(path, &serde_json::to_string(&results).unwrap());
+    }
+
+    /// The row of `clipper` in a markdown table, split into cells.
+    fn row(table: &str, clipper: &str) -> Vec<String> {
+        let start = format!("| `{clipper}` |");
+        let line = table.lines().find(|l| l.starts_with(&start)).unwrap_or_else(|| panic!("no {clipper}\n{table}"));
+        line.trim_matches('|').split(" | ").map(|c| c.trim().to_owned()).collect()
+    }
+
+    /// An atlas of two clippers: `ext` (described in the folder's clippers.toml) and vatti.
+    fn synthetic(name: &str) -> PathBuf {
+        let results = scratch(name);
+        let atlas = results.join(FOLDER);
+        write(
+            &atlas.join("clippers.toml"),
+            "[[clipper]]\nname = \"ext\"\ncommand = \"ext --serve\"\nlibrary = \"Ext 1\"\nlanguage = \"Go\"\n",
+        );
+        // A smaller run of `star` is superseded by the larger one; `holes` ran only small.
+        verify_file(&atlas.join("verify-20/star.json"), 20, &[("vatti", "star", 0, 320), ("ext", "star", 9, 80)]);
+        verify_file(&atlas.join("verify-200/star.json"), 200, &[("vatti", "star", 0, 3200), ("ext", "star", 7, 800)]);
+        verify_file(&atlas.join("verify-20/holes.json"), 20, &[("vatti", "holes", 0, 320), ("ext", "holes", 2, 80)]);
+        write(
+            &atlas.join(HOSTILE_JSON),
+            r#"{"tallies": [{"clipper": "ext", "runs": 10, "right": 5, "wrong": 2, "refused": 1, "crashed": 1, "hung": 1,
+                 "handshake": "ext 1.2.3 (rings as given)"}],
+               "incidents": [], "handshake": "ignored"}"#,
+        );
+        write(&atlas.join(conformance_file("clipper2-polygons", "txt")), "clipper2-polygons 2 ext: expected a result, got no\next: 4 passed, 1 failed, 2 skipped\n");
+        let geo = ConformanceResults {
+            suite: "geo-booleanop".into(),
+            clippers: vec![ConformanceTally { clipper: "vatti".into(), passed: 80, failed: 0, skipped: 3, handshake: None }],
+        };
+        write(&atlas.join(conformance_file("geo-booleanop", "json")), &serde_json::to_string(&geo).unwrap());
+        // The referee ran `grid`, which verify did not.
+        write(
+            &atlas.join("referee-50/grid.json"),
+            r#"{"referee": "cgal", "seed": 1, "cases_per_workload": 50, "workloads": [{"workload": "grid", "cases": 50,
+               "compared": 800, "failed": 0, "largest_relative": 1.5e-13, "largest_of_bound": 0.25, "beyond_rounding": 0}],
+               "beyond_rounding": [], "failures": []}"#,
+        );
+        results
+    }
+
+    fn read_synthetic(results: &Path) -> Atlas {
+        let atlas = results.join(FOLDER);
+        Atlas::read(&atlas, parse_file(&atlas.join("clippers.toml")).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn a_workload_without_a_file_is_not_run_and_a_clipper_a_stage_left_out_is_a_dash() {
+        let results = synthetic("cells");
+        let atlas = read_synthetic(&results);
+        let clippers = atlas.clippers();
+        assert_eq!(clippers, ["vatti", "clipper2", "ext"]);
+        let workloads = atlas.workloads();
+        assert_eq!(workloads, ["star", "holes", "grid"], "clip-testkit's order");
+        let verify = atlas.verify_table(&clippers, &workloads);
+        assert!(verify.contains("| clipper | `star` (200 cases) | `holes` (20 cases) | `grid` |"), "{verify}");
+        assert_eq!(row(&verify, "ext"), ["`ext`", "**7 / 800**", "**2 / 80**", "not run"]);
+        assert_eq!(row(&verify, "vatti"), ["`vatti`", "0 / 3200", "0 / 320", "not run"]);
+        assert_eq!(row(&verify, "clipper2"), ["`clipper2`", "-", "-", "not run"], "in no verify file: not 0");
+        let judged = atlas.judged_table(&clippers);
+        // Polygons.txt read from its printed lines; geo's fixtures from --json.
+        assert_eq!(row(&judged, "ext"), ["`ext`", "**4 / 1 / 2**", "-", "**5 / 2 / 1 / 1 / 1 of 10**"]);
+        assert_eq!(row(&judged, "vatti"), ["`vatti`", "-", "80 / 0 / 3", "-"]);
+        let speed = atlas.speed_table(&clippers);
+        assert!(speed.starts_with("Speed: not run"), "{speed}");
+        let referee = atlas.referee_table(&workloads);
+        assert!(referee.contains("| `grid` | 50 of 50 | 800 | 0 | 1.500e-13 | 2.500e-1 | 0 |"), "{referee}");
+        assert!(referee.contains("| `star` | not run | - |"), "{referee}");
+        let identity = atlas.identity_table(&clippers);
+        assert_eq!(&row(&identity, "ext")[..5], ["`ext`", "Ext 1", "Go", "ext 1.2.3 (rings as given)", "own process: `ext --serve`"]);
+        assert_eq!(row(&identity, "vatti")[3], "-");
+    }
+
+    #[test]
+    fn the_notes_add_the_counts_up_and_name_every_kind_of_failure() {
+        let results = synthetic("notes");
+        let atlas = read_synthetic(&results);
+        assert_eq!(atlas.verified("ext"), Some((7 + 2, 800 + 80)), "the largest run of each workload, summed");
+        let notes = atlas.notes("ext");
+        for part in [
+            "fails the oracle on 9 of 880 verify results",
+            "fails 1 of 5 Clipper2's Polygons.txt",
+            "wrong or invalid output on 2 of 10 hostile calls",
+            "refused on 1 of 10 hostile calls",
+            "crashed on 1 of 10 hostile calls",
+            "hung on 1 of 10 hostile calls",
+        ] {
+            assert!(notes.contains(part), "{part}: {notes}");
+        }
+        assert_eq!(atlas.notes("vatti"), "no failure found");
+        assert_eq!(atlas.notes("clipper2"), "", "it ran nowhere: nothing to say");
+    }
+
+    #[test]
+    fn no_atlas_folder_no_section() {
+        let results = scratch("none");
+        assert!(derive(&ResultsFolder::new(&results)).unwrap().is_none());
+        let results = synthetic("some");
+        let derived = derive(&ResultsFolder::new(&results)).unwrap().unwrap();
+        assert!(derived.body.contains("| `ext` |"), "{}", derived.body);
+    }
+
+    /// The committed atlas: a few rows of the section against the raw JSON, read here apart.
+    #[test]
+    fn the_committed_atlas_matches_its_raw_files() {
+        let results = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("results");
+        let atlas_dir = results.join(FOLDER);
+        assert!(atlas_dir.is_dir(), "{} is committed", atlas_dir.display());
+        let atlas = Atlas::read(&atlas_dir, parse_file(&repository_clippers()).unwrap()).unwrap();
+        let clippers = atlas.clippers();
+        let workloads = atlas.workloads();
+        let json = |path: &Path| -> serde_json::Value {
+            serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+        };
+        // Hostile: every tally of the file, cell by cell.
+        let hostile = json(&atlas_dir.join(HOSTILE_JSON));
+        let judged = atlas.judged_table(&clippers);
+        let tallies = hostile["tallies"].as_array().unwrap();
+        assert!(!tallies.is_empty());
+        for t in tallies {
+            let n = |k: &str| t[k].as_u64().unwrap();
+            assert_eq!(n("right") + n("wrong") + n("refused") + n("crashed") + n("hung"), n("runs"));
+            let cell = format!("{} / {} / {} / {} / {} of {}", n("right"), n("wrong"), n("refused"), n("crashed"), n("hung"), n("runs"));
+            let cells = row(&judged, t["clipper"].as_str().unwrap());
+            assert_eq!(cells.last().unwrap().trim_matches('*'), cell);
+        }
+        // Verify: the largest run of one workload, every clipper's cell.
+        let mut largest: Option<(usize, PathBuf)> = None;
+        for entry in std::fs::read_dir(&atlas_dir).unwrap() {
+            let path = entry.unwrap().path();
+            let name = path.file_name().unwrap().to_str().unwrap().to_owned();
+            if let Some(n) = name.strip_prefix("verify-").and_then(|n| n.parse::<usize>().ok()) {
+                let file = path.join("star.json");
+                if file.exists() && largest.as_ref().is_none_or(|l| n > l.0) {
+                    largest = Some((n, file));
+                }
+            }
+        }
+        let (n, file) = largest.expect("a verify run of star");
+        let star = json(&file);
+        let verify = atlas.verify_table(&clippers, &workloads);
+        let column = 1 + workloads.iter().position(|w| w == "star").unwrap();
+        assert!(verify.contains(&format!("`star` ({n} cases)")), "{verify}");
+        for r in star["rows"].as_array().unwrap() {
+            let cell = format!("{} / {}", r["oracle_failures"], r["runs"]);
+            assert_eq!(row(&verify, r["clipper"].as_str().unwrap())[column].trim_matches('*'), cell);
+        }
+        // Every external clipper of adapters/clippers.toml has a row, with its library, and its
+        // version where the hostile file recorded the handshake.
+        let identity = atlas.identity_table(&clippers);
+        for spec in parse_file(&repository_clippers()).unwrap() {
+            let cells = row(&identity, &spec.name);
+            assert_eq!(cells[1], spec.library.unwrap());
+            if let Some(t) = tallies.iter().find(|t| t["clipper"] == spec.name.as_str()) {
+                if let Some(handshake) = t["handshake"].as_str() {
+                    assert_eq!(cells[3], handshake);
+                }
+            }
+        }
     }
 }

@@ -49,6 +49,9 @@ pub struct ConformanceTally {
     pub failed: usize,
     /// Cases it does not declare (operation, fill rule or window) or that do not apply.
     pub skipped: usize,
+    /// For an external clipper, the name its handshake gave (library and version).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub handshake: Option<String>,
 }
 
 impl ConformanceTally {
@@ -104,6 +107,9 @@ pub struct HostileTally {
     pub crashed: usize,
     /// Time-outs.
     pub hung: usize,
+    /// For an external clipper, the name its handshake gave (library and version).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub handshake: Option<String>,
 }
 
 /// The part of `hostile --json` the report reads (the incidents are for people).
@@ -160,7 +166,7 @@ mod tests {
         let t = ConformanceTally::from_line(line).unwrap();
         assert_eq!((t.clipper.as_str(), t.passed, t.failed, t.skipped), ("martinez", 68, 12, 3));
         assert_eq!(t.line(), line);
-        let none_skipped = ConformanceTally { clipper: "vatti".into(), passed: 5, failed: 0, skipped: 0 };
+        let none_skipped = ConformanceTally { clipper: "vatti".into(), passed: 5, ..ConformanceTally::default() };
         assert_eq!(ConformanceTally::from_line(&none_skipped.line()), Some(none_skipped));
         for other in [
             "geo-booleanop fatal2/union polybooljs: expected a result, got polybooljs failed: it answered",
