@@ -157,8 +157,10 @@ pub fn run(args: &RefereeArgs, registry: &Registry) -> Result<ExitCode, CliError
     });
     progress.finish_and_clear();
 
-    let mut tallies: Vec<RefereeTally> =
-        workloads.iter().map(|&workload| RefereeTally { workload: workload.to_owned(), ..RefereeTally::default() }).collect();
+    let mut tallies: Vec<RefereeTally> = workloads
+        .iter()
+        .map(|&workload| RefereeTally { workload: workload.to_owned(), ..RefereeTally::default() })
+        .collect();
     let mut beyond: Vec<Comparison> = Vec::new();
     let mut failures: Vec<(String, String)> = Vec::new();
     for ((w, i), outcome) in items.iter().zip(outcomes) {

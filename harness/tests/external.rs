@@ -430,7 +430,8 @@ fn hostile_and_conformance_files_record_what_the_handshake_named() {
         conformance.to_str().unwrap(),
     ]);
     assert!(o.status.code().is_some(), "{}", text(&o.stderr));
-    let read = |path: &Path| -> serde_json::Value { serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap() };
+    let read =
+        |path: &Path| -> serde_json::Value { serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap() };
     for (file, list) in [(read(&hostile), "tallies"), (read(&conformance), "clippers")] {
         let tallies = file[list].as_array().unwrap();
         let of = |name: &str| tallies.iter().find(|t| t["clipper"] == name).unwrap_or_else(|| panic!("{name}: {file}"));

@@ -358,7 +358,6 @@ fn measure_point(
     }
 }
 
-
 /// The most edge-slab pairs [`read_alike`]'s exact check may visit (a second or two). A spiky
 /// star of 10^6 edges needs about 10^11 (hours); large smooth blobs and checkerboards stay near
 /// linear.

@@ -202,14 +202,16 @@ impl Atlas {
 
     /// Oracle failures and results checked over every verified workload, `None` when it ran on none.
     fn verified(&self, clipper: &str) -> Option<(usize, usize)> {
-        let rows: Vec<&VerifyRow> = self.verify.values().flat_map(|(_, rows)| rows).filter(|r| r.clipper == clipper).collect();
+        let rows: Vec<&VerifyRow> =
+            self.verify.values().flat_map(|(_, rows)| rows).filter(|r| r.clipper == clipper).collect();
         (!rows.is_empty()).then(|| rows.iter().fold((0, 0), |(f, n), r| (f + r.oracle_failures, n + r.runs)))
     }
 
     /// The name an external clipper's handshake gave (library and version), from the first
     /// file that recorded it.
     fn handshake(&self, clipper: &str) -> Option<&str> {
-        let conformance = self.conformance.iter().flat_map(|(_, t)| t.iter().flatten()).filter(|t| t.clipper == clipper);
+        let conformance =
+            self.conformance.iter().flat_map(|(_, t)| t.iter().flatten()).filter(|t| t.clipper == clipper);
         let hostile = self.hostile.iter().flatten().filter(|t| t.clipper == clipper);
         conformance.filter_map(|t| t.handshake.as_deref()).chain(hostile.filter_map(|t| t.handshake.as_deref())).next()
     }
@@ -230,12 +232,9 @@ impl Atlas {
             }
         }
         if let Some(t) = self.hostile_of(clipper) {
-            for (count, what) in [
-                (t.wrong, "wrong or invalid output"),
-                (t.refused, "refused"),
-                (t.crashed, "crashed"),
-                (t.hung, "hung"),
-            ] {
+            for (count, what) in
+                [(t.wrong, "wrong or invalid output"), (t.refused, "refused"), (t.crashed, "crashed"), (t.hung, "hung")]
+            {
                 if count > 0 {
                     notes.push(format!("{what} on {count} of {} hostile calls", t.runs));
                 }
@@ -269,7 +268,8 @@ impl Atlas {
     }
 
     fn identity_table(&self, clippers: &[String]) -> String {
-        let head = ["clipper", "library", "language", "version (its handshake)", "called as", "notes"].map(str::to_owned);
+        let head =
+            ["clipper", "library", "language", "version (its handshake)", "called as", "notes"].map(str::to_owned);
         let body: Vec<Vec<String>> = clippers
             .iter()
             .map(|c| {
@@ -283,7 +283,8 @@ impl Atlas {
                     None if REFERENCE.contains(&c.as_str()) => {
                         let origin = if c == "vatti" { "ours" } else { "peer" };
                         (
-                            if c == "vatti" { "this repository (clip-vatti)" } else { "Clipper2 (clip-peers)" }.to_owned(),
+                            if c == "vatti" { "this repository (clip-vatti)" } else { "Clipper2 (clip-peers)" }
+                                .to_owned(),
                             summary::language(c, origin).to_owned(),
                             "in process".to_owned(),
                         )
@@ -337,7 +338,9 @@ impl Atlas {
 
     fn judged_table(&self, clippers: &[String]) -> String {
         let mut head = vec!["clipper".to_owned()];
-        head.extend(self.conformance.iter().map(|(suite, _)| format!("{} passed / failed / skipped", suite_label(suite))));
+        head.extend(
+            self.conformance.iter().map(|(suite, _)| format!("{} passed / failed / skipped", suite_label(suite))),
+        );
         head.push("hostile: right / wrong / refused / crashed / hung of calls".to_owned());
         let body: Vec<Vec<String>> = clippers
             .iter()
@@ -353,7 +356,10 @@ impl Atlas {
                 line.push(match &self.hostile {
                     None => NOT_RUN.to_owned(),
                     Some(_) => self.hostile_of(c).map_or(ABSENT.to_owned(), |t| {
-                        let cell = format!("{} / {} / {} / {} / {} of {}", t.right, t.wrong, t.refused, t.crashed, t.hung, t.runs);
+                        let cell = format!(
+                            "{} / {} / {} / {} / {} of {}",
+                            t.right, t.wrong, t.refused, t.crashed, t.hung, t.runs
+                        );
                         if t.right < t.runs { format!("**{cell}**") } else { cell }
                     }),
                 });
@@ -540,10 +546,19 @@ mod tests {
                  "handshake": "ext 1.2.3 (rings as given)"}],
                "incidents": [], "handshake": "ignored"}"#,
         );
-        write(&atlas.join(conformance_file("clipper2-polygons", "txt")), "clipper2-polygons 2 ext: expected a result, got no\next: 4 passed, 1 failed, 2 skipped\n");
+        write(
+            &atlas.join(conformance_file("clipper2-polygons", "txt")),
+            "clipper2-polygons 2 ext: expected a result, got no\next: 4 passed, 1 failed, 2 skipped\n",
+        );
         let geo = ConformanceResults {
             suite: "geo-booleanop".into(),
-            clippers: vec![ConformanceTally { clipper: "vatti".into(), passed: 80, failed: 0, skipped: 3, handshake: None }],
+            clippers: vec![ConformanceTally {
+                clipper: "vatti".into(),
+                passed: 80,
+                failed: 0,
+                skipped: 3,
+                handshake: None,
+            }],
         };
         write(&atlas.join(conformance_file("geo-booleanop", "json")), &serde_json::to_string(&geo).unwrap());
         // The referee ran `grid`, which verify did not.
@@ -584,7 +599,10 @@ mod tests {
         assert!(referee.contains("| `grid` | 50 of 50 | 800 | 0 | 1.500e-13 | 2.500e-1 | 0 |"), "{referee}");
         assert!(referee.contains("| `star` | not run | - |"), "{referee}");
         let identity = atlas.identity_table(&clippers);
-        assert_eq!(&row(&identity, "ext")[..5], ["`ext`", "Ext 1", "Go", "ext 1.2.3 (rings as given)", "own process: `ext --serve`"]);
+        assert_eq!(
+            &row(&identity, "ext")[..5],
+            ["`ext`", "Ext 1", "Go", "ext 1.2.3 (rings as given)", "own process: `ext --serve`"]
+        );
         assert_eq!(row(&identity, "vatti")[3], "-");
     }
 
@@ -637,7 +655,15 @@ mod tests {
         for t in tallies {
             let n = |k: &str| t[k].as_u64().unwrap();
             assert_eq!(n("right") + n("wrong") + n("refused") + n("crashed") + n("hung"), n("runs"));
-            let cell = format!("{} / {} / {} / {} / {} of {}", n("right"), n("wrong"), n("refused"), n("crashed"), n("hung"), n("runs"));
+            let cell = format!(
+                "{} / {} / {} / {} / {} of {}",
+                n("right"),
+                n("wrong"),
+                n("refused"),
+                n("crashed"),
+                n("hung"),
+                n("runs")
+            );
             let cells = row(&judged, t["clipper"].as_str().unwrap());
             assert_eq!(cells.last().unwrap().trim_matches('*'), cell);
         }
@@ -668,10 +694,10 @@ mod tests {
         for spec in parse_file(&repository_clippers()).unwrap() {
             let cells = row(&identity, &spec.name);
             assert_eq!(cells[1], spec.library.unwrap());
-            if let Some(t) = tallies.iter().find(|t| t["clipper"] == spec.name.as_str()) {
-                if let Some(handshake) = t["handshake"].as_str() {
-                    assert_eq!(cells[3], handshake);
-                }
+            let recorded =
+                tallies.iter().find(|t| t["clipper"] == spec.name.as_str()).and_then(|t| t["handshake"].as_str());
+            if let Some(handshake) = recorded {
+                assert_eq!(cells[3], handshake);
             }
         }
     }

@@ -8,7 +8,8 @@ use std::path::Path;
 use super::derived::Derived;
 use super::results_folder::ResultsFolder;
 use super::{
-    atlas, bench_tables, beyond_paper, lecture_curves, lecture_sh, lecture_text, oracle_failures, summary, table3, table4,
+    atlas, bench_tables, beyond_paper, lecture_curves, lecture_sh, lecture_text, oracle_failures, summary, table3,
+    table4,
 };
 use crate::cli_error::CliError;
 use crate::reproduce::{self, ReproduceArgs};
