@@ -10,12 +10,13 @@ use clip_testkit::workload::POLYGON_WORKLOADS;
 
 use super::bench_points::points;
 use super::derived::Derived;
-use super::markdown::{num_interval, table};
+use super::markdown::{num, num_interval, table};
 use super::results_folder::ResultsFolder;
 use super::summary::{self, LARGE_FROM, SummaryRow};
 use super::wording::Sides;
 use crate::cli_error::CliError;
-use crate::external::spec::{ExternalSpec, parse_file};
+use crate::external::spec::{ExternalSpec, parse_file, shown};
+use crate::measure::interval::Interval;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::results_files::atlas::{
     BENCH_FOLDER, CONFORMANCE_SUITES, ConformanceResults, ConformanceTally, FOLDER, HOSTILE_JSON, HostileResults,
@@ -63,7 +64,7 @@ struct Atlas {
     /// The bench's summary rows (speed and memory against Clipper2), `None` without the bench.
     speed: Option<Vec<SummaryRow>>,
     /// The bench's ratio points per clipper name as timed (own time for external clippers).
-    speed_points: BTreeMap<String, Vec<crate::measure::interval::Interval>>,
+    speed_points: BTreeMap<String, Vec<Interval>>,
     /// Per workload: the referee's largest case count run, its name and its tally.
     referee: BTreeMap<String, (usize, String, RefereeTally)>,
 }
@@ -278,7 +279,7 @@ impl Atlas {
                     Some(s) => (
                         s.library.clone().unwrap_or_else(|| ABSENT.to_owned()),
                         s.language.clone().unwrap_or_else(|| ABSENT.to_owned()),
-                        format!("own process: `{}`", crate::external::spec::shown(&s.command)),
+                        format!("own process: `{}`", shown(&s.command)),
                     ),
                     None if REFERENCE.contains(&c.as_str()) => {
                         let origin = if c == "vatti" { "ours" } else { "peer" };
@@ -375,9 +376,9 @@ impl Atlas {
     }
 
     fn speed_table(&self, clippers: &[String]) -> String {
-        let Some(_) = &self.speed else {
+        if self.speed.is_none() {
             return format!("Speed: {NOT_RUN} (no atlas/bench/bench.csv).\n\n");
-        };
+        }
         let head = [
             "clipper".to_owned(),
             format!("time x {BASELINE}, < {LARGE_FROM} edges"),
@@ -389,9 +390,7 @@ impl Atlas {
             .iter()
             .map(|c| {
                 let row = self.speed_row(c);
-                let interval = |i: Option<crate::measure::interval::Interval>| {
-                    i.map_or(ABSENT.to_owned(), |i| num_interval(&i, 2))
-                };
+                let interval = |i: Option<Interval>| i.map_or(ABSENT.to_owned(), |i| num_interval(&i, 2));
                 let sides = match self.timed_name(c) {
                     Some(_) if c == BASELINE => "the reference".to_owned(),
                     Some(name) => Sides::of_time_ratios(&self.speed_points[&name]).sentence("points"),
@@ -399,7 +398,7 @@ impl Atlas {
                 };
                 let memory = match row {
                     None => ABSENT.to_owned(),
-                    Some(r) => r.memory.map_or("not measured".to_owned(), |m| super::markdown::num(m, 2)),
+                    Some(r) => r.memory.map_or("not measured".to_owned(), |m| num(m, 2)),
                 };
                 vec![
                     format!("`{c}`"),
