@@ -43,7 +43,8 @@ case "$stage" in
     ;;
   conformance)
     for suite in clipper2-polygons geo-booleanop; do
-      run "$out/conformance-$suite.txt" "$clipbench" conformance "$suite" "${clippers[@]}" --clipper clipper2
+      run "$out/conformance-$suite.txt" "$clipbench" conformance "$suite" "${clippers[@]}" --clipper vatti \
+        --clipper clipper2 --json "$out/conformance-$suite.json"
     done
     ;;
   hostile)

@@ -582,10 +582,31 @@ fn replay_of_a_case_file_that_does_not_hang_together_exits_2_instead_of_passing(
 #[test]
 fn conformance_suites_run_and_print_a_closing_line_per_clipper() {
     let dir = scratch("conformance");
-    let o = clipbench(&["conformance", "clipper2-polygons", "--clipper", "vatti", "--clipper", "clipper2"]);
+    let json = dir.join("conformance.json");
+    let o = clipbench(&[
+        "conformance",
+        "clipper2-polygons",
+        "--clipper",
+        "vatti",
+        "--clipper",
+        "clipper2",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     for line in ["vatti: 195 passed, 0 failed", "clipper2: 195 passed, 0 failed"] {
         assert!(stdout(&o).lines().any(|l| l == line), "{line}\n{}", stdout(&o));
+    }
+    // --json holds the same counts as the closing lines, clipper by clipper.
+    let written: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(written["suite"], "clipper2-polygons");
+    let clippers = written["clippers"].as_array().unwrap();
+    let names: Vec<&str> = clippers.iter().map(|c| c["clipper"].as_str().unwrap()).collect();
+    assert_eq!(names, ["vatti", "clipper2"]);
+    for c in clippers {
+        let line = format!("{}: {} passed, {} failed", c["clipper"].as_str().unwrap(), c["passed"], c["failed"]);
+        assert!(stdout(&o).lines().any(|l| l == line), "{line}\n{}", stdout(&o));
+        assert_eq!(c["skipped"], 0);
     }
     // Case 44's stored area is off (Clipper2 rounds crossings to integers); vatti has the exact one.
     assert!(stdout(&o).contains("(vatti: of its passes, 1 by the exact area"), "{}", stdout(&o));

@@ -395,3 +395,26 @@ fn a_lying_clipper_and_an_empty_one_are_timed_marked_wrong_and_not_ranked() {
     let notes = std::fs::read_to_string(out.join("bench.meta.json")).unwrap();
     assert!(notes.contains("square: wrong on") && notes.contains("empty: wrong on"), "{notes}");
 }
+
+/// The atlas names each external clipper's library and version as its handshake gave them:
+/// `hostile --json` and `conformance --json` record it beside the counts, and only for external
+/// clippers.
+#[test]
+fn hostile_and_conformance_files_record_what_the_handshake_named() {
+    let dir = scratch("handshake-recorded");
+    let external = lying_clipper("square", "square");
+    // The command before its clippers, and the list of tallies its file holds.
+    for (command, list) in [(&["hostile"][..], "tallies"), (&["conformance", "geo-booleanop"][..], "clippers")] {
+        let json = dir.join(format!("{}.json", command[0]));
+        let mut args = command.to_vec();
+        args.extend(["--external", &external, "--clipper", "square", "--clipper", "vatti"]);
+        args.extend(["--json", json.to_str().unwrap()]);
+        let o = clipbench(&args);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let file: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+        let tallies = file[list].as_array().unwrap();
+        let of = |name: &str| tallies.iter().find(|t| t["clipper"] == name).unwrap_or_else(|| panic!("{name}: {file}"));
+        assert_eq!(of("square")["handshake"], "lying test clipper (square)", "{file}");
+        assert!(of("vatti").get("handshake").is_none(), "{file}");
+    }
+}

@@ -18,7 +18,7 @@ use crate::measure::progress::bar;
 use crate::measure::raw::Measurement;
 use crate::measure::timing::{iterations_for, per_call_ns, timed};
 use crate::registry::{PolygonEntry, Registry};
-use crate::results_files::bench::MemoryRecord;
+use crate::results_files::bench::{MemoryRecord, own_time_name};
 
 /// Every case is read under this rule (the papers' parity rule). A clipper that reads only
 /// non-zero (Clipper 1) is timed under non-zero where every operand covers the same region under
@@ -356,11 +356,6 @@ fn measure_point(
             }
         }
     }
-}
-
-/// The raw-file name of an external clipper's own times (the round trip keeps its plain name).
-pub fn own_time_name(clipper: &str) -> String {
-    format!("{clipper} (own time)")
 }
 
 /// The most edge-slab pairs [`read_alike`]'s exact check may visit (a second or two). A spiky

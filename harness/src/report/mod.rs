@@ -1,6 +1,7 @@
 //! `clipbench report`: every result in the output folder recomputed from its raw CSV into
 //! markdown tables and plots, gathered in REPORT.md.
 
+pub mod atlas;
 pub mod bench_points;
 pub mod bench_tables;
 pub mod beyond_paper;

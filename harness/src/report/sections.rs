@@ -8,7 +8,8 @@ use std::path::Path;
 use super::derived::Derived;
 use super::results_folder::ResultsFolder;
 use super::{
-    bench_tables, beyond_paper, lecture_curves, lecture_sh, lecture_text, oracle_failures, summary, table3, table4,
+    atlas, bench_tables, beyond_paper, lecture_curves, lecture_sh, lecture_text, oracle_failures, summary, table3,
+    table4,
 };
 use crate::cli_error::CliError;
 use crate::reproduce::{self, ReproduceArgs};
@@ -66,8 +67,8 @@ pub static LECTURE: Table = Table {
 };
 
 /// REPORT.md's sections in order: the summary first (trust and speed side by side), then the
-/// oracle failures behind it, then each experiment.
-pub static SECTIONS: [Section; 9] = [
+/// oracle failures behind it, the atlas of external clippers, then each experiment.
+pub static SECTIONS: [Section; 10] = [
     Section {
         name: "summary",
         title: "Summary: which clipper to trust, and how fast it is",
@@ -81,6 +82,13 @@ pub static SECTIONS: [Section; 9] = [
         table: None,
         markdown: None,
         derive: oracle_failures::derive,
+    },
+    Section {
+        name: "atlas",
+        title: "The atlas: the clippers people use, judged and timed",
+        table: None,
+        markdown: Some("atlas.md"),
+        derive: atlas::derive,
     },
     Section {
         name: "vatti-table3",

@@ -29,7 +29,7 @@ const KINDS: [&str; 4] = ["polygon", "line", "curve", "text"];
 
 /// The language of this project's clippers and of the registered peers (external clippers say
 /// theirs in adapters/).
-fn language(clipper: &str, origin: &str) -> &'static str {
+pub fn language(clipper: &str, origin: &str) -> &'static str {
     match clipper {
         "clipper2" | "clipper2-rect" | "clipper2-open" | "clipper1" => "C++",
         "geos" => "C++, GEOS",
