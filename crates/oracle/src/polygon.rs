@@ -11,7 +11,7 @@ mod validity;
 pub use region_area::{region_area, region_area_with_witness, region_area_work};
 pub use validity::{
     bridge_count, bridge_count_along, bridge_count_within, check_valid_output, check_valid_output_within,
-    check_valid_result_within,
+    check_valid_result_within, check_valid_work,
 };
 
 use clip_core::{BoolOp, FillRule, OutputForm, Point, Polygons, Rect};

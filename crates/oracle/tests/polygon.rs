@@ -545,3 +545,24 @@ fn only_rings_of_rounded_crossings_may_run_either_way() {
     let wide = Polygons::from(ring(&[(0.0, 0.0), (2.0, 1.0), (4.0, 0.0)]));
     assert!(check_valid_result_within(&wide, snap, [&input, &Polygons::default()]).is_err());
 }
+
+/// `k` bars 10^6 wide and 1 high, 2 apart: half their edges span the whole width.
+fn stacked_bars(k: usize) -> Polygons {
+    Polygons::new((0..k).map(|i| Rect::new(0.0, 2.0 * i as f64, 1e6, 2.0 * i as f64 + 1.0).to_ring()).collect())
+}
+
+#[test]
+fn form_check_work_is_near_linear_for_short_edges_and_quadratic_for_long_shared_ones() {
+    // 4000 unit squares on a grid: each edge meets a few others.
+    let square = |i: usize| {
+        let (x, y) = (2.0 * (i % 64) as f64, 2.0 * (i / 64) as f64);
+        Rect::new(x, y, x + 1.0, y + 1.0).to_ring()
+    };
+    let grid = Polygons::new((0..4000).map(square).collect());
+    let edges = 16_000u64;
+    assert!(check_valid_work(&grid) < 100 * edges, "{}", check_valid_work(&grid));
+    // 4000 bars as wide as the whole: every long edge shares its cells with every other.
+    let bars = stacked_bars(4000);
+    assert!(check_valid_work(&bars) > edges * edges / 20, "{}", check_valid_work(&bars));
+    assert_eq!(check_valid_work(&Polygons::default()), 0);
+}

@@ -1,5 +1,6 @@
 //! The bench judges what it times: every clipper's result on every case is checked before its
-//! time counts. The exact oracle where its sweep is affordable; past that, the result's area
+//! time counts. The exact oracle where its sweep and its form check are affordable; past that,
+//! the result's area
 //! against the exact area of the answer (one sweep of the operands, shared by every clipper);
 //! past that too (combs of 10^5 edges and more), the oracle's exact sample points alone, which
 //! are linear in the edges and say so.
@@ -7,14 +8,15 @@
 use std::collections::BTreeMap;
 
 use clip_core::{BoolOp, FillRule, Polygons};
-use clip_oracle::polygon::{check_polygon_samples, region_area, region_area_work, tolerance};
+use clip_oracle::polygon::{check_polygon_samples, check_valid_work, region_area, region_area_work, tolerance};
 use clip_testkit::workload::PolygonCase;
 
 use crate::checks::{output_rules, polygon_oracle};
 use crate::registry::PolygonEntry;
 
-/// The most edge-slab pairs one check may visit (about a second): the full oracle sweeps the
-/// operands and the result together, the area check the operands alone.
+/// The most edge-slab pairs (or edge pairs) one check may visit (about a second): the full oracle
+/// sweeps the operands and the result together and checks the result's form, the area check
+/// sweeps the operands alone.
 pub const CHECK_WORK: u64 = 100_000_000;
 
 /// How one timed result was judged.
@@ -63,7 +65,7 @@ impl Judge {
         let rules = output_rules(entry, subject, fill);
         let operands = [(subject, fill), (clip, fill)];
         let full = [(subject, fill), (clip, fill), (output, rules.output_fill)];
-        if region_area_work(&full) <= CHECK_WORK {
+        if region_area_work(&full) <= CHECK_WORK && check_valid_work(output) <= CHECK_WORK {
             return match polygon_oracle(entry, subject, clip, op, fill, output) {
                 Ok(_) => Verdict::Right,
                 Err(why) => Verdict::Wrong(why.to_string()),
@@ -127,6 +129,31 @@ mod tests {
         assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &square), Verdict::Wrong(_)));
         assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &Polygons::default()), Verdict::Wrong(_)));
         assert_eq!(Verdict::Unchecked(String::new()).column(), None);
+    }
+
+    #[test]
+    fn where_the_form_check_is_too_dear_the_area_still_catches_a_liar() {
+        // 12 000 bars 10^6 wide, 2 apart, inside a box: the sweep is cheap (each
+        // height meets two short edges) but every long edge shares its cells with thousands.
+        let bars: Vec<_> =
+            (0..12_000).map(|i| Rect::new(0.0, 2.0 * i as f64, 1e6, 2.0 * i as f64 + 1.0).to_ring()).collect();
+        let k = PolygonCase {
+            workload: "test",
+            seed: 1,
+            index: 0,
+            subject: Polygons::new(bars),
+            clip: Polygons::from(Rect::new(-1.0, -1.0, 1e6 + 1.0, 24_001.0)),
+            description: String::new(),
+        };
+        let (op, fill) = (BoolOp::Intersection, FillRule::EvenOdd);
+        assert!(check_valid_work(&k.subject) > CHECK_WORK);
+        assert!(region_area_work(&[(&k.subject, fill), (&k.clip, fill)]) <= CHECK_WORK);
+        let registry = registry();
+        let vatti = registry.find_polygon("vatti").unwrap();
+        let mut judge = Judge::default();
+        assert_eq!(judge.judge(vatti, 0, &k, op, fill, &k.subject), Verdict::Right);
+        let fewer = Polygons::new(k.subject.rings[1..].to_vec());
+        assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &fewer), Verdict::Wrong(_)));
     }
 
     #[test]

@@ -58,6 +58,60 @@ fn for_each_close_pair(
     Ok(())
 }
 
+/// What [`check_valid_output`] would visit on `output`: the edge pairs it tests (pairs sharing a
+/// cell of the [`CellIndex`]) plus the edges the nesting count files and meets (one entry per
+/// edge and height bucket it spans, and each ring's bucket). Near linear for output whose edges
+/// are short beside its extent; quadratic where many long edges share cells or heights (nested
+/// squares, combs), which is why a caller with a time budget asks first. Counted without testing
+/// a pair, in O(n log n).
+pub fn check_valid_work(output: &Polygons) -> u64 {
+    let edges = ring_edges(output);
+    let boxes: Vec<Rect> = edges.iter().map(|e| e.bounds).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return 0 };
+    let pairs: u64 = index.entries.chunk_by(|a, b| a.0 == b.0).map(|c| (c.len() as u64).pow(2) / 2).sum();
+    let heights = HeightBuckets::new(output, edges.len());
+    // Edges per bucket, from +1 where each edge's span starts and -1 past where it ends.
+    let mut steps = vec![0i64; heights.count + 1];
+    let mut filed = 0u64;
+    for e in &edges {
+        let (lo, hi) = (heights.bucket(e.bounds.min.y), heights.bucket(e.bounds.max.y));
+        steps[lo] += 1;
+        steps[hi + 1] -= 1;
+        filed += (hi - lo + 1) as u64;
+    }
+    let per_bucket: Vec<u64> = steps
+        .iter()
+        .scan(0i64, |running, step| {
+            *running += step;
+            Some(*running as u64)
+        })
+        .collect();
+    let met: u64 = output.rings.iter().filter_map(|r| r.points.first()).map(|p| per_bucket[heights.bucket(p.y)]).sum();
+    pairs + filed + met
+}
+
+/// The nesting count's height buckets: about √edges (at most 1024) bands of equal height.
+struct HeightBuckets {
+    min_y: f64,
+    height: f64,
+    count: usize,
+}
+
+impl HeightBuckets {
+    fn new(output: &Polygons, edges: usize) -> HeightBuckets {
+        let b = output.bounds();
+        let count = ((edges as f64).sqrt() as usize).clamp(1, 1024);
+        let height = if b.height() > 0.0 { b.height() / count as f64 } else { 1.0 };
+        HeightBuckets { min_y: b.min.y, height, count }
+    }
+
+    /// The bucket holding height `y` (clamped).
+    fn bucket(&self, y: f64) -> usize {
+        let k = ((y - self.min_y) / self.height).floor();
+        if k > 0.0 { (k as usize).min(self.count - 1) } else { 0 }
+    }
+}
+
 /// Boxes binned into a uniform grid whose square cells are about as large as a typical box,
 /// kept sparse as sorted (cell, box) entries: every cell a box covers lists it.
 struct CellIndex {
@@ -380,14 +434,9 @@ fn nesting_depths(output: &Polygons, snap: f64) -> Vec<usize> {
     let rings = &output.rings;
     let edges: Vec<(Point, Point, usize)> =
         rings.iter().enumerate().flat_map(|(r, ring)| ring.edges().map(move |e| (e.a, e.b, r))).collect();
-    let b = output.bounds();
-    let count = ((edges.len() as f64).sqrt() as usize).clamp(1, 1024);
-    let height = if b.height() > 0.0 { b.height() / count as f64 } else { 1.0 };
-    let bucket_of = |y: f64| {
-        let k = ((y - b.min.y) / height).floor();
-        if k > 0.0 { (k as usize).min(count - 1) } else { 0 }
-    };
-    let mut buckets: Vec<Vec<u32>> = vec![Vec::new(); count];
+    let heights = HeightBuckets::new(output, edges.len());
+    let bucket_of = |y: f64| heights.bucket(y);
+    let mut buckets: Vec<Vec<u32>> = vec![Vec::new(); heights.count];
     for (i, &(p, q, _)) in edges.iter().enumerate() {
         for bucket in &mut buckets[bucket_of(p.y.min(q.y))..=bucket_of(p.y.max(q.y))] {
             bucket.push(i as u32);
