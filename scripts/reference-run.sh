@@ -86,7 +86,8 @@ fi
 say "clipbench reproduce all ${reproduce[*]}"
 "$clipbench" reproduce all "${reproduce[@]}" --out "$out"
 say "clipbench bench ${bench[*]} ${peers[*]}"
-"$clipbench" bench "${bench[@]}" "${peers[@]}" --out "$out"
+# --resume: a run of this script stopped during the bench takes up the groups it finished.
+"$clipbench" bench --resume "${bench[@]}" "${peers[@]}" --out "$out"
 say "clipbench verify ${verify[*]} ${peers[*]}"
 verify_status=0
 "$clipbench" verify "${verify[@]}" "${peers[@]}" --results "$out" || verify_status=$?

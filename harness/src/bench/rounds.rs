@@ -10,6 +10,7 @@ use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons};
 use clip_oracle::polygon::{region_area_work, same_region};
 use clip_testkit::workload::{PolygonCase, polygon_case_sized};
 
+use super::checkpoint::{Checkpoint, FinishedGroup};
 use super::correctness::{CHECK_WORK, Judge, Verdict};
 use super::memory_probe::Probe;
 use super::plan::Group;
@@ -128,13 +129,30 @@ impl Tally {
     }
 }
 
-/// Runs every group.
-pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result<Measured, CliError> {
+/// Runs every group, keeping each in `checkpoint` as it finishes and taking up those an
+/// earlier run finished there.
+pub fn run(
+    groups: &[Group],
+    registry: &Registry,
+    settings: &Settings,
+    checkpoint: &Checkpoint,
+) -> Result<Measured, CliError> {
     let points: usize = groups.iter().map(|g| g.sizes.len() * g.ops.len()).sum();
     let mut progress = bar(points, "bench");
     let mut measured = Measured { rows: Vec::new(), memory: Vec::new(), notes: Vec::new() };
     let mut memory_available = true;
     for group in groups {
+        if let Some(done) = checkpoint.finished(group)? {
+            measured.rows.extend(done.rows);
+            measured.memory.extend(done.memory);
+            measured.notes.extend(done.notes);
+            memory_available &= !done.memory_unavailable;
+            (0..group.sizes.len() * group.ops.len()).for_each(|_| progress.inc());
+            continue;
+        }
+        let (rows_before, memory_before, notes_before) =
+            (measured.rows.len(), measured.memory.len(), measured.notes.len());
+        let mut group_memory_available = true;
         let mut stopped: BTreeMap<&'static str, Stopped> = BTreeMap::new();
         // Last measured single-call time and size per clipper, to predict the next size.
         let mut last: BTreeMap<&'static str, (usize, Duration)> = BTreeMap::new();
@@ -250,7 +268,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                                     rss_before_kib,
                                     peak_extra_kib,
                                 }),
-                                None => memory_available = false,
+                                None => group_memory_available = false,
                             }
                         }
                     }
@@ -269,6 +287,18 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
         for (name, tally) in tallies {
             measured.notes.extend(tally.notes(group.label, name));
         }
+        memory_available &= group_memory_available;
+        checkpoint.finish(
+            group,
+            FinishedGroup {
+                run: checkpoint.run().to_owned(),
+                group: group.describe(),
+                rows: measured.rows[rows_before..].to_vec(),
+                memory: measured.memory[memory_before..].to_vec(),
+                notes: measured.notes[notes_before..].to_vec(),
+                memory_unavailable: !group_memory_available,
+            },
+        )?;
     }
     progress.finish();
     if !memory_available {
@@ -388,6 +418,24 @@ fn read_alike(cases: &[PolygonCase]) -> ReadAlike {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_group_an_earlier_run_finished_is_taken_up_not_measured_again() {
+        use crate::bench::checkpoint::finished_for_test;
+        let dir = std::env::temp_dir().join(format!("clipbench-resume-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let groups = crate::bench::plan::groups(true);
+        let star = &groups[0];
+        let done = finished_for_test("revision r", star, 4242.0);
+        let first = Checkpoint::new(&dir, "revision r".to_owned(), false).unwrap();
+        first.finish(star, finished_for_test("revision r", star, 4242.0)).unwrap();
+        let resumed = Checkpoint::new(&dir, "revision r".to_owned(), true).unwrap();
+        let settings = Settings { seed: 1, rounds: 1, cap_seconds: 0.5, quick: true };
+        let measured = run(std::slice::from_ref(star), &crate::registry::registry(), &settings, &resumed).unwrap();
+        // Measured again, the group would hold every clipper's rows at every size.
+        assert_eq!((measured.rows, measured.notes), (done.rows, done.notes));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 
     fn ms(t: u64) -> Duration {
         Duration::from_millis(t)
