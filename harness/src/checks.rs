@@ -148,7 +148,19 @@ pub fn polygon_oracle(
     fill: FillRule,
     output: &Polygons,
 ) -> Result<f64, Failure> {
-    check_polygon_result(subject, clip, op, fill, output, &output_rules(entry, subject, fill)).map_err(|f| {
+    polygon_oracle_under(&output_rules(entry, subject, fill), subject, clip, op, fill, output)
+}
+
+/// [`polygon_oracle`] with the output read under `rules` (the caller's [`output_rules`]).
+pub fn polygon_oracle_under(
+    rules: &OutputRules,
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+    output: &Polygons,
+) -> Result<f64, Failure> {
+    check_polygon_result(subject, clip, op, fill, output, rules).map_err(|f| {
         let how = match f {
             PolygonFailure::Invalid(_) => Failing::Invalid,
             PolygonFailure::WrongPoint { .. } | PolygonFailure::WrongRegion { .. } => Failing::Wrong,

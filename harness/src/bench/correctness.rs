@@ -8,10 +8,12 @@
 use std::collections::BTreeMap;
 
 use clip_core::{BoolOp, FillRule, Polygons};
-use clip_oracle::polygon::{check_polygon_samples, check_valid_work, region_area, region_area_work, tolerance};
+use clip_oracle::polygon::{
+    OutputRules, check_polygon_samples, check_valid_output, check_valid_work, region_area, region_area_work, tolerance,
+};
 use clip_testkit::workload::PolygonCase;
 
-use crate::checks::{output_rules, polygon_oracle};
+use crate::checks::polygon_oracle_under;
 use crate::registry::PolygonEntry;
 
 /// The most edge-slab pairs (or edge pairs) one check may visit (about a second): the full oracle
@@ -48,6 +50,10 @@ impl Verdict {
 #[derive(Default)]
 pub struct Judge {
     exact_areas: BTreeMap<(usize, BoolOp, FillRule), Option<f64>>,
+    /// Per case: whether its subject passed the exact form check (false where the check would
+    /// pass [`CHECK_WORK`]), which decides how a clipper conventional only for conventional
+    /// subjects is read (split Sutherland-Hodgman).
+    subject_conventional: BTreeMap<usize, bool>,
 }
 
 impl Judge {
@@ -62,11 +68,11 @@ impl Judge {
         output: &Polygons,
     ) -> Verdict {
         let (subject, clip) = (&case.subject, &case.clip);
-        let rules = output_rules(entry, subject, fill);
+        let rules = self.output_rules(entry, slot, subject, fill);
         let operands = [(subject, fill), (clip, fill)];
         let full = [(subject, fill), (clip, fill), (output, rules.output_fill)];
         if region_area_work(&full) <= CHECK_WORK && check_valid_work(output) <= CHECK_WORK {
-            return match polygon_oracle(entry, subject, clip, op, fill, output) {
+            return match polygon_oracle_under(&rules, subject, clip, op, fill, output) {
                 Ok(_) => Verdict::Right,
                 Err(why) => Verdict::Wrong(why.to_string()),
             };
@@ -96,6 +102,19 @@ impl Judge {
         } else {
             Verdict::Wrong(format!("result area {area:e} against the exact {exact:e} (tolerance {tol:e})"))
         }
+    }
+
+    /// How `entry`'s output on case `slot` is read ([`crate::checks::output_rules`]), with the
+    /// subject's form checked once per case and only within [`CHECK_WORK`]: past that the output
+    /// is read by region under the input's rule, which a conventional result passes as well.
+    fn output_rules(&mut self, entry: &PolygonEntry, slot: usize, subject: &Polygons, fill: FillRule) -> OutputRules {
+        let known = &mut self.subject_conventional;
+        let conventional = || {
+            *known
+                .entry(slot)
+                .or_insert_with(|| check_valid_work(subject) <= CHECK_WORK && check_valid_output(subject).is_ok())
+        };
+        OutputRules::for_form_given(entry.clipper.capabilities().output, conventional, fill, entry.tolerance)
     }
 }
 
@@ -154,6 +173,38 @@ mod tests {
         assert_eq!(judge.judge(vatti, 0, &k, op, fill, &k.subject), Verdict::Right);
         let fewer = Polygons::new(k.subject.rings[1..].to_vec());
         assert!(matches!(judge.judge(vatti, 0, &k, op, fill, &fewer), Verdict::Wrong(_)));
+    }
+
+    #[test]
+    fn a_subject_too_dear_to_check_reads_split_sutherland_hodgman_by_region_unchecked() {
+        // Split Sutherland-Hodgman is conventional only for a conventional subject, so
+        // judging it asks for the subject's form: the bars above, whose check would take over
+        // CHECK_WORK pairs (the bench once spent an hour on spiky-box's subject at 10^6).
+        let bars: Vec<_> =
+            (0..12_000).map(|i| Rect::new(0.0, 2.0 * i as f64, 1e6, 2.0 * i as f64 + 1.0).to_ring()).collect();
+        let k = PolygonCase {
+            workload: "test",
+            seed: 1,
+            index: 0,
+            subject: Polygons::new(bars),
+            clip: Polygons::from(Rect::new(-1.0, -1.0, 1e6 + 1.0, 24_001.0)),
+            description: String::new(),
+        };
+        let (op, fill) = (BoolOp::Intersection, FillRule::EvenOdd);
+        assert!(check_valid_work(&k.subject) > CHECK_WORK);
+        let registry = registry();
+        let sh = registry.find_polygon(clip_sutherland_hodgman::SPLIT_NAME).unwrap();
+        let mut judge = Judge::default();
+        assert_eq!(judge.judge(sh, 0, &k, op, fill, &k.subject), Verdict::Right);
+        // Valid, but not checked: read by region.
+        assert_eq!(judge.subject_conventional.get(&0), Some(&false));
+        let fewer = Polygons::new(k.subject.rings[1..].to_vec());
+        assert!(matches!(judge.judge(sh, 0, &k, op, fill, &fewer), Verdict::Wrong(_)));
+        // An affordable subject is checked, once per case.
+        let small = case(Rect::new(0.0, 0.0, 2.0, 2.0), Rect::new(1.0, 1.0, 3.0, 3.0));
+        let right = Polygons::from(Rect::new(1.0, 1.0, 2.0, 2.0));
+        assert_eq!(judge.judge(sh, 1, &small, op, fill, &right), Verdict::Right);
+        assert_eq!(judge.subject_conventional.get(&1), Some(&true));
     }
 
     #[test]
