@@ -150,20 +150,24 @@ mod tests {
         assert_eq!(Verdict::Unchecked(String::new()).column(), None);
     }
 
-    #[test]
-    fn where_the_form_check_is_too_dear_the_area_still_catches_a_liar() {
-        // 12 000 bars 10^6 wide, 2 apart, inside a box: the sweep is cheap (each
-        // height meets two short edges) but every long edge shares its cells with thousands.
+    /// 12 000 bars 10^6 wide, 2 apart, inside a box: the sweep is cheap (each height meets two
+    /// short edges) but every long edge shares its cells with thousands.
+    fn bars_in_a_box() -> PolygonCase {
         let bars: Vec<_> =
             (0..12_000).map(|i| Rect::new(0.0, 2.0 * i as f64, 1e6, 2.0 * i as f64 + 1.0).to_ring()).collect();
-        let k = PolygonCase {
+        PolygonCase {
             workload: "test",
             seed: 1,
             index: 0,
             subject: Polygons::new(bars),
             clip: Polygons::from(Rect::new(-1.0, -1.0, 1e6 + 1.0, 24_001.0)),
             description: String::new(),
-        };
+        }
+    }
+
+    #[test]
+    fn where_the_form_check_is_too_dear_the_area_still_catches_a_liar() {
+        let k = bars_in_a_box();
         let (op, fill) = (BoolOp::Intersection, FillRule::EvenOdd);
         assert!(check_valid_work(&k.subject) > CHECK_WORK);
         assert!(region_area_work(&[(&k.subject, fill), (&k.clip, fill)]) <= CHECK_WORK);
@@ -178,18 +182,9 @@ mod tests {
     #[test]
     fn a_subject_too_dear_to_check_reads_split_sutherland_hodgman_by_region_unchecked() {
         // Split Sutherland-Hodgman is conventional only for a conventional subject, so
-        // judging it asks for the subject's form: the bars above, whose check would take over
+        // judging it asks for the subject's form: the bars in a box, whose check would take over
         // CHECK_WORK pairs (the bench once spent an hour on spiky-box's subject at 10^6).
-        let bars: Vec<_> =
-            (0..12_000).map(|i| Rect::new(0.0, 2.0 * i as f64, 1e6, 2.0 * i as f64 + 1.0).to_ring()).collect();
-        let k = PolygonCase {
-            workload: "test",
-            seed: 1,
-            index: 0,
-            subject: Polygons::new(bars),
-            clip: Polygons::from(Rect::new(-1.0, -1.0, 1e6 + 1.0, 24_001.0)),
-            description: String::new(),
-        };
+        let k = bars_in_a_box();
         let (op, fill) = (BoolOp::Intersection, FillRule::EvenOdd);
         assert!(check_valid_work(&k.subject) > CHECK_WORK);
         let registry = registry();
