@@ -8,7 +8,6 @@ use std::path::Path;
 use clipbench::report::revisions::of_folder;
 
 #[test]
-#[ignore = "enabled once results/ holds one reference run"]
 fn every_committed_result_names_one_revision() {
     let results = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("results");
     let revisions = of_folder(&results).unwrap();
