@@ -175,11 +175,11 @@ mod output;
 mod prepared;
 mod prepared_reuse;
 mod raw_rings;
-mod repair;
 mod route;
 mod scanbeam;
 mod scratch;
 mod simplify;
+mod snap_fallback;
 mod small_sort;
 mod sweep;
 mod trapezoids;
@@ -232,26 +232,39 @@ impl Vatti {
         Ok(clip_planned(subject, clip, None, op, fill, Plan { route, sweep }))
     }
 
-    /// The sweep's conventional rings of valid operands, repaired where rounding broke their form.
+    /// The sweep's conventional rings of valid operands. Where rounding broke their form (the
+    /// clean-up's report, or `form_check`'s exact check of a small output near rounding), the
+    /// snap-rounded operands are swept once instead (`snap_fallback`): their edges meet only at
+    /// vertices, so that sweep rounds nothing.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, strict: bool| {
-            Vatti::sweep(sweep, a, b, op, fill, false, |rings, touches, turns, _| {
-                cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
-                    form_check::raw_near_rounding(a, b, rings)
-                })
+        let rings = Vatti::sweep_clean(subject, clip, op, fill, sweep, true);
+        let broken = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
+        if broken && let Some((a, b)) = snap_fallback::snapped_operands(subject, clip) {
+            return Vatti::sweep_polygons_once(&a, &b, op, fill, sweep);
+        }
+        Polygons::new(rings.rings)
+    }
+
+    /// The sweep's conventional rings of valid operands, whatever the clean-up reports.
+    fn sweep_polygons_once(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
+        Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, false).rings)
+    }
+
+    /// The sweep's clean-up of valid operands, with whether rounding broke its form (`strict`:
+    /// edges retraced near rounding count too).
+    fn sweep_clean(
+        subject: &Polygons,
+        clip: &Polygons,
+        op: BoolOp,
+        fill: FillRule,
+        sweep: Sweep,
+        strict: bool,
+    ) -> cleanup::CleanRings {
+        Vatti::sweep(sweep, subject, clip, op, fill, false, |rings, touches, turns, _| {
+            cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
+                form_check::raw_near_rounding(subject, clip, rings)
             })
-        };
-        let mut rings = clean(subject, clip, op, fill, true);
-        // The full check only judges the sweep's own output: the repair's sweeps are judged by the
-        // clean-up alone, so a check stricter than the conventions cannot make it loop.
-        rings.broken_form = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
-        Polygons::new(repair::join_overlapping(rings, |out| {
-            // Rounded output can fall below the coordinates the sweep takes: such coordinates
-            // become 0 (a move far below any rounding of the other coordinates), then validate.
-            let out = repair::flushed_below_min(out);
-            validate_polygons(&out, Operand::Subject)?;
-            Ok(clean(&out, &Polygons::default(), BoolOp::Union, FillRule::NonZero, false))
-        }))
+        })
     }
 
     /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings
