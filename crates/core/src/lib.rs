@@ -43,7 +43,6 @@ mod area;
 mod batch_filter;
 mod cell_index;
 mod clipper;
-mod cluster_snap;
 mod curve_region;
 mod ellipse;
 mod error;
@@ -72,7 +71,6 @@ pub use clipper::{
     LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
     WindowKind,
 };
-pub use cluster_snap::{SNAP_ULPS, snap_clusters};
 pub use curve_region::{BoundaryPiece, CurveRegion};
 pub use ellipse::{Ellipse, EllipseArc, MIN_AXIS_RATIO, MIN_RADIUS_TO_CENTRE};
 pub use error::{

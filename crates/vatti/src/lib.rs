@@ -110,26 +110,24 @@
 //!   rounding to its integer grid, drops them: ring counts differ from Clipper2's on many of its
 //!   `Polygons.txt` cases (the cross-library test in `clip-peers` runs Clipper2 on each,
 //!   normalises its output to these conventions and checks the counts agree).
-//! - Repair (`repair`, `form_check`): with features a few ulps wide far from the origin, or
-//!   nearly parallel edges running to points 1e50 and more times farther away, rounded crossings
-//!   can leave two rings running the same way along an edge (their insides overlapping), a
-//!   clockwise ring that no ring holds, or rings crossing or nested against their orientation.
-//!   The clean-up reports the first two among the rings it rebuilds (for the first, two edges
-//!   leaving or arriving at one point in the same direction once opposite edges cancelled; two
-//!   one way and one back, as grid unions' holes retrace their outers, only in the sweep's own
-//!   output near rounding); outputs of at most
-//!   `form_check::MAX_EDGES` edges with an edge within 4096 ulps of the inputs' largest
-//!   coordinate also get a full exact check of their form. A broken output is swept once more,
-//!   alone, as its union under non-zero (the region the oracle reads from it), at most
-//!   `repair::MAX_PASSES` times. Where the sweep left a point near an edge but off it (a near
-//!   miss), the clean-up also splits slanted edges at the vertices on them, so rounded edges
-//!   through exact vertices cancel or are reported like horizontal ones. Output coordinates
-//!   below `clip_core::MIN_COORDINATE` become 0 before a repair sweep, and points within
-//!   `clip_core::SNAP_ULPS` ulps of each other are merged, with edges passing that close routed
-//!   through them (as snap rounding does), so that crossings rounded an ulp or two apart (edges
-//!   nearly through a vertex and nearly parallel to its edges) do not leave rings crossing there.
-//!   Known limit: a larger output broken between rings that share no point and with no near miss
-//!   is not found.
+//! - Snap-rounded fallback (`snap_fallback`, `form_check`): with features a few ulps wide far
+//!   from the origin, or nearly coincident edges (angles of 1e-16, offsets of a few ulps), rounded
+//!   crossings can leave two rings running the same way along an edge (their insides
+//!   overlapping), a clockwise ring that no ring holds, or rings crossing or nested against their
+//!   orientation. The clean-up reports the first two among the rings it rebuilds (for the first,
+//!   two edges leaving or arriving at one point in the same direction once opposite edges
+//!   cancelled; two one way and one back, as grid unions' holes retrace their outers, only near
+//!   rounding); outputs of at most `form_check::MAX_EDGES` edges with an edge within 4096 ulps of
+//!   the inputs' largest coordinate also get a full exact check of their form. Where the sweep
+//!   left a point near an edge but off it (a near miss), the clean-up also splits slanted edges
+//!   at the vertices on them, so rounded edges through exact vertices cancel or are reported like
+//!   horizontal ones. A broken output is replaced once, by the sweep of both operands snap
+//!   rounded (`clip_core::snap_round`, Hobby 1999) on a grid of pixels of `s`, the smallest power
+//!   of two at least 4 ulps of the largest input coordinate: the rounded operands' edges meet
+//!   only at vertices, so that sweep rounds nothing, and its output is valid by construction;
+//!   each of its vertices is within `s·√2/2` of the exact vertex or crossing. Outputs not
+//!   reported broken are returned as the first sweep made them. Known limit: a larger output
+//!   broken between rings that share no point and with no near miss is not found.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
@@ -179,8 +177,8 @@ mod route;
 mod scanbeam;
 mod scratch;
 mod simplify;
-mod snap_fallback;
 mod small_sort;
+mod snap_fallback;
 mod sweep;
 mod trapezoids;
 
@@ -239,8 +237,8 @@ impl Vatti {
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
         let rings = Vatti::sweep_clean(subject, clip, op, fill, sweep, true);
         let broken = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
-        if broken && let Some((a, b)) = snap_fallback::snapped_operands(subject, clip) {
-            return Vatti::sweep_polygons_once(&a, &b, op, fill, sweep);
+        if broken && let Some(snapped) = snap_fallback::SnappedOperands::of(subject, clip) {
+            return snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep));
         }
         Polygons::new(rings.rings)
     }

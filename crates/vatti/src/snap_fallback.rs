@@ -7,7 +7,13 @@
 //! crossing) by at most `s·√2/2`, with `s` the [`pixel_size`], in this fallback only: outputs the
 //! sweep leaves valid are returned as they are.
 
-use clip_core::{MIN_COORDINATE, Polygons, snap_round};
+use clip_core::{MIN_COORDINATE, Point, Polygons, Ring, snap_round};
+
+use crate::simplify::simplify_ring;
+
+/// log2 of the pixel in ulps of the largest coordinate (4 ulps, see [`pixel_size`]). Coarser
+/// pixels were tried: 64 and 4096 ulps broke more fuzz inputs (more features collapse).
+const PIXEL_ULPS_LOG2: i32 = 2;
 
 /// The snap-rounding pixel for `subject` and `clip`: the smallest power of two at least 4 ulps of
 /// their largest coordinate magnitude (and at least `clip_core::MIN_COORDINATE`, so rounded
@@ -23,7 +29,7 @@ pub(crate) fn pixel_size(subject: &Polygons, clip: &Polygons) -> f64 {
     }
     // 2^e <= largest < 2^(e+1): an ulp there is 2^(e-52), four are 2^(e-50).
     let e = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    2f64.powi(e - 50).max(floor)
+    2f64.powi(e - 52 + PIXEL_ULPS_LOG2).max(floor)
 }
 
 /// The smallest power of two at least `v` (positive, normal).
@@ -33,15 +39,56 @@ fn smallest_power_of_two_from(v: f64) -> f64 {
     if p < v { p * 2.0 } else { p }
 }
 
-/// Both valid operands snap rounded at their [`pixel_size`]; `None` when the grid refuses them
-/// (it cannot for valid operands: the pixel is chosen for their largest coordinate).
-pub(crate) fn snapped_operands(subject: &Polygons, clip: &Polygons) -> Option<(Polygons, Polygons)> {
-    snap_round(subject, clip, pixel_size(subject, clip)).ok()
+/// Both operands snap rounded at their [`pixel_size`] `s`, in pixel units from a grid point
+/// `origin` at their low corner: every vertex is an integer, exactly (`(p - origin) / s`, a
+/// difference of multiples of `s` divided by a power of two). The sweep is run there because its
+/// tolerances (where it decides that two rounded x or points coincide) are relative to the
+/// coordinates' magnitude: far from the origin (fuzz inputs at 1e15 and 5e5), grid points 4 ulps
+/// apart fall within them, and its output from exact, noded operands was broken; near the
+/// origin, in units of a pixel, they are far apart.
+pub(crate) struct SnappedOperands {
+    pub subject: Polygons,
+    pub clip: Polygons,
+    origin: Point,
+    pixel: f64,
+}
+
+impl SnappedOperands {
+    /// `None` when the grid refuses the operands (it cannot for valid operands: the pixel is
+    /// chosen for their largest coordinate).
+    pub(crate) fn of(subject: &Polygons, clip: &Polygons) -> Option<SnappedOperands> {
+        let pixel = pixel_size(subject, clip);
+        let (a, b) = snap_round(subject, clip, pixel).ok()?;
+        let low = a.bounds().union(b.bounds()).min;
+        let origin = Point::new((low.x / pixel).round() * pixel, (low.y / pixel).round() * pixel);
+        let local = |p: &Polygons| map(p, |q| Point::new((q.x - origin.x) / pixel, (q.y - origin.y) / pixel));
+        Some(SnappedOperands { subject: local(&a), clip: local(&b), origin, pixel })
+    }
+
+    /// `out` (in pixel units) back in the operands' coordinates: exact for the sweep's output of
+    /// these operands where its vertices are theirs. Where the sweep still rounded a point (near
+    /// `MAX_COORDINATE`, fuzz inputs at 1e150), mapped back it can land on its neighbour: rings
+    /// lose such repeats, and rings left without area go.
+    pub(crate) fn to_world(&self, out: &Polygons) -> Polygons {
+        let world = |q: &Point| Point::new(q.x * self.pixel + self.origin.x, q.y * self.pixel + self.origin.y);
+        Polygons::new(
+            out.rings
+                .iter()
+                .map(|r| simplify_ring(&r.points.iter().map(world).collect::<Vec<_>>()))
+                .filter(|points| points.len() >= 3)
+                .map(Ring::new)
+                .collect(),
+        )
+    }
+}
+
+fn map(p: &Polygons, f: impl Fn(Point) -> Point) -> Polygons {
+    Polygons::new(p.rings.iter().map(|r| Ring::new(r.points.iter().map(|&q| f(q)).collect())).collect())
 }
 
 #[cfg(test)]
 mod tests {
-    use clip_core::{BoolOp, FillRule, Point, Ring};
+    use clip_core::{BoolOp, FillRule};
     use clip_oracle::polygon::{check_valid_output, region_area};
 
     use super::*;
@@ -75,12 +122,13 @@ mod tests {
     fn snapped_sweeps_of_nearly_coincident_squares_are_valid_and_close() {
         for angle in [1e-16, -3e-16, 1e-12] {
             let (subject, clip) = square_and_turned_copy(angle);
-            let (a, b) = snapped_operands(&subject, &clip).expect("valid operands");
+            let snapped = SnappedOperands::of(&subject, &clip).expect("valid operands");
             let moved = pixel_size(&subject, &clip) * std::f64::consts::SQRT_2 / 2.0;
             for op in [BoolOp::Intersection, BoolOp::Union, BoolOp::Difference, BoolOp::Xor] {
                 for fill in [FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative] {
                     for sweep in [Sweep::Scanbeam, Sweep::Events] {
-                        let out = Vatti::sweep_polygons_once(&a, &b, op, fill, sweep);
+                        let out = Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep);
+                        let out = snapped.to_world(&out);
                         check_valid_output(&out).unwrap_or_else(|e| panic!("{angle:e} {op:?} {fill:?}: {e:?}"));
                         // The region differs from the exact one by at most the band each edge
                         // moved through: the perimeters times the largest move, twice.
