@@ -86,7 +86,9 @@
 //!
 //! - Every in/out and ordering decision at a vertex (where a new edge enters the table, which
 //!   way edges leave a shared point, where a horizontal stops) uses `clip_core::predicates`, and
-//!   so does the event sweep's test of whether two adjacent edges cross. Crossing points are
+//!   so does the event sweep's test of whether two adjacent edges cross, and the order of two
+//!   edges whose computed x at a beam's top are within their rounding of each other
+//!   (`predicates::x_at_height_cmp`: rounded x there would invent crossings). Crossing points are
 //!   computed once, kept inside the scanbeam, and processed so only adjacent edges swap. They
 //!   are rounded to f64: the output is exact for inputs whose crossings are representable
 //!   (integer grids) and within a few ulps of the true region otherwise.
@@ -96,7 +98,9 @@
 //!   also goes into every contributing edge passing through it (exactly, or lying on the same
 //!   line, or within 64 ulps when the point is a rounded crossing of several edges through one
 //!   point). That tolerance (`active::ROUNDING`) decides only where output rings get vertices,
-//!   never what is inside.
+//!   never what is inside, and only for points that are rounded: an edge passed on a scanline
+//!   at its own vertex, at a sliding edge's x or exactly on its line (`predicates::on_line`)
+//!   is passed at an exact point.
 //! - Clean-up (`cleanup`) rebuilds only rings that touch: opposite coincident edges cancel,
 //!   vertices inside horizontal output edges split them, and rings are re-walked corner by
 //!   corner, then split where they still visit a vertex twice. Where nothing cancels or splits
@@ -124,10 +128,11 @@
 //!   horizontal ones. A broken output is replaced once, by the sweep of both operands snap
 //!   rounded (`clip_core::snap_round`, Hobby 1999) on a grid of pixels of `s`, the smallest power
 //!   of two at least 4 ulps of the largest input coordinate: the rounded operands' edges meet
-//!   only at vertices, so that sweep rounds nothing, and its output is valid by construction;
-//!   each of its vertices is within `s·√2/2` of the exact vertex or crossing. Outputs not
-//!   reported broken are returned as the first sweep made them. Known limit: a larger output
-//!   broken between rings that share no point and with no near miss is not found.
+//!   only at vertices, so that sweep (ordering edges exactly where rounding could swap them, and
+//!   taking no exact point for a rounded one) rounds nothing, and its output is valid by
+//!   construction; each of its vertices is within `s·√2/2` of the exact vertex or crossing.
+//!   Outputs not reported broken are returned as the first sweep made them. Known limit: a
+//!   larger output broken between rings that share no point and with no near miss is not found.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
