@@ -44,8 +44,8 @@ pub(crate) use self::turns::Turns;
 use crate::raw_rings::RawRings;
 use crate::simplify::simplify_ring;
 
-/// The clean-up's rings, and whether rounding left their form broken (`repair` then joins
-/// them): two rings (or two passes of one) running the same way along an edge, where rounded
+/// The clean-up's rings, and whether rounding left their form broken (`snap_fallback` then
+/// replaces them): two rings (or two passes of one) running the same way along an edge, where rounded
 /// crossings put both sides of a sliver an ulp wide onto one line and their insides overlap; or a
 /// rebuilt clockwise ring that no other ring holds, a hole whose outer rounding lost or an outer
 /// turned inside out.
@@ -72,7 +72,7 @@ const HELD_TEST_BUDGET: usize = 1 << 16;
 /// 30 times as long with it.
 ///
 /// With `strict`, edges retraced near rounding also count as broken (see [`SameWay::Retraced`]):
-/// for the sweep's own output only, so that the repair's sweeps, judged by the plain form, end.
+/// for the sweep's own output only, not for the snap fallback's sweep, which is final.
 pub(crate) fn conventional_rings_checked(
     raw: &RawRings,
     touches: &mut Touches,
@@ -132,7 +132,7 @@ fn walked(
     let (mut near_rounding, mut near) = (Some(near_rounding), None);
     let mut near_rounding = || *near.get_or_insert_with(|| near_rounding.take().is_some_and(|f| f()));
     // Retraced edges are a valid form where nothing is rounded, but near rounding the walk over
-    // them can leave rings crossing at a shared point (a fuzz input's xor): the repair decides.
+    // them can leave rings crossing at a shared point (a fuzz input's xor): the snap fallback decides.
     let broken_form = same_way == SameWay::Remaining
         || (strict && same_way == SameWay::Retraced && near_rounding())
         || any_unheld(&out, &clockwise, &mut near_rounding);
