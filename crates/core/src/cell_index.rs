@@ -40,6 +40,19 @@ impl CellIndex {
             }
             size *= 2.0;
         }
+        CellIndex::with_cell_size(boxes, size)
+    }
+
+    /// The index of `boxes` on cells of side `size` (at least 1/65536 of their extent), or `None`
+    /// when there are none. For boxes looked up by others of another scale: the hot pixels of
+    /// snap rounding, tiny squares, are found by the edges that meet them, on cells sized like
+    /// the edges (cells the size of a pixel would make every long edge walk millions of them).
+    pub fn with_cell_size(boxes: &[Rect], size: f64) -> Option<CellIndex> {
+        let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
+        if b.is_empty() {
+            return None;
+        }
+        let size = size.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
         let count = |span: f64| ((span / size).floor() as u64).saturating_add(1);
         let mut index =
             CellIndex { origin: b.min, size, columns: count(b.width()), rows: count(b.height()), entries: Vec::new() };
@@ -53,6 +66,11 @@ impl CellIndex {
         entries.sort_unstable();
         index.entries = entries;
         Some(index)
+    }
+
+    /// The side of the cells.
+    pub fn cell_size(&self) -> f64 {
+        self.size
     }
 
     /// The (cell key, box index) entries, sorted by cell: one per cell a box covers.

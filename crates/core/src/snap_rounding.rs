@@ -76,9 +76,10 @@ fn check_on_grid(operand: Operand, polygons: &Polygons, pixel: f64) -> Result<()
 /// with fewer than three distinct points or all on one line.
 fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
     let segments: Vec<Segment> = rings.iter().flat_map(|r| r.edges()).collect();
-    let hot = hot_pixels(&segments, s);
+    let (hot, cell_size) = hot_pixels(&segments, s);
     let squares: Vec<Rect> = hot.iter().map(|&p| square(p, s)).collect();
-    let index = CellIndex::new(&squares);
+    // Cells sized like the edges that look pixels up, not like the pixels.
+    let index = cell_size.and_then(|size| CellIndex::with_cell_size(&squares, size));
     let mut met = Vec::new();
     let mut next = 0;
     rings
@@ -111,11 +112,13 @@ fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
         .collect()
 }
 
-/// The pixels holding an input vertex or the exact crossing point of two input edges, each once.
-fn hot_pixels(segments: &[Segment], s: f64) -> Vec<Pixel> {
+/// The pixels holding an input vertex or the exact crossing point of two input edges, each once,
+/// and the cell size of the edges' index (`None` without edges).
+fn hot_pixels(segments: &[Segment], s: f64) -> (Vec<Pixel>, Option<f64>) {
     let mut hot: Vec<Pixel> = segments.iter().map(|e| pixel_of(e.a, s)).collect();
     let boxes: Vec<Rect> = segments.iter().map(Segment::bounds).collect();
-    if let Some(index) = CellIndex::new(&boxes) {
+    let index = CellIndex::new(&boxes);
+    if let Some(index) = &index {
         let _ = index.try_for_each_close_pair::<()>(&boxes, |i, j| {
             // Touching points and overlaps end at input vertices, whose pixels are hot already.
             if let SegmentIntersection::Crossing(_) = predicates::segment_intersection(segments[i], segments[j]) {
@@ -126,7 +129,7 @@ fn hot_pixels(segments: &[Segment], s: f64) -> Vec<Pixel> {
     }
     hot.sort_unstable();
     hot.dedup();
-    hot
+    (hot, index.map(|i| i.cell_size()))
 }
 
 /// The pixel holding `p`: half-open, so a point on a border belongs to the pixel above or right.
