@@ -199,17 +199,20 @@ fn exact_x_at(s: Segment, y: f64) -> Option<f64> {
     (product_error == 0.0 && quotient.mul_add(dy.0, -product) == 0.0 && x.1 == 0.0).then_some(x.0)
 }
 
-/// [`crossing_coordinate_cmp`] without expansions where every quantity is exact in f64 (integer
-/// coordinates up to about 2^17 apart, and their multiples by powers of two, as on grids): the
-/// crossing's coordinate minus `s.a`'s is `n / d` with `n = D(s.a)·(c(s.b) - c(s.a))` and
-/// `d = D(s.a) - D(s.b)`, and `m - c(s.a)` is `w`. When `n`, `d` and `w` come out exact (every
-/// difference and product checked by its error term), `q = n / d` is one correctly rounded
-/// division, and rounding is monotone: `q < w` implies `n / d < w`, `q > w` implies `n / d > w`.
-/// A tie `q == w` is settled by the sign of `w·d - n`, rounded once (fused multiply-add), which
-/// is exact unless it underflows to zero. `None` where something is inexact or the tie is zero.
+/// [`crossing_coordinate_cmp`] without expansions where every quantity is exact in f64: by
+/// [`exact_crossing_quotients`] and [`quotient_cmp`] against `w = m - c(s.a)`.
 fn exact_quotient_cmp(s: Segment, t: Segment, along_y: bool, m: f64) -> Option<core::cmp::Ordering> {
-    use core::cmp::Ordering;
-    let coord = |p: Point| if along_y { p.y } else { p.x };
+    let (nx, ny, d) = exact_crossing_quotients(s, t)?;
+    if along_y { quotient_cmp(ny, d, s.a.y, m) } else { quotient_cmp(nx, d, s.a.x, m) }
+}
+
+/// The crossing point of two segments whose interiors cross as offsets from `s.a`, `(nx / d,
+/// ny / d)`, where `nx`, `ny` and `d` are exact in f64 (every difference and product checked by
+/// its error term: integer coordinates up to about 2^17 apart, and their multiples by powers of
+/// two, as on grids); `None` elsewhere. With `D(p)` the determinant of `t`'s line at `p`,
+/// `d = D(s.a) - D(s.b)` and `n = D(s.a)·(s.b - s.a)` per coordinate. Limit: products that
+/// underflow are not caught (coordinates well above 1e-100 apart, as for the expansions).
+pub fn exact_crossing_quotients(s: Segment, t: Segment) -> Option<(f64, f64, f64)> {
     let exact_difference = |a: f64, b: f64| {
         let (x, e) = two_diff(a, b);
         (e == 0.0).then_some(x)
@@ -224,10 +227,21 @@ fn exact_quotient_cmp(s: Segment, t: Segment, along_y: bool, m: f64) -> Option<c
         exact_difference(exact_product(ax, by)?, exact_product(ay, bx)?)
     };
     let (d0, d1) = (determinant(s.a)?, determinant(s.b)?);
-    let n = exact_product(d0, exact_difference(coord(s.b), coord(s.a))?)?;
+    let nx = exact_product(d0, exact_difference(s.b.x, s.a.x)?)?;
+    let ny = exact_product(d0, exact_difference(s.b.y, s.a.y)?)?;
     let d = exact_difference(d0, d1)?;
-    let w = exact_difference(m, coord(s.a))?;
-    if d == 0.0 || !(n / d).is_finite() {
+    (d != 0.0 && (nx / d).is_finite() && (ny / d).is_finite()).then_some((nx, ny, d))
+}
+
+/// How `base + n / d` compares with `m`, for `n` and `d` (not zero) exact, without expansions:
+/// with `w = m - base` exact (else `None`), `q = n / d` is one correctly rounded division, and
+/// rounding is monotone, so `q < w` implies `n / d < w` and `q > w` implies `n / d > w`. A tie
+/// `q == w` is settled by the sign of `w·d - n`, rounded once (fused multiply-add), exact unless
+/// it underflows to zero: `None` then.
+pub fn quotient_cmp(n: f64, d: f64, base: f64, m: f64) -> Option<core::cmp::Ordering> {
+    use core::cmp::Ordering;
+    let (w, error) = two_diff(m, base);
+    if error != 0.0 {
         return None;
     }
     let q = n / d;

@@ -150,14 +150,26 @@ fn square(p: Pixel, s: f64) -> Rect {
 
 /// The pixel holding the exact crossing point of `e` and `f` (whose interiors cross): the pixel
 /// of an estimate, moved a pixel at a time while the exact crossing lies beyond one of its
-/// borders. Borders farther from the estimate than its error bound are decided by the estimate.
+/// borders. Where the crossing's quotients are exact in f64 (grids), each border is decided by
+/// one division ([`predicates::quotient_cmp`]); else borders farther from the estimate than its
+/// error bound are decided by the estimate, and the rest exactly.
 fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
-    let estimate = accurate_crossing_point(e, f);
+    let quotients = predicates::exact_crossing_quotients(e, f);
+    let estimate = match quotients {
+        Some((nx, ny, d)) => Point::new(e.a.x + nx / d, e.a.y + ny / d),
+        None => accurate_crossing_point(e, f),
+    };
     let mut pixel = pixel_of(estimate, s);
     for along_y in [false, true] {
-        let (at, span) = if along_y { (estimate.y, e.b.y - e.a.y) } else { (estimate.x, e.b.x - e.a.x) };
+        let (at, span, base) =
+            if along_y { (estimate.y, e.b.y - e.a.y, e.a.y) } else { (estimate.x, e.b.x - e.a.x, e.a.x) };
         let error = 16.0 * f64::EPSILON * span.abs() + 2.0 * f64::EPSILON * at.abs() + f64::MIN_POSITIVE;
         let below = |m: f64| {
+            if let Some((nx, ny, d)) = quotients
+                && let Some(order) = predicates::quotient_cmp(if along_y { ny } else { nx }, d, base, m)
+            {
+                return order.is_lt();
+            }
             if at - m > error {
                 false
             } else if m - at > error {
@@ -184,7 +196,9 @@ fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
 /// Whether the closed segment `e` meets the half-open pixel `p`, exactly: their boxes meet (the
 /// open sides strictly), and the pixel's corners are not all on one side of `e`'s line. The
 /// corners on the open sides are moved in by infinitesimals (x's far larger than y's), so a
-/// line through such a corner is judged by the side the corner moves to.
+/// line through such a corner is judged by the side the corner moves to. The side is linear
+/// over the (shrunk) square, so its two corners farthest either way along the line's normal
+/// decide: the other two lie between them.
 fn meets_pixel(e: Segment, p: Pixel, s: f64) -> bool {
     let (x, y) = (p.0 as f64, p.1 as f64);
     let (x0, x1, y0, y1) = ((x - 0.5) * s, (x + 0.5) * s, (y - 0.5) * s, (y + 0.5) * s);
@@ -210,13 +224,12 @@ fn meets_pixel(e: Segment, p: Pixel, s: f64) -> bool {
         }
         0
     };
-    let sides = [
-        side(Point::new(x0, y0), false, false),
-        side(Point::new(x1, y0), true, false),
-        side(Point::new(x0, y1), false, true),
-        side(Point::new(x1, y1), true, true),
-    ];
-    !(sides.iter().all(|&v| v > 0) || sides.iter().all(|&v| v < 0))
+    // orient(a, b, c) = dx·(c.y - a.y) - dy·(c.x - a.x): largest at this corner, least at the
+    // opposite one.
+    let (high_x, high_y) = (dy <= 0.0, dx > 0.0);
+    let corner = |right: bool, top: bool| side(Point::new(if right { x1 } else { x0 }, if top { y1 } else { y0 }), right, top);
+    let (most, least) = (corner(high_x, high_y), corner(!high_x, !high_y));
+    !((most > 0 && least > 0) || (most < 0 && least < 0))
 }
 
 /// Sorts the pixels an edge meets into their order along it: by column in its x direction, then
