@@ -163,9 +163,82 @@ impl CellIndex {
     }
 }
 
+impl CellIndex {
+    /// Calls `visit(i)` on every indexed box of `boxes` that meets the segment `a`–`b` widened
+    /// by `margin` (and on some others; a box can be visited more than once). Walks the rows of
+    /// cells the segment crosses, in each only the columns its stretch there covers: a long
+    /// diagonal edge looks at cells along it, not at every cell of its box.
+    pub fn for_each_near_segment(&self, boxes: &[Rect], a: Point, b: Point, margin: f64, mut visit: impl FnMut(usize)) {
+        // Rounding of the line's x, of the rows' heights and of the cell of a point: a few ulps
+        // of the largest coordinate involved, covered many times over.
+        let extent = (self.columns + self.rows) as f64 * self.size;
+        let scale = [a.x, a.y, b.x, b.y, self.origin.x, self.origin.y].iter().fold(extent, |m, v| m.max(v.abs()));
+        let margin = margin + 16.0 * f64::EPSILON * scale;
+        let reach = Rect::new(a.x.min(b.x) - margin, a.y.min(b.y) - margin, a.x.max(b.x) + margin, a.y.max(b.y) + margin);
+        if reach.is_empty() {
+            return;
+        }
+        let ((_, y0), (_, y1)) = (self.coordinates(reach.min), self.coordinates(reach.max));
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        // The x of the segment's line at height y, to within 8 ulps of `scale`.
+        let x_at = |y: f64| a.x + (y - a.y) / dy * dx;
+        for row in y0..=y1 {
+            let (bottom, top) = (self.origin.y + row as f64 * self.size, self.origin.y + (row + 1) as f64 * self.size);
+            let (lo, hi) = (reach.min.y.max(bottom - margin), reach.max.y.min(top + margin));
+            let (mut left, mut right) = (reach.min.x, reach.max.x);
+            if dy != 0.0 && lo <= hi {
+                let (p, q) = (x_at(lo.max(a.y.min(b.y))), x_at(hi.min(a.y.max(b.y))));
+                left = left.max(p.min(q) - margin);
+                right = right.min(p.max(q) + margin);
+            }
+            let stretch = Rect::new(left, lo, right, hi);
+            if stretch.is_empty() {
+                continue;
+            }
+            let ((x0, _), (x1, _)) = (self.coordinates(stretch.min), self.coordinates(stretch.max));
+            let (from, to) = (row * self.columns + x0, row * self.columns + x1);
+            let start = self.entries.partition_point(|e| e.0 < from);
+            for &(_, i) in self.entries[start..].iter().take_while(|e| e.0 <= to) {
+                if boxes[i as usize].intersects(&stretch) {
+                    visit(i as usize);
+                }
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn segment_walks_find_every_box_the_segment_passes_through() {
+        // Small squares on a lattice, and long and short segments every way: a square holding a
+        // point of the segment is visited, and a long diagonal skips squares far from it.
+        let mut boxes = Vec::new();
+        for k in 0..900 {
+            let (x, y) = (f64::from(k % 30) * 0.37, f64::from(k / 30) * 0.41);
+            boxes.push(Rect::new(x, y, x + 0.05, y + 0.05));
+        }
+        let index = CellIndex::with_cell_size(&boxes, 0.3).expect("boxes");
+        let ends = [(0.0, 0.0), (11.0, 12.0), (3.0, 0.2), (3.0, 9.0), (10.9, 0.1), (5.55, 5.55)];
+        for &(ax, ay) in &ends {
+            for &(bx, by) in &ends {
+                let (a, b) = (Point::new(ax, ay), Point::new(bx, by));
+                let mut seen = vec![false; boxes.len()];
+                index.for_each_near_segment(&boxes, a, b, 0.0, |i| seen[i] = true);
+                for t in 0..=500 {
+                    let p = a + (b - a) * (f64::from(t) / 500.0);
+                    for (i, r) in boxes.iter().enumerate() {
+                        assert!(!r.contains(p) || seen[i], "{a:?}-{b:?}: {r:?} holds {p:?}");
+                    }
+                }
+                if (ax, ay, bx, by) == (0.0, 0.0, 11.0, 12.0) {
+                    assert!(seen.iter().filter(|&&v| v).count() < boxes.len() / 4);
+                }
+            }
+        }
+    }
 
     #[test]
     fn close_pairs_and_queries_match_brute_force() {

@@ -78,8 +78,9 @@ fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
     let segments: Vec<Segment> = rings.iter().flat_map(|r| r.edges()).collect();
     let (hot, cell_size) = hot_pixels(&segments, s);
     let squares: Vec<Rect> = hot.iter().map(|&p| square(p, s)).collect();
-    // Cells sized like the edges that look pixels up, not like the pixels.
-    let index = cell_size.and_then(|size| CellIndex::with_cell_size(&squares, size));
+    // Cells a fraction of the edges' (which each cover a few): an edge walks the cells along it
+    // (a row at a time), so finer cells mean fewer pixels beside it to test.
+    let index = cell_size.and_then(|size| CellIndex::with_cell_size(&squares, size / 8.0));
     let mut met = Vec::new();
     let mut next = 0;
     rings
@@ -89,7 +90,7 @@ fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
             for segment in &segments[next..next + ring.len()] {
                 met.clear();
                 if let Some(index) = &index {
-                    index.for_each_meeting(&squares, &segment.bounds(), |k| {
+                    index.for_each_near_segment(&squares, segment.a, segment.b, 0.0, |k| {
                         if meets_pixel(*segment, hot[k], s) {
                             met.push(hot[k]);
                         }
