@@ -174,7 +174,8 @@ impl CellIndex {
         let extent = (self.columns + self.rows) as f64 * self.size;
         let scale = [a.x, a.y, b.x, b.y, self.origin.x, self.origin.y].iter().fold(extent, |m, v| m.max(v.abs()));
         let margin = margin + 16.0 * f64::EPSILON * scale;
-        let reach = Rect::new(a.x.min(b.x) - margin, a.y.min(b.y) - margin, a.x.max(b.x) + margin, a.y.max(b.y) + margin);
+        let reach =
+            Rect::new(a.x.min(b.x) - margin, a.y.min(b.y) - margin, a.x.max(b.x) + margin, a.y.max(b.y) + margin);
         if reach.is_empty() {
             return;
         }

@@ -228,7 +228,8 @@ fn meets_pixel(e: Segment, p: Pixel, s: f64) -> bool {
     // orient(a, b, c) = dx·(c.y - a.y) - dy·(c.x - a.x): largest at this corner, least at the
     // opposite one.
     let (high_x, high_y) = (dy <= 0.0, dx > 0.0);
-    let corner = |right: bool, top: bool| side(Point::new(if right { x1 } else { x0 }, if top { y1 } else { y0 }), right, top);
+    let corner =
+        |right: bool, top: bool| side(Point::new(if right { x1 } else { x0 }, if top { y1 } else { y0 }), right, top);
     let (most, least) = (corner(high_x, high_y), corner(!high_x, !high_y));
     !((most > 0 && least > 0) || (most < 0 && least < 0))
 }
