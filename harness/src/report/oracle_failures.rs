@@ -23,9 +23,10 @@ pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
          area) and the area identities. Each cell is failures / checked results, then the failed area identities \
          (one check per case and fill rule, over its four results) where there are any; a refusal of valid input, or an \
          external clipper that crashed or answered garbage, counts as a failure. An external clipper that gave no \
-         answer within the call time-out is not counted as a failure but as hung, beside it (\"2 hung\"). Peers (geo, Clipper2, GEOS, \
-         i_overlay, Clipper 1, clipper2-rust and external clippers) are judged with the looser peer tolerance \
-         (`GEO_TOLERANCE`, 1e-6 of the inputs' box area), this project's clippers with 1e-9.\n\n{notes}\n",
+         answer within the call time-out is not counted as a failure but as hung, beside it (\"2 hung\"). Peers \
+         (geo, Clipper2, GEOS, i_overlay, Clipper 1, clipper2-rust and external clippers) are judged with the \
+         looser peer tolerance (`GEO_TOLERANCE`, 1e-6 of the inputs' box area), this project's clippers with \
+         1e-9.\n\n{notes}\n",
         results.cases_per_workload, results.seed
     );
     for kind in ["polygon", "line"] {
