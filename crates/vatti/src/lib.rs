@@ -117,7 +117,8 @@
 //!   The clean-up reports the first two among the rings it rebuilds (for the first, two edges
 //!   leaving or arriving at one point in the same direction once opposite edges cancelled; two
 //!   one way and one back, as grid unions' holes retrace their outers, only in the sweep's own
-//!   output near rounding); outputs of at most
+//!   output near rounding and when the rebuilt rings then cross or overlap at a point they share,
+//!   checked exactly); outputs of at most
 //!   `form_check::MAX_EDGES` edges with an edge within 4096 ulps of the inputs' largest
 //!   coordinate also get a full exact check of their form. A broken output is swept once more,
 //!   alone, as its union under non-zero (the region the oracle reads from it), at most
