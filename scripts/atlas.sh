@@ -19,7 +19,9 @@ mkdir -p "$out"
 clipbench=target/release/clipbench
 cargo build --release -p clipbench --quiet
 clippers=(--clippers adapters/clippers.toml)
-workloads=(vatti-t3 star star-far holes multi grid spiky-box many-subjects scribble-rect scribble large)
+# Every polygon workload (clip-testkit's POLYGON_WORKLOADS; a test in harness/tests/cli.rs checks it).
+workloads=(vatti-t3 star star-far holes multi grid spiky-box many-subjects scribble-rect scribble large
+  comb nested concentric spiral windows corrosion lines-net checkerboard not-overlap wind-mill maps)
 
 # run FILE COMMAND...: runs the command (nice), its output into FILE, the command line into COMMANDS.md.
 run() {

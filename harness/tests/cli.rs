@@ -509,7 +509,7 @@ fn replay_of_a_case_file_that_does_not_hang_together_exits_2_instead_of_passing(
         "inputs": ["subject.wkt", "clip.wkt"], "replay": ""
     });
     let line = serde_json::json!({"kind": "line", "clipper": "liu", "check": "oracle", "other": null, "op": null, "fill": null});
-    let cases: [(serde_json::Value, &str); 12] = [
+    let cases: [(serde_json::Value, &str); 13] = [
         (
             serde_json::json!({"kind": "triangle"}),
             "case.json: unknown kind 'triangle' (a case is a polygon, line, curve or text case)",
@@ -527,7 +527,11 @@ fn replay_of_a_case_file_that_does_not_hang_together_exits_2_instead_of_passing(
         ),
         (
             serde_json::json!({"check": "triangle"}),
-            "case.json: unknown check 'triangle' (oracle, area-identities or disagreement)",
+            "case.json: unknown check 'triangle' (oracle, hung, area-identities or disagreement)",
+        ),
+        (
+            serde_json::json!({"check": "hung"}),
+            "case.json: 'other' (geo) is for a disagreement, and the check here is hung",
         ),
         (
             serde_json::json!({"op": null}),

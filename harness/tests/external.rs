@@ -55,9 +55,11 @@ fn a_broken_clipper_fails_its_broken_cases_and_every_other_case_is_judged() {
     let rows = summary["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 1, "{rows:?}");
     assert_eq!(rows[0]["origin"], "external");
-    // 6 cases x intersection x 4 fill rules, every one judged; only the four broken ones fail.
+    // 6 cases x intersection x 4 fill rules, every one judged; only the four broken ones fail,
+    // the hang counted apart from the oracle failures.
     assert_eq!(rows[0]["runs"], 24);
-    assert_eq!(rows[0]["oracle_failures"], 4, "{}", text(&o.stdout));
+    assert_eq!(rows[0]["oracle_failures"], 3, "{}", text(&o.stdout));
+    assert_eq!(rows[0]["hung"], 1, "{}", text(&o.stdout));
     let found: Vec<String> = summary["cases"]
         .as_array()
         .unwrap()
@@ -153,6 +155,42 @@ fn found(dir: &Path, summary: &serde_json::Value) -> Vec<serde_json::Value> {
             serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
         })
         .collect()
+}
+
+/// On a starved machine, adapters that gave no answer within --call-timeout were counted as
+/// oracle failures (issue 31). A hang is counted apart, in `hung`, and still recorded with its
+/// replay, under the check `hung`.
+#[test]
+fn a_hang_is_counted_as_hung_not_as_an_oracle_failure() {
+    let dir = scratch("hung");
+    // Request 3 of 8 never gets an answer.
+    let external = broken_clipper(&dir, [0, 3, 0, 0]);
+    let (o, summary) = verify_broken(&dir, &external, "2", &["--call-timeout", "2"]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let row = &summary["rows"][0];
+    let counts = (row["runs"].as_u64(), row["oracle_failures"].as_u64(), row["hung"].as_u64());
+    assert_eq!(counts, (Some(8), Some(0), Some(1)), "{row}");
+    // The text summary: a `hung` column beside `oracle fail`.
+    let table = text(&o.stdout);
+    let mut lines = table.lines();
+    let head: Vec<&str> = lines.next().unwrap().split("  ").map(str::trim).filter(|c| !c.is_empty()).collect();
+    let broken = lines.find(|l| l.starts_with("broken")).unwrap_or_else(|| panic!("{table}"));
+    let cells: Vec<&str> = broken.split_whitespace().collect();
+    let cell = |name: &str| cells[head.iter().position(|h| *h == name).unwrap_or_else(|| panic!("{name}: {table}"))];
+    assert_eq!((cell("oracle fail"), cell("hung")), ("0", "1"), "{table}");
+    // Recorded under `hung`, with a replay that runs (the hang was on request 3 only: it passes).
+    let cases = found(&dir, &summary);
+    assert_eq!(cases.len(), 1, "{cases:?}");
+    assert_eq!(cases[0]["check"], "hung");
+    let message = cases[0]["found"].as_str().unwrap();
+    assert!(message.contains("no answer within 2.0 s"), "{message}");
+    let folder = summary["cases"][0]["folder"].as_str().unwrap();
+    assert!(folder.ends_with("-broken-hung"), "{folder}");
+    let words = shlex::split(cases[0]["replay"].as_str().unwrap()).unwrap();
+    let args: Vec<&str> = words[1..].iter().map(String::as_str).collect();
+    let again = clipbench(&args);
+    assert_eq!(again.status.code(), Some(0), "{}\n{}", text(&again.stdout), text(&again.stderr));
+    assert!(text(&again.stdout).starts_with("passes now: polygon broken hung"), "{}", text(&again.stdout));
 }
 
 /// A reply's own time of -5 ns was dropped without a word; it is a protocol error now, which

@@ -121,7 +121,8 @@
 //!   orientation. The clean-up reports the first two among the rings it rebuilds (for the first,
 //!   two edges leaving or arriving at one point in the same direction once opposite edges
 //!   cancelled; two one way and one back, as grid unions' holes retrace their outers, only near
-//!   rounding); outputs of at most `form_check::MAX_EDGES` edges with an edge within 4096 ulps of
+//!   rounding and when the rebuilt rings then cross or overlap at a point they share, checked
+//!   exactly); outputs of at most `form_check::MAX_EDGES` edges with an edge within 4096 ulps of
 //!   the inputs' largest coordinate also get a full exact check of their form. Where the sweep
 //!   left a point near an edge but off it (a near miss), the clean-up also splits slanted edges
 //!   at the vertices on them, so rounded edges through exact vertices cancel or are reported like

@@ -363,8 +363,8 @@ struct Timed<'a> {
 }
 
 /// Interleaved rounds over cases and clippers; a clipper over the cap is timed once, a long one by
-/// its warm-up call. An external
-/// clipper that reports its own time gets a second row, `NAME (own time)`, beside the round trip.
+/// its warm-up call. An external clipper that reports its own time gets a second row,
+/// `NAME (own time)`, beside the round trip.
 fn measure_point(
     group: &Group,
     size: usize,

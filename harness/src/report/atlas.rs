@@ -201,11 +201,13 @@ impl Atlas {
         self.speed.as_ref()?.iter().find(|r| r.clipper == name)
     }
 
-    /// Oracle failures and results checked over every verified workload, `None` when it ran on none.
-    fn verified(&self, clipper: &str) -> Option<(usize, usize)> {
+    /// Oracle failures, hangs and results checked over every verified workload, `None` when it
+    /// ran on none.
+    fn verified(&self, clipper: &str) -> Option<(usize, usize, usize)> {
         let rows: Vec<&VerifyRow> =
             self.verify.values().flat_map(|(_, rows)| rows).filter(|r| r.clipper == clipper).collect();
-        (!rows.is_empty()).then(|| rows.iter().fold((0, 0), |(f, n), r| (f + r.oracle_failures, n + r.runs)))
+        (!rows.is_empty())
+            .then(|| rows.iter().fold((0, 0, 0), |(f, h, n), r| (f + r.oracle_failures, h + r.hung, n + r.runs)))
     }
 
     /// The name an external clipper's handshake gave (library and version), from the first
@@ -224,8 +226,13 @@ impl Atlas {
     /// The short notes of a row, from its counts: what it got wrong, refused, crashed or hung on.
     fn notes(&self, clipper: &str) -> String {
         let mut notes = Vec::new();
-        if let Some((failures, runs)) = self.verified(clipper).filter(|v| v.0 > 0) {
-            notes.push(format!("fails the oracle on {failures} of {runs} verify results"));
+        if let Some((failures, hung, runs)) = self.verified(clipper) {
+            if failures > 0 {
+                notes.push(format!("fails the oracle on {failures} of {runs} verify results"));
+            }
+            if hung > 0 {
+                notes.push(format!("gave no answer in time on {hung} of {runs} verify results"));
+            }
         }
         for (suite, tallies) in &self.conformance {
             if let Some(t) = tallies.iter().flatten().find(|t| t.clipper == clipper && t.failed > 0) {
@@ -323,7 +330,8 @@ impl Atlas {
                     None => NOT_RUN.to_owned(),
                     Some((_, rows)) => rows.iter().find(|r| &r.clipper == c).map_or(ABSENT.to_owned(), |r| {
                         let cell = format!("{} / {}", r.oracle_failures, r.runs);
-                        if r.oracle_failures > 0 { format!("**{cell}**") } else { cell }
+                        let cell = if r.oracle_failures > 0 { format!("**{cell}**") } else { cell };
+                        summary::with_hung(cell, r.hung)
                     }),
                 }));
                 line
@@ -331,8 +339,10 @@ impl Atlas {
             .collect();
         format!(
             "Oracle failures per workload (`clipbench verify`, the largest case count run per workload): results the \
-             exact oracle rejected / results checked, refusals of valid input and failed area identities included. A \
-             clipper declaring fewer fill rules has fewer results checked.\n\n{}\n",
+             exact oracle rejected / results checked, refusals of valid input and failed area identities included; \
+             beside them, the results an external clipper gave no answer to within the call time-out (\"3 hung\"), \
+             which are not wrong answers and not in the failures. A clipper declaring fewer fill rules has fewer \
+             results checked.\n\n{}\n",
             table(&head, &body)
         )
     }
@@ -494,13 +504,14 @@ mod tests {
         std::fs::write(path, text).unwrap();
     }
 
-    fn verify_file(path: &Path, cases: usize, rows: &[(&str, &str, usize, usize)]) {
+    /// Rows of (clipper, workload, oracle failures, hung, runs).
+    fn verify_file(path: &Path, cases: usize, rows: &[(&str, &str, usize, usize, usize)]) {
         let results = VerifyResults {
             seed: 1,
             cases_per_workload: cases,
             rows: rows
                 .iter()
-                .map(|&(clipper, workload, failures, runs)| VerifyRow {
+                .map(|&(clipper, workload, failures, hung, runs)| VerifyRow {
                     clipper: clipper.into(),
                     origin: "external".into(),
                     kind: "polygon".into(),
@@ -508,6 +519,7 @@ mod tests {
                     cases,
                     runs,
                     oracle_failures: failures,
+                    hung,
                     ..VerifyRow::default()
                 })
                 .collect(),
@@ -536,9 +548,12 @@ mod tests {
             "[[clipper]]\nname = \"ext\"\ncommand = \"ext --serve\"\nlibrary = \"Ext 1\"\nlanguage = \"Go\"\n",
         );
         // A smaller run of `star` is superseded by the larger one; `holes` ran only small.
-        verify_file(&atlas.join("verify-20/star.json"), 20, &[("vatti", "star", 0, 320), ("ext", "star", 9, 80)]);
-        verify_file(&atlas.join("verify-200/star.json"), 200, &[("vatti", "star", 0, 3200), ("ext", "star", 7, 800)]);
-        verify_file(&atlas.join("verify-20/holes.json"), 20, &[("vatti", "holes", 0, 320), ("ext", "holes", 2, 80)]);
+        let star_20 = [("vatti", "star", 0, 0, 320), ("ext", "star", 9, 0, 80)];
+        verify_file(&atlas.join("verify-20/star.json"), 20, &star_20);
+        let star_200 = [("vatti", "star", 0, 0, 3200), ("ext", "star", 7, 3, 800)];
+        verify_file(&atlas.join("verify-200/star.json"), 200, &star_200);
+        let holes_20 = [("vatti", "holes", 0, 0, 320), ("ext", "holes", 2, 0, 80)];
+        verify_file(&atlas.join("verify-20/holes.json"), 20, &holes_20);
         write(
             &atlas.join(HOSTILE_JSON),
             r#"{"tallies": [{"clipper": "ext", "runs": 10, "right": 5, "wrong": 2, "refused": 1, "crashed": 1, "hung": 1,
@@ -585,7 +600,7 @@ mod tests {
         assert_eq!(workloads, ["star", "holes", "grid"], "clip-testkit's order");
         let verify = atlas.verify_table(&clippers, &workloads);
         assert!(verify.contains("| clipper | `star` (200 cases) | `holes` (20 cases) | `grid` |"), "{verify}");
-        assert_eq!(row(&verify, "ext"), ["`ext`", "**7 / 800**", "**2 / 80**", "not run"]);
+        assert_eq!(row(&verify, "ext"), ["`ext`", "**7 / 800**, 3 hung", "**2 / 80**", "not run"]);
         assert_eq!(row(&verify, "vatti"), ["`vatti`", "0 / 3200", "0 / 320", "not run"]);
         assert_eq!(row(&verify, "clipper2"), ["`clipper2`", "-", "-", "not run"], "in no verify file: not 0");
         let judged = atlas.judged_table(&clippers);
@@ -609,10 +624,11 @@ mod tests {
     fn the_notes_add_the_counts_up_and_name_every_kind_of_failure() {
         let results = synthetic("notes");
         let atlas = read_synthetic(&results);
-        assert_eq!(atlas.verified("ext"), Some((7 + 2, 800 + 80)), "the largest run of each workload, summed");
+        assert_eq!(atlas.verified("ext"), Some((7 + 2, 3, 800 + 80)), "the largest run of each workload, summed");
         let notes = atlas.notes("ext");
         for part in [
             "fails the oracle on 9 of 880 verify results",
+            "gave no answer in time on 3 of 880 verify results",
             "fails 1 of 5 Clipper2's Polygons.txt",
             "wrong or invalid output on 2 of 10 hostile calls",
             "refused on 1 of 10 hostile calls",
@@ -685,7 +701,11 @@ mod tests {
         assert!(verify.contains(&format!("`star` ({n} cases)")), "{verify}");
         for r in star["rows"].as_array().unwrap() {
             let cell = format!("{} / {}", r["oracle_failures"], r["runs"]);
-            assert_eq!(row(&verify, r["clipper"].as_str().unwrap())[column].trim_matches('*'), cell);
+            let cell = match r["hung"].as_u64() {
+                Some(hung) if hung > 0 => format!("{cell}, {hung} hung"),
+                _ => cell,
+            };
+            assert_eq!(row(&verify, r["clipper"].as_str().unwrap())[column].replace('*', ""), cell);
         }
         // Every external clipper of adapters/clippers.toml has a row, with its library, and its
         // version where the hostile file recorded the handshake.

@@ -7,6 +7,7 @@ use super::derived::Derived;
 use super::markdown::table;
 use super::provenance_line::provenance_line;
 use super::results_folder::ResultsFolder;
+use super::summary::with_hung;
 use crate::cli_error::CliError;
 use crate::results_files::verify::{CaseEntry, FAILURES, META, PICTURE, VerifyRow};
 
@@ -21,9 +22,11 @@ pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
          and fill rule it supports, against the exact oracle (output validity, membership at sample points, region \
          area) and the area identities. Each cell is failures / checked results, then the failed area identities \
          (one check per case and fill rule, over its four results) where there are any; a refusal of valid input, or an \
-         external clipper that crashed, hung or answered garbage, counts as a failure. Peers (geo, Clipper2, GEOS, \
-         i_overlay, Clipper 1, clipper2-rust and external clippers) are judged with the looser peer tolerance \
-         (`GEO_TOLERANCE`, 1e-6 of the inputs' box area), this project's clippers with 1e-9.\n\n{notes}\n",
+         external clipper that crashed or answered garbage, counts as a failure. An external clipper that gave no \
+         answer within the call time-out is not counted as a failure but as hung, beside it (\"2 hung\"). Peers \
+         (geo, Clipper2, GEOS, i_overlay, Clipper 1, clipper2-rust and external clippers) are judged with the \
+         looser peer tolerance (`GEO_TOLERANCE`, 1e-6 of the inputs' box area), this project's clippers with \
+         1e-9.\n\n{notes}\n",
         results.cases_per_workload, results.seed
     );
     for kind in ["polygon", "line"] {
@@ -89,7 +92,8 @@ fn failure_table(rows: &[VerifyRow], kind: &str) -> Option<String> {
                     if r.identity_failures > 0 {
                         cell.push_str(&format!(" + {} identity", r.identity_failures));
                     }
-                    if r.oracle_failures + r.identity_failures > 0 { format!("**{cell}**") } else { cell }
+                    let cell = if r.oracle_failures + r.identity_failures > 0 { format!("**{cell}**") } else { cell };
+                    with_hung(cell, r.hung)
                 })
             }));
             line

@@ -47,6 +47,8 @@ pub struct SummaryRow {
     pub origin: String,
     /// Oracle failures and checked results, summed over the workloads verified.
     pub verified: Option<(usize, usize)>,
+    /// Of those results, the ones an external clipper gave no answer to in time (not oracle failures).
+    pub hung: usize,
     /// Bench points with a wrong case, and points timed.
     pub bench_wrong: Option<(usize, usize)>,
     /// Geometric mean of its ratios to Clipper2 below [`LARGE_FROM`] edges, with the geometric
@@ -84,6 +86,7 @@ pub fn rows(verify: &[VerifyRow], bench: &Points, memory: &[MemoryRecord]) -> BT
         };
         let (failures, runs) = row.verified.unwrap_or((0, 0));
         row.verified = Some((failures + r.oracle_failures, runs + r.runs));
+        row.hung += r.hung;
     }
     let registry = crate::registry::registry();
     let mut benched: Vec<&str> = Vec::new();
@@ -171,7 +174,7 @@ fn kind_table(rows: &[SummaryRow]) -> String {
             vec![
                 format!("`{}`", r.clipper),
                 format!("{} ({})", r.origin, language(&r.clipper, &r.origin)),
-                pair(r.verified),
+                with_hung(pair(r.verified), r.hung),
                 pair(r.bench_wrong),
                 r.speed_small.map_or("–".to_owned(), |i| num_interval(&i, 2)),
                 r.speed_large.map_or("–".to_owned(), |i| num_interval(&i, 2)),
@@ -182,6 +185,11 @@ fn kind_table(rows: &[SummaryRow]) -> String {
     table(&head, &body)
 }
 
+/// A count cell with its hangs beside it ("12 / 3200, 3 hung"), shown only when there are some.
+pub fn with_hung(cell: String, hung: usize) -> String {
+    if hung > 0 { format!("{cell}, {hung} hung") } else { cell }
+}
+
 /// Trust (share of checked results the oracle accepted) against speed (the overall geometric
 /// mean ratio to Clipper2, small and large sizes together), one point per polygon clipper with
 /// both.
@@ -189,7 +197,8 @@ pub fn chart(rows: &[SummaryRow]) -> Chart {
     let series = rows
         .iter()
         .filter_map(|r| {
-            let (failures, runs) = r.verified.filter(|v| v.1 > 0)?;
+            // Trust is over the results answered in time: a hang is not a wrong answer.
+            let (failures, runs) = r.verified.map(|(f, n)| (f, n - r.hung.min(n))).filter(|v| v.1 > 0)?;
             let speeds: Vec<f64> = [r.speed_small, r.speed_large].iter().flatten().map(|i| i.estimate).collect();
             let speed = (!speeds.is_empty()).then(|| geometric_mean(&speeds))?;
             let trust = 100.0 * (1.0 - failures as f64 / runs as f64);
@@ -205,7 +214,7 @@ pub fn chart(rows: &[SummaryRow]) -> Chart {
     Chart {
         title: format!("Polygon clippers: results the oracle accepted against time relative to {BASELINE}"),
         x_label: format!("time per call x {BASELINE} (geometric mean over bench points; log scale; left is faster)"),
-        y_label: "results the oracle accepted (%)".to_owned(),
+        y_label: "results the oracle accepted (% of those answered in time)".to_owned(),
         log_x: true,
         log_y: false,
         x_ticks: Vec::new(),
@@ -310,5 +319,22 @@ mod tests {
         // The liar is not placed on the trust-against-speed picture: it has no speed.
         let labels: Vec<String> = chart(polygon).series.into_iter().map(|s| s.label).collect();
         assert_eq!(labels, ["vatti", "clipper2"]);
+    }
+
+    #[test]
+    fn hangs_are_shown_beside_the_failures_and_left_out_of_trust() {
+        let mut slow = verify_row("slow", "external", "polygon", 1, 100);
+        slow.hung = 50;
+        let bench: Points = [(("star".to_owned(), "intersection".to_owned(), 20, "slow".to_owned()), point(2.0, 0))]
+            .into_iter()
+            .collect();
+        let rows = rows(&[slow], &bench, &[]);
+        let polygon = &rows["polygon"];
+        assert_eq!((polygon[0].verified, polygon[0].hung), (Some((1, 100)), 50));
+        let table = kind_table(polygon);
+        assert!(table.contains("| `slow` | external (see adapters/) | **1 / 100**, 50 hung |"), "{table}");
+        // 1 wrong of the 50 answered: 98%, not 99% of 100 nor 49% as if the hangs were wrong.
+        let trust = chart(polygon).series[0].points[0].1;
+        assert!((trust - 98.0).abs() < 1e-9, "{trust}");
     }
 }

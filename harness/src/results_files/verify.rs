@@ -61,8 +61,13 @@ pub struct CountsRow<S: Ord> {
     pub cases: usize,
     /// Checked results: one per case, operation and fill rule (one per case for lines).
     pub runs: usize,
-    /// Results the oracle rejected (including refusals and failures to answer): at most `runs`.
+    /// Results the oracle rejected (including refusals and failures to answer, but not hangs):
+    /// with `hung`, at most `runs`.
     pub oracle_failures: usize,
+    /// Runs where an external clipper gave no answer within the call time-out: not a wrong
+    /// answer (counted in `oracle_failures` by files written before they were counted apart).
+    #[serde(default)]
+    pub hung: usize,
     /// Cases and fill rules whose four results break an area identity (not runs themselves;
     /// counted in `oracle_failures` by files written before they were counted apart).
     #[serde(default)]
@@ -81,6 +86,7 @@ impl<S: Ord + Clone> CountsRow<S> {
         self.cases += other.cases;
         self.runs += other.runs;
         self.oracle_failures += other.oracle_failures;
+        self.hung += other.hung;
         self.identity_failures += other.identity_failures;
         for (name, n) in &other.disagreements {
             *self.disagreements.entry(name.clone()).or_default() += n;
@@ -104,6 +110,7 @@ impl<S: Ord + Clone> CountsRow<S> {
             cases: self.cases,
             runs: self.runs,
             oracle_failures: self.oracle_failures,
+            hung: self.hung,
             identity_failures: self.identity_failures,
             disagreements: self.disagreements.iter().map(|(k, v)| (own(k), *v)).collect(),
             bridges: self.bridges,

@@ -35,7 +35,7 @@ pub struct CaseFile {
     pub kind: String,
     /// The clipper the failure is counted under.
     pub clipper: String,
-    /// `oracle`, `area-identities`, or `disagreement`.
+    /// `oracle`, `hung`, `area-identities`, or `disagreement`.
     pub check: String,
     /// For a disagreement, the other clipper.
     pub other: Option<String>,
@@ -110,6 +110,7 @@ pub fn record(
     let (other, check) = match finding.check {
         Check::Disagreement(o) => (Some(o.to_owned()), "disagreement"),
         Check::Oracle => (None, "oracle"),
+        Check::Hung => (None, "hung"),
         Check::AreaIdentities => (None, "area-identities"),
     };
     let mut case = CaseFile {

@@ -1,4 +1,5 @@
 //! The verify summary: counts per clipper and workload, printed as a table or written as JSON.
+use crate::checks::Check;
 use crate::registry::Origin;
 use crate::results_files::verify::{CaseEntry, CountsRow, VerifyResults};
 
@@ -9,6 +10,11 @@ impl Row {
     /// An empty row.
     pub fn new(clipper: &'static str, origin: Origin, kind: &'static str, workload: &'static str) -> Row {
         Row { clipper, origin: origin.label(), kind, workload, ..Row::default() }
+    }
+
+    /// The count a failed run is added to: `hung` for [`Check::Hung`], else `oracle_failures`.
+    pub fn failures(&mut self, check: Check) -> &mut usize {
+        if check == Check::Hung { &mut self.hung } else { &mut self.oracle_failures }
     }
 }
 
@@ -61,6 +67,7 @@ pub fn table(rows: &[Row]) -> String {
     let with_identities = rows.iter().any(|r| r.kind == "polygon");
     let mut header = vec!["clipper".to_owned(), "kind".into(), "workload".into(), "cases".into(), "runs".into()];
     header.push("oracle fail".into());
+    header.push("hung".into());
     if with_identities {
         header.push("identity fail".into());
     }
@@ -77,6 +84,7 @@ pub fn table(rows: &[Row]) -> String {
             r.cases.to_string(),
             r.runs.to_string(),
             r.oracle_failures.to_string(),
+            r.hung.to_string(),
         ];
         if with_identities {
             cells.push(if r.kind == "polygon" { r.identity_failures.to_string() } else { "-".to_owned() });
@@ -132,9 +140,10 @@ mod tests {
         let mut b = a.clone();
         b.cases = 3;
         b.bridges = Some(2);
+        b.hung = 1;
         b.disagreements.insert("geo", 1);
         a.add(&b);
         a.add(&b);
-        assert_eq!((a.cases, a.bridges, a.disagreements["geo"]), (6, Some(4), 2));
+        assert_eq!((a.cases, a.bridges, a.hung, a.disagreements["geo"]), (6, Some(4), 2, 2));
     }
 }
