@@ -19,7 +19,9 @@ mkdir -p "$out"
 clipbench=target/release/clipbench
 cargo build --release -p clipbench --quiet
 clippers=(--clippers adapters/clippers.toml)
-workloads=(vatti-t3 star star-far holes multi grid spiky-box many-subjects scribble-rect scribble large)
+# Every polygon workload (clip-testkit's POLYGON_WORKLOADS; a test in harness/tests/reference_run.rs checks it).
+workloads=(vatti-t3 star star-far holes multi grid spiky-box many-subjects near-coincident scribble-rect scribble large
+  comb nested concentric spiral windows corrosion lines-net checkerboard not-overlap wind-mill maps)
 
 # run FILE COMMAND...: runs the command (nice), its output into FILE, the command line into COMMANDS.md.
 run() {
@@ -43,7 +45,8 @@ case "$stage" in
     ;;
   conformance)
     for suite in clipper2-polygons geo-booleanop; do
-      run "$out/conformance-$suite.txt" "$clipbench" conformance "$suite" "${clippers[@]}" --clipper clipper2
+      run "$out/conformance-$suite.txt" "$clipbench" conformance "$suite" "${clippers[@]}" --clipper vatti \
+        --clipper clipper2 --json "$out/conformance-$suite.json"
     done
     ;;
   hostile)

@@ -90,8 +90,9 @@ report() {
     cov=$(echo "$last" | sed -E 's/.* cov: ([0-9]+).*/\1/')
     faults=$(echo "$last" | sed -E 's/.*oom\/timeout\/crash: ([0-9\/]+).*/\1/')
     secs=$(echo "$last" | sed -E 's/.* time: ([0-9]+)s.*/\1/')
-    # The statistics line can predate the last crash: count the crashing inputs written instead.
-    crashes=$(find "artifacts/$t" -type f -newer "$logs/start" 2>/dev/null | wc -l)
+    # The statistics line can predate the last crash: count the crashing inputs written instead
+    # (crash-*; libFuzzer also writes timeout-* and slow-unit-* there, counted above).
+    crashes=$(find "artifacts/$t" -type f -name 'crash-*' -newer "$logs/start" 2>/dev/null | wc -l)
     echo "$t: $execs executions in ${secs}s, coverage $cov, oom/timeout $(echo "$faults" | cut -d/ -f1-2), crashes $crashes"
     if [ "$crashes" -gt 0 ]; then
         echo "  new crashing inputs in fuzz/artifacts/$t/"

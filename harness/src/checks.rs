@@ -18,6 +18,9 @@ use crate::registry::{LineEntry, PolygonEntry};
 pub enum Check {
     /// The oracle rejected the result of one operation (or the clipper refused valid input).
     Oracle,
+    /// An external clipper gave no answer within the call time-out: not a wrong answer, so
+    /// counted apart, but kept with its replay.
+    Hung,
     /// The four operations' results break an area identity.
     AreaIdentities,
     /// The result differs by region (or by visible intervals) from another clipper's.
@@ -29,6 +32,7 @@ impl Check {
     pub fn label(self) -> String {
         match self {
             Check::Oracle => "oracle".into(),
+            Check::Hung => "hung".into(),
             Check::AreaIdentities => "area-identities".into(),
             Check::Disagreement(other) => format!("vs-{other}"),
         }
@@ -67,6 +71,12 @@ pub struct Failure {
 impl Failure {
     fn new(how: Failing, message: String) -> Failure {
         Failure { how, message }
+    }
+
+    /// The check a failed run is recorded under: [`Check::Hung`] when the clipper gave no
+    /// answer in time, else [`Check::Oracle`].
+    pub fn run_check(&self) -> Check {
+        if self.how == Failing::NoAnswer(FailureKind::Hung) { Check::Hung } else { Check::Oracle }
     }
 }
 
@@ -148,7 +158,19 @@ pub fn polygon_oracle(
     fill: FillRule,
     output: &Polygons,
 ) -> Result<f64, Failure> {
-    check_polygon_result(subject, clip, op, fill, output, &output_rules(entry, subject, fill)).map_err(|f| {
+    polygon_oracle_under(&output_rules(entry, subject, fill), subject, clip, op, fill, output)
+}
+
+/// [`polygon_oracle`] with the output read under `rules` (the caller's [`output_rules`]).
+pub fn polygon_oracle_under(
+    rules: &OutputRules,
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+    output: &Polygons,
+) -> Result<f64, Failure> {
+    check_polygon_result(subject, clip, op, fill, output, rules).map_err(|f| {
         let how = match f {
             PolygonFailure::Invalid(_) => Failing::Invalid,
             PolygonFailure::WrongPoint { .. } | PolygonFailure::WrongRegion { .. } => Failing::Wrong,

@@ -9,7 +9,7 @@ use std::process::ExitCode;
 use crate::cli_error::CliError;
 use crate::measure::interval::Interval;
 use crate::measure::raw::{Measurement, read_csv};
-use crate::report::bench_tables::{Point, Points, points};
+use crate::report::bench_points::{Point, Points, points};
 use crate::report::markdown::{header, num_interval, table};
 use crate::results_files::bench::{BASELINE, CSV, TEXT_GROUP};
 

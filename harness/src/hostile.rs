@@ -17,6 +17,7 @@ use crate::checks::{Failing, Failure, polygon_oracle, run_polygon};
 use crate::cli_error::CliError;
 use crate::console;
 use crate::registry::Registry;
+use crate::results_files::atlas::HostileTally;
 use crate::write::write_file;
 
 /// Arguments of `clipbench hostile`.
@@ -62,25 +63,6 @@ impl Outcome {
             Failing::Invalid | Failing::Wrong | Failing::AreaIdentity | Failing::Disagrees => Outcome::Wrong,
         }
     }
-}
-
-/// One clipper's counts.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct Tally {
-    /// Clipper name.
-    pub clipper: &'static str,
-    /// Calls made.
-    pub runs: usize,
-    /// Results the oracle passed.
-    pub right: usize,
-    /// Results the oracle rejected.
-    pub wrong: usize,
-    /// Refusals and library errors.
-    pub refused: usize,
-    /// Panics, exits, garbage.
-    pub crashed: usize,
-    /// Time-outs.
-    pub hung: usize,
 }
 
 /// A call that was not right.
@@ -135,8 +117,14 @@ pub fn run(args: &HostileArgs, registry: Registry) -> Result<ExitCode, CliError>
             })
             .collect()
     });
-    let mut tallies: Vec<Tally> =
-        entries.iter().map(|e| Tally { clipper: e.clipper.name(), ..Tally::default() }).collect();
+    let mut tallies: Vec<HostileTally> = entries
+        .iter()
+        .map(|e| HostileTally {
+            clipper: e.clipper.name().to_owned(),
+            handshake: e.handshake.clone(),
+            ..HostileTally::default()
+        })
+        .collect();
     let mut incidents = Vec::new();
     for (&(e, c, op, fill), (outcome, message)) in calls.iter().zip(results) {
         let t = &mut tallies[e];

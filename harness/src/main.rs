@@ -3,10 +3,13 @@
 
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::builder::{PossibleValue, PossibleValuesParser};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 use clipbench::cli_error::CliError;
 use clipbench::registry::Registry;
+use clipbench::report::document::ReportRun;
+use clipbench::report::sections;
 use clipbench::{
     bench, checks, clip, compare, conformance, external, hostile, merge, referee, registry, report, reproduce,
     text_cmd, verify,
@@ -57,7 +60,7 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = parse();
     checks::quiet_clipper_panics();
     let registry = registry::registry();
     let result = match &cli.command {
@@ -92,35 +95,40 @@ fn main() -> ExitCode {
     }
 }
 
-/// `clipbench reproduce`: each asked table measured, then its markdown and plot, then REPORT.md.
-/// A table's markdown is written before the next table is measured, so a failure later keeps it.
+/// The command line, with `reproduce`'s tables (names and what each measures) taken from the
+/// report's one list of sections.
+fn parse() -> Cli {
+    let tables = sections::tables().into_iter().map(|t| PossibleValue::new(t.name).help(t.about));
+    let all = PossibleValue::new(sections::ALL_TABLES).help("every table above, in this order");
+    let values = PossibleValuesParser::new(tables.chain([all]));
+    let command = Cli::command().mut_subcommand("reproduce", |c| c.mut_arg("table", |a| a.value_parser(values)));
+    Cli::from_arg_matches(&command.get_matches()).unwrap_or_else(|e| e.exit())
+}
+
+/// `clipbench reproduce`: each asked table measured, then the sections it feeds (their markdown
+/// and plots), then REPORT.md with the rest. A table's markdown is written before the next table
+/// is measured, so a failure later keeps it; no section is derived twice.
 fn reproduce_then_report(args: &reproduce::ReproduceArgs) -> Result<ExitCode, CliError> {
-    let plan = reproduce::plan(args)?;
-    for &table in &plan.tables {
-        reproduce::measure(table, args, &plan.out)?;
-        match table {
-            reproduce::Table::VattiTable3 => report::table3::write(&plan.out)?,
-            reproduce::Table::WangTable4 => report::table4::write(&plan.out)?,
-            reproduce::Table::BeyondPaper => report::beyond_paper::write(&plan.out)?,
-            reproduce::Table::Lecture => {
-                report::lecture_curves::write(&plan.out)?;
-                report::lecture_text::write(&plan.out)?;
-            }
-        }
+    let tables = sections::tables_named(&args.table)?;
+    let out = reproduce::ready(args)?;
+    let mut report = ReportRun::new(&out);
+    for table in tables {
+        (table.measure)(args, &out)?;
+        report.derive_table(table)?;
     }
-    report::write_report(&plan.out)?;
+    report::finish(report)?;
     Ok(ExitCode::SUCCESS)
 }
 
-/// `clipbench bench`: the raw files measured, then the bench tables and plots, then REPORT.md.
-/// The hidden memory-probe mode only measures and prints, and writes no files.
+/// `clipbench bench`: the raw files measured, then every section (the bench's tables and plots
+/// among them) and REPORT.md. The hidden memory-probe mode only measures and prints, and writes
+/// no files.
 fn bench_then_report(args: &bench::BenchArgs, registry: Registry) -> Result<ExitCode, CliError> {
     if let Some(spec) = &args.memory_probe {
         return bench::run_memory_probe(spec, args.seed, &registry);
     }
     let registry = external::add_external(registry, &args.external)?;
     let out = bench::run(args, registry)?;
-    report::bench_tables::write(&out)?;
     report::write_report(&out)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -4,6 +4,8 @@ mod geojson_checks;
 mod wkt_geometry;
 mod wkt_text;
 
+pub use geojson_checks::RingEnds;
+
 use std::fmt;
 use std::path::Path;
 use std::str::FromStr;
@@ -185,15 +187,26 @@ fn geojson_geometries(json: &geojson::GeoJson) -> Result<Parsed, String> {
     let mut beyond_xy = false;
     for (place, g) in found {
         let Some(g) = g else { continue };
-        // The conversion indexes positions unchecked: a position `[0]` would panic in it.
-        geojson_checks::check_geometry(&g.value, &place, &mut beyond_xy)?;
-        let geometry = Geometry::try_from(&g.value).map_err(|e| format!("{place}: unusable GeoJSON: {e}"))?;
+        let geometry = geo_geometry(&g.value, &place, RingEnds::MustClose, &mut beyond_xy)?;
         parsed.geometries.push(Placed { place, geometry });
     }
     if beyond_xy {
         parsed.dropped.push("positions' numbers after x and y (z) dropped: clipping is in the plane".into());
     }
     Ok(parsed)
+}
+
+/// A GeoJSON geometry at `place` as geo types, its positions (and rings, as `ends` says) checked
+/// first: the conversion indexes a position's x and y unchecked, so a position `[0]` would panic
+/// in it. Sets `beyond_xy` when a position has more than x and y.
+pub fn geo_geometry(
+    value: &geojson::GeometryValue,
+    place: &Place,
+    ends: RingEnds,
+    beyond_xy: &mut bool,
+) -> Result<Geometry, String> {
+    geojson_checks::check_geometry(value, place, ends, beyond_xy)?;
+    Geometry::try_from(value).map_err(|e| format!("{place}: unusable GeoJSON: {e}"))
 }
 
 /// A GeoJSON subject of features, each to be clipped on its own.

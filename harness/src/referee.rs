@@ -23,6 +23,7 @@ use crate::checks::run_polygon;
 use crate::cli_error::CliError;
 use crate::console;
 use crate::registry::{PolygonEntry, Registry};
+use crate::results_files::atlas::RefereeTally;
 use crate::write::write_file;
 
 /// Arguments of `clipbench referee`.
@@ -92,32 +93,13 @@ impl Comparison {
     }
 }
 
-/// One workload's tally.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct WorkloadTally {
-    /// Workload.
-    pub workload: &'static str,
-    /// Cases run.
-    pub cases: usize,
-    /// Results compared.
-    pub compared: usize,
-    /// Calls the referee did not answer with a result (its error, a crash or a time-out).
-    pub failed: usize,
-    /// The largest relative area difference.
-    pub largest_relative: f64,
-    /// The largest difference as a multiple of the rounding bound.
-    pub largest_of_bound: f64,
-    /// Results whose difference is beyond rounding.
-    pub beyond_rounding: usize,
-}
-
 /// What `--json` writes.
 #[derive(Debug, Serialize)]
 struct RefereeFile<'a> {
     referee: &'a str,
     seed: u64,
     cases_per_workload: usize,
-    workloads: &'a [WorkloadTally],
+    workloads: &'a [RefereeTally],
     beyond_rounding: Vec<&'a Comparison>,
     failures: &'a [(String, String)],
 }
@@ -175,8 +157,10 @@ pub fn run(args: &RefereeArgs, registry: &Registry) -> Result<ExitCode, CliError
     });
     progress.finish_and_clear();
 
-    let mut tallies: Vec<WorkloadTally> =
-        workloads.iter().map(|&workload| WorkloadTally { workload, ..WorkloadTally::default() }).collect();
+    let mut tallies: Vec<RefereeTally> = workloads
+        .iter()
+        .map(|&workload| RefereeTally { workload: workload.to_owned(), ..RefereeTally::default() })
+        .collect();
     let mut beyond: Vec<Comparison> = Vec::new();
     let mut failures: Vec<(String, String)> = Vec::new();
     for ((w, i), outcome) in items.iter().zip(outcomes) {
@@ -264,7 +248,7 @@ fn referee_case(referee: &PolygonEntry, workload: &'static str, seed: u64, index
 }
 
 /// The summary table, one row per workload.
-fn table(referee: &str, tallies: &[WorkloadTally]) -> String {
+fn table(referee: &str, tallies: &[RefereeTally]) -> String {
     let mut s = format!(
         "{referee} against clip-oracle's region areas\n{:<14} {:>6} {:>8} {:>7} {:>18} {:>16} {:>16}\n",
         "workload", "cases", "compared", "failed", "largest rel. diff", "largest / bound", "beyond rounding"

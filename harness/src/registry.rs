@@ -102,6 +102,9 @@ pub struct PolygonEntry {
     /// For an external clipper, the command-line options that register it again (a replay
     /// command needs them).
     pub external: Option<String>,
+    /// For an external clipper, the `name` its handshake gave: the library and its version, as
+    /// the process found them (result files record it).
+    pub handshake: Option<String>,
 }
 
 /// A registered line clipper.
@@ -145,6 +148,7 @@ impl Registry {
             tolerance,
             own_time: None,
             external: None,
+            handshake: None,
         });
         self
     }

@@ -72,5 +72,30 @@ pub fn line_result(
 
 /// Writes `text` to `path`, or a one-line error naming the file.
 pub fn write_file(path: &Path, text: &str) -> Result<(), CliError> {
+    #[cfg(test)]
+    files_written::count(path);
     std::fs::write(path, text).map_err(|e| CliError::failed(format!("{}: cannot write it: {e}", path.display())))
+}
+
+/// How often this thread wrote each file through [`write_file`], so a test can prove a run writes
+/// each derived file once.
+#[cfg(test)]
+pub mod files_written {
+    use std::cell::RefCell;
+    use std::collections::BTreeMap;
+    use std::path::{Path, PathBuf};
+
+    thread_local! {
+        static WRITES: RefCell<BTreeMap<PathBuf, usize>> = const { RefCell::new(BTreeMap::new()) };
+    }
+
+    /// Counts one write of `path`.
+    pub fn count(path: &Path) {
+        WRITES.with(|w| *w.borrow_mut().entry(path.to_owned()).or_default() += 1);
+    }
+
+    /// The writes of files under `dir` so far, by path.
+    pub fn under(dir: &Path) -> BTreeMap<PathBuf, usize> {
+        WRITES.with(|w| w.borrow().iter().filter(|(p, _)| p.starts_with(dir)).map(|(p, n)| (p.clone(), *n)).collect())
+    }
 }

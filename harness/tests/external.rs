@@ -55,9 +55,11 @@ fn a_broken_clipper_fails_its_broken_cases_and_every_other_case_is_judged() {
     let rows = summary["rows"].as_array().unwrap();
     assert_eq!(rows.len(), 1, "{rows:?}");
     assert_eq!(rows[0]["origin"], "external");
-    // 6 cases x intersection x 4 fill rules, every one judged; only the four broken ones fail.
+    // 6 cases x intersection x 4 fill rules, every one judged; only the four broken ones fail,
+    // the hang counted apart from the oracle failures.
     assert_eq!(rows[0]["runs"], 24);
-    assert_eq!(rows[0]["oracle_failures"], 4, "{}", text(&o.stdout));
+    assert_eq!(rows[0]["oracle_failures"], 3, "{}", text(&o.stdout));
+    assert_eq!(rows[0]["hung"], 1, "{}", text(&o.stdout));
     let found: Vec<String> = summary["cases"]
         .as_array()
         .unwrap()
@@ -155,6 +157,42 @@ fn found(dir: &Path, summary: &serde_json::Value) -> Vec<serde_json::Value> {
         .collect()
 }
 
+/// On a starved machine, adapters that gave no answer within --call-timeout were counted as
+/// oracle failures (issue 31). A hang is counted apart, in `hung`, and still recorded with its
+/// replay, under the check `hung`.
+#[test]
+fn a_hang_is_counted_as_hung_not_as_an_oracle_failure() {
+    let dir = scratch("hung");
+    // Request 3 of 8 never gets an answer.
+    let external = broken_clipper(&dir, [0, 3, 0, 0]);
+    let (o, summary) = verify_broken(&dir, &external, "2", &["--call-timeout", "2"]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let row = &summary["rows"][0];
+    let counts = (row["runs"].as_u64(), row["oracle_failures"].as_u64(), row["hung"].as_u64());
+    assert_eq!(counts, (Some(8), Some(0), Some(1)), "{row}");
+    // The text summary: a `hung` column beside `oracle fail`.
+    let table = text(&o.stdout);
+    let mut lines = table.lines();
+    let head: Vec<&str> = lines.next().unwrap().split("  ").map(str::trim).filter(|c| !c.is_empty()).collect();
+    let broken = lines.find(|l| l.starts_with("broken")).unwrap_or_else(|| panic!("{table}"));
+    let cells: Vec<&str> = broken.split_whitespace().collect();
+    let cell = |name: &str| cells[head.iter().position(|h| *h == name).unwrap_or_else(|| panic!("{name}: {table}"))];
+    assert_eq!((cell("oracle fail"), cell("hung")), ("0", "1"), "{table}");
+    // Recorded under `hung`, with a replay that runs (the hang was on request 3 only: it passes).
+    let cases = found(&dir, &summary);
+    assert_eq!(cases.len(), 1, "{cases:?}");
+    assert_eq!(cases[0]["check"], "hung");
+    let message = cases[0]["found"].as_str().unwrap();
+    assert!(message.contains("no answer within 2.0 s"), "{message}");
+    let folder = summary["cases"][0]["folder"].as_str().unwrap();
+    assert!(folder.ends_with("-broken-hung"), "{folder}");
+    let words = shlex::split(cases[0]["replay"].as_str().unwrap()).unwrap();
+    let args: Vec<&str> = words[1..].iter().map(String::as_str).collect();
+    let again = clipbench(&args);
+    assert_eq!(again.status.code(), Some(0), "{}\n{}", text(&again.stdout), text(&again.stderr));
+    assert!(text(&again.stdout).starts_with("passes now: polygon broken hung"), "{}", text(&again.stdout));
+}
+
 /// A reply's own time of -5 ns was dropped without a word; it is a protocol error now, which
 /// fails that case and names the time (issue 28).
 #[test]
@@ -205,6 +243,63 @@ fn area_identity_failures_are_counted_apart_from_the_runs_oracle_failures() {
     assert!(identities.is_some_and(|i| i > 0 && i <= 3 * 4), "{row}");
     let table = text(&o.stdout);
     assert!(table.lines().next().unwrap().contains("identity fail"), "{table}");
+}
+
+/// An external clipper that answers polygon requests with the subject unclipped (a wrong
+/// region) while the subject has at least `WRONG_FROM` vertices, and declines smaller ones with
+/// an error reply (its process kept, so shrinking stays quick).
+const WRONG_THEN_DECLINING: &str = r#"import json, sys
+WRONG_FROM = int(sys.argv[1])
+print(json.dumps({"protocol": 1, "name": "wrong, then declining", "polygon": {"ops": ["intersection"],
+    "fill_rules": ["even-odd", "non-zero", "positive", "negative"], "window": "rectangle", "output": "bridged"}}), flush=True)
+for line in sys.stdin:
+    request = json.loads(line)
+    if sum(len(ring) for ring in request["subject"]) >= WRONG_FROM:
+        print(json.dumps({"id": request["id"], "rings": request["subject"]}), flush=True)
+    else:
+        print(json.dumps({"id": request["id"], "error": "declined on purpose"}), flush=True)
+"#;
+
+/// A wrong answer found on a large case shrank to whatever smaller case failed at all: here the
+/// clipper's refusal of small inputs (issue 28). The shrunk case fails as the case found does, by
+/// the oracle's verdict on a wrong region, on the smallest subject still answered wrong.
+#[test]
+fn a_wrong_answer_shrinks_to_a_smaller_wrong_answer_not_to_a_refusal() {
+    let dir = scratch("shrink-same-way");
+    let script = dir.join("wrong_then_declining.py");
+    std::fs::write(&script, WRONG_THEN_DECLINING).unwrap();
+    let external = format!("liar=python3 '{}' 8", script.display());
+    let json = dir.join("summary.json");
+    let o = clipbench(&[
+        "verify",
+        "--external",
+        &external,
+        "--clipper",
+        "liar",
+        "--workload",
+        "star",
+        "--cases",
+        "1",
+        "--fill",
+        "even-odd",
+        "--threads",
+        "1",
+        "--out",
+        dir.join("failures").to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}\n{}", text(&o.stdout), text(&o.stderr));
+    let summary: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let cases = found(&dir, &summary);
+    assert_eq!(cases.len(), 1, "{summary}");
+    let case = &cases[0];
+    let (generated, shrunk) =
+        (case["generated_vertices"][0].as_u64().unwrap(), case["shrunk_vertices"][0].as_u64().unwrap());
+    let message = case["shrunk"].as_str().unwrap();
+    assert!(!message.contains("declined on purpose"), "shrunk to the refusal: {message}");
+    assert_eq!(case["check"], "oracle");
+    assert!((8..generated).contains(&shrunk), "{shrunk} of {generated} vertices: {message}");
 }
 
 #[test]
@@ -337,4 +432,27 @@ fn a_lying_clipper_and_an_empty_one_are_timed_marked_wrong_and_not_ranked() {
     }
     let notes = std::fs::read_to_string(out.join("bench.meta.json")).unwrap();
     assert!(notes.contains("square: wrong on") && notes.contains("empty: wrong on"), "{notes}");
+}
+
+/// The atlas names each external clipper's library and version as its handshake gave them:
+/// `hostile --json` and `conformance --json` record it beside the counts, and only for external
+/// clippers.
+#[test]
+fn hostile_and_conformance_files_record_what_the_handshake_named() {
+    let dir = scratch("handshake-recorded");
+    let external = lying_clipper("square", "square");
+    // The command before its clippers, and the list of tallies its file holds.
+    for (command, list) in [(&["hostile"][..], "tallies"), (&["conformance", "geo-booleanop"][..], "clippers")] {
+        let json = dir.join(format!("{}.json", command[0]));
+        let mut args = command.to_vec();
+        args.extend(["--external", &external, "--clipper", "square", "--clipper", "vatti"]);
+        args.extend(["--json", json.to_str().unwrap()]);
+        let o = clipbench(&args);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let file: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+        let tallies = file[list].as_array().unwrap();
+        let of = |name: &str| tallies.iter().find(|t| t["clipper"] == name).unwrap_or_else(|| panic!("{name}: {file}"));
+        assert_eq!(of("square")["handshake"], "lying test clipper (square)", "{file}");
+        assert!(of("vatti").get("handshake").is_none(), "{file}");
+    }
 }

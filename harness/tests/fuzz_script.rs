@@ -19,7 +19,8 @@ fn executable(path: &Path, text: &str) {
 }
 
 /// A `cargo` that logs every call to `$FAKE_LOG`. Its `fuzz build` writes a stand-in fuzzer per
-/// target, which logs that it ran and prints a libFuzzer statistics line; its `fuzz run` stands
+/// target, which logs that it ran and prints a libFuzzer statistics line (line_clippers's counts
+/// a timeout and writes its input, as libFuzzer does); its `fuzz run` stands
 /// for cargo-fuzz's own build step on a fresh clone: it builds (logged) and prints no statistics.
 const CARGO: &str = r##"#!/bin/sh
 echo "cargo $*" >> "$FAKE_LOG"
@@ -28,7 +29,16 @@ case "$*" in
     dir="$CARGO_TARGET_DIR/x86_64-stand-in/release"
     mkdir -p "$dir"
     for t in vatti window_clippers line_clippers readers; do
-      printf '#!/bin/sh\necho "fuzzer %s $*" >> "$FAKE_LOG"\necho "#1234: cov: 56 ft: 78 corp: 9 exec/s: 411 oom/timeout/crash: 0/0/0 time: 3s"\n' "$t" > "$dir/$t"
+      cat > "$dir/$t" <<STANDIN
+#!/bin/sh
+echo "fuzzer $t \$*" >> "\$FAKE_LOG"
+if [ $t = line_clippers ]; then
+  for a in "\$@"; do case "\$a" in -artifact_prefix=*) : > "\${a#-artifact_prefix=}timeout-stand-in" ;; esac; done
+  echo "#1234: cov: 56 ft: 78 corp: 9 exec/s: 411 oom/timeout/crash: 0/1/0 time: 3s"
+else
+  echo "#1234: cov: 56 ft: 78 corp: 9 exec/s: 411 oom/timeout/crash: 0/0/0 time: 3s"
+fi
+STANDIN
       chmod +x "$dir/$t"
     done ;;
   *"fuzz run"*) echo "   Compiling clip-vatti (building inside the fuzzing minutes)" ;;
@@ -62,9 +72,13 @@ fn fuzz_sh_builds_first_and_then_times_only_the_fuzzing() {
         .expect("sh runs");
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success(), "{out}{}", String::from_utf8_lossy(&o.stderr));
-    for t in ["readers", "line_clippers"] {
+    let timeout_input = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz/artifacts/line_clippers/timeout-stand-in");
+    let _ = std::fs::remove_file(&timeout_input);
+    // A timeout's input is counted as a timeout, not as a crash (the report once called the
+    // load-induced timeouts of a 75-minute run "crashes 22").
+    for (t, faults) in [("readers", "oom/timeout 0/0, crashes 0"), ("line_clippers", "oom/timeout 0/1, crashes 0")] {
         let line = out.lines().find(|l| l.starts_with(&format!("{t}: "))).unwrap_or_else(|| panic!("{out}"));
-        assert!(line.starts_with(&format!("{t}: 1234 executions in 3s, coverage 56")), "{line}");
+        assert!(line.starts_with(&format!("{t}: 1234 executions in 3s, coverage 56, {faults}")), "{line}");
     }
     // Every build before the first fuzzer starts, and the fuzzers given the run's settings.
     let calls = std::fs::read_to_string(&log).unwrap();

@@ -115,6 +115,27 @@ pub enum ClipError {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A snap-rounding pixel size that is not a positive, normal power of two.
+    #[error("snap-rounding pixel size {value:e} is not a positive normal power of two")]
+    InvalidPixel {
+        /// The size given.
+        value: f64,
+    },
+    /// A coordinate too far from the origin for the snap-rounding grid: its pixel centre and
+    /// borders must be exact in f64, so it must be within 2^51 pixels of the origin.
+    #[error("{operand} {part}, vertex {vertex}: coordinate {value:e} is beyond 2^51 snap-rounding pixels of {pixel:e}")]
+    BeyondGrid {
+        /// Which input.
+        operand: Operand,
+        /// Ring index.
+        part: usize,
+        /// Vertex index within it.
+        vertex: usize,
+        /// The offending value.
+        value: f64,
+        /// The pixel size.
+        pixel: f64,
+    },
     /// The clipper does not do this operation, fill rule or output form.
     #[error("{clipper} does not support {what}")]
     Unsupported {

@@ -41,8 +41,8 @@ pub struct ReadmeDoctests;
 
 mod area;
 mod batch_filter;
+mod cell_index;
 mod clipper;
-mod cluster_snap;
 mod curve_region;
 mod ellipse;
 mod error;
@@ -59,17 +59,18 @@ pub mod predicates;
 mod rect;
 mod ring;
 mod segment;
+mod snap_rounding;
 mod trapezoid;
 mod winding;
 mod window_rings;
 
 pub use area::{runs_counter_clockwise, signed_area};
 pub use batch_filter::retain_indices;
+pub use cell_index::CellIndex;
 pub use clipper::{
     LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
     WindowKind,
 };
-pub use cluster_snap::{SNAP_ULPS, snap_clusters};
 pub use curve_region::{BoundaryPiece, CurveRegion};
 pub use ellipse::{Ellipse, EllipseArc, MIN_AXIS_RATIO, MIN_RADIUS_TO_CENTRE};
 pub use error::{
@@ -87,6 +88,7 @@ pub use predicates::{LineSide, Orientation, SegmentIntersection, orient, segment
 pub use rect::Rect;
 pub use ring::Ring;
 pub use segment::{FAR_REACH, Segment};
+pub use snap_rounding::snap_round;
 pub use trapezoid::Trapezoid;
 pub use winding::{Location, edge_winding, locate, ring_winding, winding_number};
 pub use window_rings::WindowRings;

@@ -1,6 +1,11 @@
 //! Every crash the fuzzers found, fixed, as a named test: the input file under
 //! `fuzz/regressions/<target>/` must pass its target's check, and its picture (made by
 //! `clip_testkit::case_record`, written beside it when `CLIP_FUZZ_BLESS=1`) must be there.
+//!
+//! Each test's comment says what was found and how it was fixed then. Since issue 29, vatti's
+//! "repair" named in them (sweeps of the output's own union, with points a few ulps apart merged)
+//! is gone: a broken output is replaced by one sweep of both operands snap rounded
+//! (`clip_core::snap_round`), and these inputs hold it to the same checks.
 
 use std::fs;
 
@@ -315,7 +320,8 @@ fn vatti_slide_missing_a_crossing_rounded_past_a_horizontals_end() {
 /// The xor's rings crossed there; the repair's sweep rounded new crossings among edges an ulp apart
 /// and left two rings crossing at (0.865625, 7.340624999999998). The repair now first merges points
 /// within a few ulps of each other and routes edges passing that close through them (as snap
-/// rounding does: `clip_vatti`'s `cluster_snap`), so its sweep has nothing to round there.
+/// rounding does), so its sweep has nothing to round there. (Since issue 29 the broken output is
+/// replaced by one sweep of the snap-rounded operands, `clip_core::snap_round`, instead.)
 #[test]
 fn vatti_spike_nearly_through_a_vertex_visited_twice() {
     regression("vatti", "spike-nearly-through-a-vertex-visited-twice");
@@ -436,4 +442,12 @@ fn vatti_ulp_long_self_overlap() {
 #[test]
 fn vatti_sliver_of_nearly_collinear_input_vertices_counter_clockwise() {
     regression("vatti", "sliver-of-nearly-collinear-input-vertices-counter-clockwise");
+}
+
+/// A geo boolean-op fixture whose ring holds a position of one number: the conformance reader
+/// handed it to the geojson crate's conversion, which indexes x and y unchecked and panicked.
+/// The fixture reader now checks positions and rings first, as `clip`'s GeoJSON reader does.
+#[test]
+fn readers_geo_fixture_with_a_position_of_one_number() {
+    regression("readers", "geo-fixture-with-a-position-of-one-number");
 }

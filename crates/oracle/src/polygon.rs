@@ -108,11 +108,25 @@ impl OutputRules {
         input_fill: FillRule,
         relative_tolerance: f64,
     ) -> OutputRules {
+        OutputRules::for_form_given(form, || check_form(subject).is_ok(), input_fill, relative_tolerance)
+    }
+
+    /// [`OutputRules::for_form`] with the subject's form check answered by `subject_conventional`,
+    /// asked only for [`OutputForm::ConventionalForConventionalSubject`]: a caller with a time
+    /// budget, or many results on one subject, answers it once (or "no" where the check is too
+    /// dear: the output is then read by region under the input's rule, which a conventional
+    /// result also passes).
+    pub fn for_form_given(
+        form: OutputForm,
+        subject_conventional: impl FnOnce() -> bool,
+        input_fill: FillRule,
+        relative_tolerance: f64,
+    ) -> OutputRules {
         let conventional = match form {
             OutputForm::Conventional => true,
             OutputForm::InputRule => false,
             OutputForm::ConventionalForConventionalSubject => {
-                input_fill != FillRule::Negative && check_form(subject).is_ok()
+                input_fill != FillRule::Negative && subject_conventional()
             }
         };
         if conventional {

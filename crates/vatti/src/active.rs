@@ -1,7 +1,9 @@
 //! The active edge table (the paper's AET): the edges crossing the current scanline, ordered by x.
 
-use clip_core::Point;
-use clip_core::predicates::{Orientation, orient};
+use std::cmp::Ordering;
+
+use clip_core::predicates::{Orientation, on_line, orient, x_at_height_cmp};
+use clip_core::{Point, Segment};
 
 use crate::bounds::NONE;
 use crate::order_index::OrderIndex;
@@ -14,6 +16,12 @@ const LINEAR_SEARCH_UP_TO: usize = 16;
 /// Relative distance within which a computed crossing point counts as on an edge: a few dozen
 /// ulps, the rounding of one crossing computation.
 pub(crate) const ROUNDING: f64 = 4.0 * f64::EPSILON;
+
+/// The largest error of [`Edge::x_at`] relative to the larger magnitude of the edge's ends' x:
+/// the quotient errs by at most five roundings of `|top.x - bot.x| <= 2·x_max`, the sum by one of
+/// `x_max`, 5.5 ε in all. Two computed x farther apart than twice this (times the larger
+/// magnitude) are in their exact order.
+pub(crate) const X_AT_ERROR: f64 = 6.0 * f64::EPSILON;
 
 /// An edge of a bound while it is active (the paper's edge record, Table 1). Never horizontal.
 #[derive(Clone, Debug)]
@@ -184,6 +192,57 @@ impl Edge {
         } else {
             orient(self.bot, self.top, right.top) == Orientation::CounterClockwise
         }
+    }
+
+    /// True when this edge passes strictly left of `other` at height `y` (within both spans),
+    /// given their x there as [`Edge::x_at`] computes them: by those where they are farther
+    /// apart than both can err, else exactly.
+    #[inline(always)]
+    pub(crate) fn left_of_at(&self, x: f64, other: &Edge, x_other: f64, y: f64) -> bool {
+        if (x - x_other).abs() > 2.0 * X_AT_ERROR * self.magnitude.x_max.max(other.magnitude.x_max) {
+            return x < x_other;
+        }
+        self.left_of_at_exactly(other, y)
+    }
+
+    /// [`Edge::left_of_at`] decided exactly: rare (x within rounding of each other), so out of
+    /// line. Rounded x there would order two edges a pixel apart far from the origin by their
+    /// rounding, and invent a crossing of snap-rounded edges, which meet only at vertices.
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn left_of_at_exactly(&self, other: &Edge, y: f64) -> bool {
+        // Both ending at `y` (the case a sweep meets most): their tops are exact.
+        if self.top.y == y && other.top.y == y {
+            return self.top.x < other.top.x;
+        }
+        x_at_height_cmp(self.segment(), other.segment(), y) == Ordering::Less
+    }
+
+    /// Where this edge, at computed x `x` on scanline `y`, is passed by an edge moving along a
+    /// horizontal from x `ends[0]` to `ends[1]` (the part still to pass: `lo` to `hi`), and
+    /// whether that point is rounded. The point is `x` clamped to the part, exact where this edge
+    /// is sliding (its x is an input vertex's), where it was clamped, or where it is an end of
+    /// this edge or on its line; else the end of the horizontal this edge passes exactly through
+    /// (snap-rounded operands meet only at vertices, and `x` can be ulps off the vertex), else
+    /// `x`, rounded. Only a rounded point may join the chains of edges merely near it.
+    pub(crate) fn passed_at(&self, x: f64, y: f64, lo: f64, hi: f64, ends: [f64; 2]) -> (Point, bool) {
+        let p = Point::new(x.clamp(lo, hi), y);
+        if self.moving || p.x != x || p == self.bot || p == self.top || on_line(self.segment(), p) {
+            return (p, false);
+        }
+        for end in ends {
+            let q = Point::new(end, y);
+            if (lo..=hi).contains(&end) && !self.clearly_off(x, q) && on_line(self.segment(), q) {
+                return (q, false);
+            }
+        }
+        (p, true)
+    }
+
+    /// The edge as a segment, bottom to top.
+    #[inline]
+    pub(crate) fn segment(&self) -> Segment {
+        Segment::new(self.bot, self.top)
     }
 
     /// True when the edge ends at or below `y`.

@@ -5,7 +5,7 @@
 //! share no point overlapping along an edge, crossing, or one inside another running the same
 //! way (found by the `vatti` fuzz target at 1e15 and with edges running to 5e25 and 6e66). For
 //! outputs of at most [`MAX_EDGES`] edges this check looks for exactly those, pair by pair, so
-//! that `repair` can join them; larger outputs are not checked (a known limit).
+//! that `snap_fallback` can replace them; larger outputs are not checked (a known limit).
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection};
 

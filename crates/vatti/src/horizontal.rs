@@ -25,11 +25,11 @@ impl SweepLine<'_> {
                 break;
             }
             let xk = self.ael.x_on(k, y);
-            let ek = self.ael.get(k);
-            let p = Point::new(xk.clamp(lo, hi), y);
-            // k's x on the scanline is computed unless p is one of its ends: other edges through
-            // the exact crossing lie within rounding of it, and take it too.
-            self.rounded_crossing = p.x == xk && p != ek.bot && p != ek.top;
+            // k's x on the scanline is computed unless the crossing is exact (see `passed_at`):
+            // other edges through the exact crossing lie within rounding of a rounded one, and
+            // take it too.
+            let (p, rounded) = self.ael.get(k).passed_at(xk, y, lo, hi, [s.from_x, s.to_x]);
+            self.rounded_crossing = rounded;
             let left = if rightwards { s.edge } else { k };
             self.cross(left, p);
             self.ael.recheck(self.ael.prev(left));

@@ -5,9 +5,8 @@
 //! does without).
 
 use clip_core::Point;
-use clip_core::predicates::{Orientation, orient};
 
-use crate::active::{ActiveEdges, ROUNDING};
+use crate::active::{ActiveEdges, X_AT_ERROR};
 use crate::bounds::NONE;
 use crate::scanbeam::height_key;
 use crate::small_sort::insertion_sorted_by;
@@ -123,13 +122,13 @@ impl IntersectionTable {
 }
 
 /// True when the edge at active position `i` lies strictly left of the one at `k` at the
-/// beam's top `yt`, given their rounded x there (`xi`, `xk`). Where those are within rounding
-/// of each other, decided exactly in the cases where rounding would invent a crossing that
-/// cannot exist: edges from one bottom vertex, and an edge ending at `yt` (its top is an
-/// exact input vertex) beside one passing it. (Found by the `vatti` fuzz target: a sliver
-/// triangle whose two bounds leave its lowest vertex 1e-16 apart in slope was swapped by a
-/// rounded x and came out clockwise.) Two edges passing `yt` keep the rounded order: a crossing
-/// within rounding of `yt` is then taken in this beam or the next, at most ulps away.
+/// beam's top `yt`, given their rounded x there (`xi`, `xk`): by those where they are farther
+/// apart than both can err, else exactly ([`crate::active::Edge::left_of_at`], with the
+/// magnitudes kept beside the x so the loops stay in `xtop`). Rounded x within rounding of each
+/// other would invent
+/// crossings that cannot exist: a sliver triangle whose two bounds leave its lowest vertex 1e-16
+/// apart in slope (the `vatti` fuzz target) was swapped and came out clockwise, and far from the
+/// origin snap-rounded edges a pixel apart (which never cross) were swapped by their rounding.
 #[inline(always)]
 fn left_at_top(ael: &ActiveEdges, order: &[u32], i: usize, ti: TopX, k: usize, tk: TopX, yt: f64) -> bool {
     left_at_top_of(ael, order[i], ti, order[k], tk, yt)
@@ -139,28 +138,10 @@ fn left_at_top(ael: &ActiveEdges, order: &[u32], i: usize, ti: TopX, k: usize, t
 #[inline(always)]
 fn left_at_top_of(ael: &ActiveEdges, i: u32, ti: TopX, k: u32, tk: TopX, yt: f64) -> bool {
     let (xi, xk) = (ti.x, tk.x);
-    if (xi - xk).abs() > ROUNDING * ti.magnitude.max(tk.magnitude) {
+    if (xi - xk).abs() > 2.0 * X_AT_ERROR * ti.magnitude.max(tk.magnitude) {
         return xi < xk;
     }
-    left_at_top_near(ael, i, xi, k, xk, yt)
-}
-
-/// [`left_at_top`] for x values within rounding of each other: rare, so kept out of line to
-/// leave the comparison loops tight.
-#[cold]
-#[inline(never)]
-fn left_at_top_near(ael: &ActiveEdges, i: u32, xi: f64, k: u32, xk: f64, yt: f64) -> bool {
-    let (a, b) = (ael.get(i), ael.get(k));
-    let left = Orientation::CounterClockwise;
-    if a.bot == b.bot {
-        orient(a.bot, b.top, a.top) == left
-    } else if a.top.y == yt && b.top.y != yt {
-        orient(b.bot, b.top, a.top) == left
-    } else if b.top.y == yt && a.top.y != yt {
-        orient(a.bot, a.top, b.top) == Orientation::Clockwise
-    } else {
-        xi < xk
-    }
+    ael.get(i).left_of_at_exactly(ael.get(k), yt)
 }
 
 /// Where edges `a` and `b` cross, kept inside the scanbeam `[yb, yt]`, from their x at both

@@ -86,7 +86,9 @@
 //!
 //! - Every in/out and ordering decision at a vertex (where a new edge enters the table, which
 //!   way edges leave a shared point, where a horizontal stops) uses `clip_core::predicates`, and
-//!   so does the event sweep's test of whether two adjacent edges cross. Crossing points are
+//!   so does the event sweep's test of whether two adjacent edges cross, and the order of two
+//!   edges whose computed x at a beam's top are within their rounding of each other
+//!   (`predicates::x_at_height_cmp`: rounded x there would invent crossings). Crossing points are
 //!   computed once, kept inside the scanbeam, and processed so only adjacent edges swap. They
 //!   are rounded to f64: the output is exact for inputs whose crossings are representable
 //!   (integer grids) and within a few ulps of the true region otherwise.
@@ -96,7 +98,9 @@
 //!   also goes into every contributing edge passing through it (exactly, or lying on the same
 //!   line, or within 64 ulps when the point is a rounded crossing of several edges through one
 //!   point). That tolerance (`active::ROUNDING`) decides only where output rings get vertices,
-//!   never what is inside.
+//!   never what is inside, and only for points that are rounded: an edge passed on a scanline
+//!   at its own vertex, at a sliding edge's x or exactly on its line (`predicates::on_line`)
+//!   is passed at an exact point.
 //! - Clean-up (`cleanup`) rebuilds only rings that touch: opposite coincident edges cancel,
 //!   vertices inside horizontal output edges split them, and rings are re-walked corner by
 //!   corner, then split where they still visit a vertex twice. Where nothing cancels or splits
@@ -110,26 +114,26 @@
 //!   rounding to its integer grid, drops them: ring counts differ from Clipper2's on many of its
 //!   `Polygons.txt` cases (the cross-library test in `clip-peers` runs Clipper2 on each,
 //!   normalises its output to these conventions and checks the counts agree).
-//! - Repair (`repair`, `form_check`): with features a few ulps wide far from the origin, or
-//!   nearly parallel edges running to points 1e50 and more times farther away, rounded crossings
-//!   can leave two rings running the same way along an edge (their insides overlapping), a
-//!   clockwise ring that no ring holds, or rings crossing or nested against their orientation.
-//!   The clean-up reports the first two among the rings it rebuilds (for the first, two edges
-//!   leaving or arriving at one point in the same direction once opposite edges cancelled; two
-//!   one way and one back, as grid unions' holes retrace their outers, only in the sweep's own
-//!   output near rounding); outputs of at most
-//!   `form_check::MAX_EDGES` edges with an edge within 4096 ulps of the inputs' largest
-//!   coordinate also get a full exact check of their form. A broken output is swept once more,
-//!   alone, as its union under non-zero (the region the oracle reads from it), at most
-//!   `repair::MAX_PASSES` times. Where the sweep left a point near an edge but off it (a near
-//!   miss), the clean-up also splits slanted edges at the vertices on them, so rounded edges
-//!   through exact vertices cancel or are reported like horizontal ones. Output coordinates
-//!   below `clip_core::MIN_COORDINATE` become 0 before a repair sweep, and points within
-//!   `clip_core::SNAP_ULPS` ulps of each other are merged, with edges passing that close routed
-//!   through them (as snap rounding does), so that crossings rounded an ulp or two apart (edges
-//!   nearly through a vertex and nearly parallel to its edges) do not leave rings crossing there.
-//!   Known limit: a larger output broken between rings that share no point and with no near miss
-//!   is not found.
+//! - Snap-rounded fallback (`snap_fallback`, `form_check`): with features a few ulps wide far
+//!   from the origin, or nearly coincident edges (angles of 1e-16, offsets of a few ulps), rounded
+//!   crossings can leave two rings running the same way along an edge (their insides
+//!   overlapping), a clockwise ring that no ring holds, or rings crossing or nested against their
+//!   orientation. The clean-up reports the first two among the rings it rebuilds (for the first,
+//!   two edges leaving or arriving at one point in the same direction once opposite edges
+//!   cancelled; two one way and one back, as grid unions' holes retrace their outers, only near
+//!   rounding and when the rebuilt rings then cross or overlap at a point they share, checked
+//!   exactly); outputs of at most `form_check::MAX_EDGES` edges with an edge within 4096 ulps of
+//!   the inputs' largest coordinate also get a full exact check of their form. Where the sweep
+//!   left a point near an edge but off it (a near miss), the clean-up also splits slanted edges
+//!   at the vertices on them, so rounded edges through exact vertices cancel or are reported like
+//!   horizontal ones. A broken output is replaced once, by the sweep of both operands snap
+//!   rounded (`clip_core::snap_round`, Hobby 1999) on a grid of pixels of `s`, the smallest power
+//!   of two at least 4 ulps of the largest input coordinate: the rounded operands' edges meet
+//!   only at vertices, so that sweep (ordering edges exactly where rounding could swap them, and
+//!   taking no exact point for a rounded one) rounds nothing, and its output is valid by
+//!   construction; each of its vertices is within `s·√2/2` of the exact vertex or crossing.
+//!   Outputs not reported broken are returned as the first sweep made them. Known limit: a
+//!   larger output broken between rings that share no point and with no near miss is not found.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
@@ -175,12 +179,12 @@ mod output;
 mod prepared;
 mod prepared_reuse;
 mod raw_rings;
-mod repair;
 mod route;
 mod scanbeam;
 mod scratch;
 mod simplify;
 mod small_sort;
+mod snap_fallback;
 mod sweep;
 mod trapezoids;
 
@@ -232,26 +236,39 @@ impl Vatti {
         Ok(clip_planned(subject, clip, None, op, fill, Plan { route, sweep }))
     }
 
-    /// The sweep's conventional rings of valid operands, repaired where rounding broke their form.
+    /// The sweep's conventional rings of valid operands. Where rounding broke their form (the
+    /// clean-up's report, or `form_check`'s exact check of a small output near rounding), the
+    /// snap-rounded operands are swept once instead (`snap_fallback`): their edges meet only at
+    /// vertices, so that sweep rounds nothing.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        let clean = |a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, strict: bool| {
-            Vatti::sweep(sweep, a, b, op, fill, false, |rings, touches, turns, _| {
-                cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
-                    form_check::raw_near_rounding(a, b, rings)
-                })
+        let rings = Vatti::sweep_clean(subject, clip, op, fill, sweep, true);
+        let broken = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
+        if broken && let Some(snapped) = snap_fallback::SnappedOperands::of(subject, clip) {
+            return snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep));
+        }
+        Polygons::new(rings.rings)
+    }
+
+    /// The sweep's conventional rings of valid operands, whatever the clean-up reports.
+    fn sweep_polygons_once(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
+        Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, false).rings)
+    }
+
+    /// The sweep's clean-up of valid operands, with whether rounding broke its form (`strict`:
+    /// edges retraced near rounding count too).
+    fn sweep_clean(
+        subject: &Polygons,
+        clip: &Polygons,
+        op: BoolOp,
+        fill: FillRule,
+        sweep: Sweep,
+        strict: bool,
+    ) -> cleanup::CleanRings {
+        Vatti::sweep(sweep, subject, clip, op, fill, false, |rings, touches, turns, _| {
+            cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
+                form_check::raw_near_rounding(subject, clip, rings)
             })
-        };
-        let mut rings = clean(subject, clip, op, fill, true);
-        // The full check only judges the sweep's own output: the repair's sweeps are judged by the
-        // clean-up alone, so a check stricter than the conventions cannot make it loop.
-        rings.broken_form = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
-        Polygons::new(repair::join_overlapping(rings, |out| {
-            // Rounded output can fall below the coordinates the sweep takes: such coordinates
-            // become 0 (a move far below any rounding of the other coordinates), then validate.
-            let out = repair::flushed_below_min(out);
-            validate_polygons(&out, Operand::Subject)?;
-            Ok(clean(&out, &Polygons::default(), BoolOp::Union, FillRule::NonZero, false))
-        }))
+        })
     }
 
     /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings
@@ -353,9 +370,8 @@ impl PolygonClipper for Vatti {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        Ok(clip_planned(subject, clip, None, op, fill, Plan::of(subject, clip, op, false)))
+        let plan = validated_plan(subject, clip, op, None)?;
+        Ok(clip_planned(subject, clip, None, op, fill, plan))
     }
 
     fn clip_trapezoids(
@@ -365,10 +381,18 @@ impl PolygonClipper for Vatti {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        Ok(trapezoids_planned(subject, clip, None, op, fill, Plan::of(subject, clip, op, false)))
+        let plan = validated_plan(subject, clip, op, None)?;
+        Ok(trapezoids_planned(subject, clip, None, op, fill, plan))
     }
+}
+
+/// Both operands checked, then the plan for them; `sweep` fixes the sweep instead of the rule's
+/// choice.
+fn validated_plan(subject: &Polygons, clip: &Polygons, op: BoolOp, sweep: Option<Sweep>) -> Result<Plan, ClipError> {
+    validate_polygons(subject, Operand::Subject)?;
+    validate_polygons(clip, Operand::Clip)?;
+    let plan = Plan::of(subject, clip, op, false);
+    Ok(Plan { sweep: sweep.or(plan.sweep), ..plan })
 }
 
 impl PolygonClipper for FixedSweep {
@@ -384,9 +408,7 @@ impl PolygonClipper for FixedSweep {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        let plan = Plan { sweep: Some(self.0), ..Plan::of(subject, clip, op, false) };
+        let plan = validated_plan(subject, clip, op, Some(self.0))?;
         Ok(clip_planned(subject, clip, None, op, fill, plan))
     }
 
@@ -397,9 +419,7 @@ impl PolygonClipper for FixedSweep {
         op: BoolOp,
         fill: FillRule,
     ) -> Result<Vec<Trapezoid>, ClipError> {
-        validate_polygons(subject, Operand::Subject)?;
-        validate_polygons(clip, Operand::Clip)?;
-        let plan = Plan { sweep: Some(self.0), ..Plan::of(subject, clip, op, false) };
+        let plan = validated_plan(subject, clip, op, Some(self.0))?;
         Ok(trapezoids_planned(subject, clip, None, op, fill, plan))
     }
 }

@@ -466,10 +466,11 @@ impl<'a> SweepLine<'a> {
             if k == partner || k == NONE {
                 break;
             }
-            // The crossings are at the other edges' rounded x on this scanline.
-            let x = self.ael.x_on(k, y).clamp(lo, hi);
-            self.rounded_crossing = true;
-            self.cross(if right { id } else { k }, Point::new(x, y));
+            // The crossings are at the other edges' x on this scanline: rounded, unless exact.
+            let x = self.ael.x_on(k, y);
+            let (q, rounded) = self.ael.get(k).passed_at(x, y, lo, hi, [from_x, to_x]);
+            self.rounded_crossing = rounded;
+            self.cross(if right { id } else { k }, q);
             self.rounded_crossing = false;
         }
         if self.ael.next(id) == partner {
@@ -616,12 +617,16 @@ impl<'a> SweepLine<'a> {
     }
 
     /// True when adjacent edges `l` and `r`, crossing on scanline `y`, cross after its vertices
-    /// are taken: both go on above it and their x there, rounded, are still in order. So the
-    /// table's order on a scanline is that of the edges' rounded x where exact crossings and
-    /// rounding disagree (two edges meeting at an x that is not representable), as the scanbeam
-    /// sweep leaves it, and a horizontal passes them in that order.
+    /// are taken: both go on above it and are still in order there (`r` not left of `l`, as the
+    /// scanbeam sweep's table decides it: [`crate::active::Edge::left_of_at`]). So the table's
+    /// order on a scanline is the same in both sweeps where the crossing is rounded onto it, and
+    /// a horizontal passes them in that order.
     fn after_scanline(&mut self, l: u32, r: u32, y: f64) -> bool {
-        self.ael.get(l).top.y != y && self.ael.get(r).top.y != y && self.ael.x_on(l, y) <= self.ael.x_on(r, y)
+        if self.ael.get(l).top.y == y || self.ael.get(r).top.y == y {
+            return false;
+        }
+        let (xl, xr) = (self.ael.x_on(l, y), self.ael.x_on(r, y));
+        !self.ael.get(r).left_of_at(xr, self.ael.get(l), xl, y)
     }
 
     /// The crossing of `left` and its right neighbour at the computed point `p`, after the

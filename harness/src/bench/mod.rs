@@ -4,6 +4,7 @@
 //! The `text` group times clip-text's strategies on a paragraph as the window shrinks.
 //! Writes the raw files only; `report` turns them into tables and plots.
 
+mod checkpoint;
 mod correctness;
 mod memory_probe;
 mod plan;
@@ -18,18 +19,21 @@ use clip_core::BoolOp;
 use serde_json::json;
 
 use crate::cli_error::CliError;
+use crate::measure::git_revision::checkout_revision;
 use crate::measure::out_dir::ready_out_dir;
 use crate::measure::provenance::Provenance;
 use crate::measure::raw::write_csv;
 use crate::registry::Registry;
 use crate::results_files::bench::{BASELINE, CSV, META, TEXT_GROUP, write_memory};
+use checkpoint::Checkpoint;
 
 /// Why `bench` has no `--partition`, for `clipbench bench --help`.
 const NOT_PARTITIONED: &str = "\
 bench has no --partition (verify and conformance have one): its results are ratios of times measured in \
 one run on one machine, interleaved round by round, and times taken on different machines, or at different \
 moments of a shared one, cannot be compared. Split a bench by --workload and --clipper on one machine \
-instead; Clipper2, the baseline, is timed in every part.";
+instead; Clipper2, the baseline, is timed in every part. A run stopped part way is taken up by the same \
+command with --resume: each group is measured in one stretch and kept as it finishes.";
 
 /// Arguments of `clipbench bench`.
 #[derive(Debug, clap::Args)]
@@ -51,6 +55,11 @@ pub struct BenchArgs {
     /// Timed rounds per point (default 7, quick 3).
     #[arg(long, value_name = "N")]
     pub rounds: Option<usize>,
+    /// Take up a run that stopped part way: the groups it finished (kept in OUT/bench-groups-done/
+    /// as each finishes) are not measured again if this run has the same revision and options;
+    /// the rest are. Without it, a run starts afresh.
+    #[arg(long)]
+    pub resume: bool,
     /// Clipper to time (repeat for several; default: every registered polygon clipper). The
     /// baseline (Clipper2) is always timed too, so every point keeps its ratio. The text group's
     /// rows are `text-string`, `text-char`, `text-outline` (Vatti), `text-outline-sh-split` and
@@ -112,10 +121,20 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
         (registry, Vec::new())
     };
     let out = ready_out_dir(&args.out)?;
+    let run_key = format!(
+        "revision {}, seed {}, rounds {rounds}, cap {cap} s, quick {}, clippers {}",
+        checkout_revision().unwrap_or_else(|| "unknown".to_owned()),
+        args.seed,
+        args.quick,
+        registry.polygon.iter().map(|e| e.clipper.name()).collect::<Vec<_>>().join(" ")
+    );
+    // Code that differs from its commit is not named by its revision: its groups are not taken up.
+    let resume = args.resume && !run_key.contains("+dirty");
+    let checkpoint = Checkpoint::new(&out, run_key, resume)?;
     let mut measured = if groups.is_empty() {
         rounds::Measured { rows: Vec::new(), memory: Vec::new(), notes: Vec::new() }
     } else {
-        rounds::run(&groups, &registry, &settings)?
+        rounds::run(&groups, &registry, &settings, &checkpoint)?
     };
     let text = if plan.text_rows.is_empty() { None } else { Some(text_rounds::run(&plan.text_rows, &settings)?) };
     if let Some(t) = &text {
@@ -163,6 +182,7 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
     provenance.notes.extend(slowed_note);
     provenance.notes.extend(measured.notes);
     provenance.write(&out.join(META))?;
+    checkpoint.remove()?;
     Ok(out)
 }
 

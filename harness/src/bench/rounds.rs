@@ -10,6 +10,7 @@ use clip_core::{BoolOp, FillRule, PolygonClipper, Polygons};
 use clip_oracle::polygon::{region_area_work, same_region};
 use clip_testkit::workload::{PolygonCase, polygon_case_sized};
 
+use super::checkpoint::{Checkpoint, FinishedGroup};
 use super::correctness::{CHECK_WORK, Judge, Verdict};
 use super::memory_probe::Probe;
 use super::plan::Group;
@@ -18,16 +19,18 @@ use crate::measure::progress::bar;
 use crate::measure::raw::Measurement;
 use crate::measure::timing::{iterations_for, per_call_ns, timed};
 use crate::registry::{PolygonEntry, Registry};
-use crate::results_files::bench::MemoryRecord;
+use crate::results_files::bench::{MemoryRecord, own_time_name};
 
 /// Every case is read under this rule (the papers' parity rule). A clipper that reads only
 /// non-zero (Clipper 1) is timed under non-zero where every operand covers the same region under
 /// both rules, so it does the same operation as the others.
 const FILL: FillRule = FillRule::EvenOdd;
 
-/// A clipper whose time, extrapolated from its last sizes ([`predicted_seconds`]), exceeds this
-/// many caps is not started at the next size: one such call could take minutes. Below that it
-/// runs, once if over the cap.
+/// A call longer than this many caps is a long one. A clipper whose time, extrapolated from its
+/// last sizes ([`predicted_seconds`]), is long is not started at the next size. One found long
+/// when it runs (a peer's cost can grow faster than its smaller sizes showed: Clipper 1's joins
+/// on a map's shared borders) is not called again at that point: its warm-up call is its one
+/// timing, and no child process repeats it for peak memory.
 const PREDICTED_CAP_FACTOR: f64 = 15.0;
 
 /// One call's time at `size` extrapolated from the last two sizes timed (`earlier`, `last`): with
@@ -128,13 +131,30 @@ impl Tally {
     }
 }
 
-/// Runs every group.
-pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result<Measured, CliError> {
+/// Runs every group, keeping each in `checkpoint` as it finishes and taking up those an
+/// earlier run finished there.
+pub fn run(
+    groups: &[Group],
+    registry: &Registry,
+    settings: &Settings,
+    checkpoint: &Checkpoint,
+) -> Result<Measured, CliError> {
     let points: usize = groups.iter().map(|g| g.sizes.len() * g.ops.len()).sum();
     let mut progress = bar(points, "bench");
     let mut measured = Measured { rows: Vec::new(), memory: Vec::new(), notes: Vec::new() };
     let mut memory_available = true;
     for group in groups {
+        if let Some(done) = checkpoint.finished(group)? {
+            measured.rows.extend(done.rows);
+            measured.memory.extend(done.memory);
+            measured.notes.extend(done.notes);
+            memory_available &= !done.memory_unavailable;
+            (0..group.sizes.len() * group.ops.len()).for_each(|_| progress.inc());
+            continue;
+        }
+        let (rows_before, memory_before, notes_before) =
+            (measured.rows.len(), measured.memory.len(), measured.notes.len());
+        let mut group_memory_available = true;
         let mut stopped: BTreeMap<&'static str, Stopped> = BTreeMap::new();
         // Last measured single-call time and size per clipper, to predict the next size.
         let mut last: BTreeMap<&'static str, (usize, Duration)> = BTreeMap::new();
@@ -204,7 +224,8 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                         verdicts.push(verdict.column());
                     });
                     match judged {
-                        Ok(single) => {
+                        Ok(warm_up) => {
+                            let single = warm_up.iter().copied().max().unwrap_or_default();
                             // Ops of one size share a size: only a smaller one shows growth.
                             if let Some(previous) = last.insert(c.name(), (size, single))
                                 && previous.0 < size
@@ -212,7 +233,11 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                                 earlier.insert(c.name(), previous);
                             }
                             let over = single.as_secs_f64() > settings.cap_seconds;
-                            timed_here.push(Timed { entry, fill, single, over, correct: verdicts });
+                            // An external clipper's own time is read at the timed call only.
+                            let long = single.as_secs_f64() > PREDICTED_CAP_FACTOR * settings.cap_seconds
+                                && entry.own_time.is_none();
+                            let warm_up = long.then_some(warm_up);
+                            timed_here.push(Timed { entry, fill, single, over, warm_up, correct: verdicts });
                             if over {
                                 let reason = format!(
                                     "one call took {single:.2?} at {size} edges, over the {} s cap",
@@ -229,7 +254,20 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
                 if group.measures_memory(size, op) {
                     // An external clipper's memory is its own process's, not this one's.
-                    for Timed { entry: c, fill, .. } in timed_here.iter().filter(|t| t.entry.own_time.is_none()) {
+                    for Timed { entry: c, fill, single, warm_up, .. } in
+                        timed_here.iter().filter(|t| t.entry.own_time.is_none())
+                    {
+                        if warm_up.is_some() {
+                            measured.notes.push(format!(
+                                "{}: {}: peak memory not measured at {size} edges, {}: one call took {single:.2?}, \
+                                 over {PREDICTED_CAP_FACTOR}x the {} s cap, and the probe would repeat it.",
+                                group.label,
+                                c.clipper.name(),
+                                op.name(),
+                                settings.cap_seconds
+                            ));
+                            continue;
+                        }
                         for index in &group.indices {
                             let probe = Probe {
                                 workload: group.workload.to_owned(),
@@ -250,7 +288,7 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
                                     rss_before_kib,
                                     peak_extra_kib,
                                 }),
-                                None => memory_available = false,
+                                None => group_memory_available = false,
                             }
                         }
                     }
@@ -269,6 +307,18 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
         for (name, tally) in tallies {
             measured.notes.extend(tally.notes(group.label, name));
         }
+        memory_available &= group_memory_available;
+        checkpoint.finish(
+            group,
+            FinishedGroup {
+                run: checkpoint.run().to_owned(),
+                group: group.describe(),
+                rows: measured.rows[rows_before..].to_vec(),
+                memory: measured.memory[memory_before..].to_vec(),
+                notes: measured.notes[notes_before..].to_vec(),
+                memory_unavailable: !group_memory_available,
+            },
+        )?;
     }
     progress.finish();
     if !memory_available {
@@ -281,37 +331,40 @@ pub fn run(groups: &[Group], registry: &Registry, settings: &Settings) -> Result
     Ok(measured)
 }
 
-/// One untimed warm-up call per case, whose result goes to `judge` with the case's position, then
-/// the slowest case's time for one call.
+/// One warm-up call per case, whose result goes to `judge` with the case's position: each
+/// case's time for one call.
 fn calibrate(
     c: &dyn PolygonClipper,
     cases: &[PolygonCase],
     op: BoolOp,
     fill: FillRule,
     mut judge: impl FnMut(usize, &Polygons),
-) -> Result<Duration, String> {
-    let mut slowest = Duration::ZERO;
+) -> Result<Vec<Duration>, String> {
+    let mut times = Vec::with_capacity(cases.len());
     for (k, case) in cases.iter().enumerate() {
         let (result, took) = timed(|| c.clip(&case.subject, &case.clip, op, fill));
         let output = result.map_err(|e| format!("{} on {}: {e}", c.name(), case.description))?;
-        slowest = slowest.max(took);
+        times.push(took);
         judge(k, &output);
     }
-    Ok(slowest)
+    Ok(times)
 }
 
 /// A clipper timed at one point: its fill rule, one call's time, whether that is over the cap,
+/// each case's warm-up time where that is its timing (a long call, see [`PREDICTED_CAP_FACTOR`]),
 /// and each case's verdict (the `correct` column).
 struct Timed<'a> {
     entry: &'a PolygonEntry,
     fill: FillRule,
     single: Duration,
     over: bool,
+    warm_up: Option<Vec<Duration>>,
     correct: Vec<Option<bool>>,
 }
 
-/// Interleaved rounds over cases and clippers; a clipper over the cap is timed once. An external
-/// clipper that reports its own time gets a second row, `NAME (own time)`, beside the round trip.
+/// Interleaved rounds over cases and clippers; a clipper over the cap is timed once, a long one by
+/// its warm-up call. An external clipper that reports its own time gets a second row,
+/// `NAME (own time)`, beside the round trip.
 fn measure_point(
     group: &Group,
     size: usize,
@@ -326,16 +379,21 @@ fn measure_point(
         for (k, (index, case)) in group.indices.iter().zip(cases).enumerate() {
             let n = clippers.len();
             for j in 0..n {
-                let Timed { entry, fill, single, over, ref correct } = clippers[(j + round + k) % n.max(1)];
+                let Timed { entry, fill, single, over, ref warm_up, ref correct } =
+                    clippers[(j + round + k) % n.max(1)];
                 if over && round > 0 {
                     continue;
                 }
                 let c = entry.clipper.as_ref();
-                let iterations = iterations_for(single, target);
-                if let Some(own) = &entry.own_time {
-                    own.take();
-                }
-                let time_ns = per_call_ns(iterations, || c.clip(black_box(&case.subject), &case.clip, op, fill));
+                let (iterations, time_ns) = if let Some(warm_up) = warm_up {
+                    (1, warm_up[k].as_secs_f64() * 1e9)
+                } else {
+                    let iterations = iterations_for(single, target);
+                    if let Some(own) = &entry.own_time {
+                        own.take();
+                    }
+                    (iterations, per_call_ns(iterations, || c.clip(black_box(&case.subject), &case.clip, op, fill)))
+                };
                 let row = |clipper: String, time_ns: f64| Measurement {
                     workload: group.label.to_owned(),
                     case: index.to_string(),
@@ -356,11 +414,6 @@ fn measure_point(
             }
         }
     }
-}
-
-/// The raw-file name of an external clipper's own times (the round trip keeps its plain name).
-pub fn own_time_name(clipper: &str) -> String {
-    format!("{clipper} (own time)")
 }
 
 /// The most edge-slab pairs [`read_alike`]'s exact check may visit (a second or two). A spiky
@@ -393,6 +446,55 @@ fn read_alike(cases: &[PolygonCase]) -> ReadAlike {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_group_an_earlier_run_finished_is_taken_up_not_measured_again() {
+        use crate::bench::checkpoint::finished_for_test;
+        let dir = std::env::temp_dir().join(format!("clipbench-resume-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let groups = crate::bench::plan::groups(true);
+        let star = &groups[0];
+        let done = finished_for_test("revision r", star, 4242.0);
+        let first = Checkpoint::new(&dir, "revision r".to_owned(), false).unwrap();
+        first.finish(star, finished_for_test("revision r", star, 4242.0)).unwrap();
+        let resumed = Checkpoint::new(&dir, "revision r".to_owned(), true).unwrap();
+        let settings = Settings { seed: 1, rounds: 1, cap_seconds: 0.5, quick: true };
+        let measured = run(std::slice::from_ref(star), &crate::registry::registry(), &settings, &resumed).unwrap();
+        // Measured again, the group would hold every clipper's rows at every size.
+        assert_eq!((measured.rows, measured.notes), (done.rows, done.notes));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_long_call_is_timed_by_its_warm_up_and_not_repeated_for_peak_memory() {
+        let dir = std::env::temp_dir().join(format!("clipbench-long-call-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let group = Group {
+            label: "star",
+            workload: "star",
+            window: clip_core::WindowKind::Any,
+            indices: vec![0, 1],
+            sizes: vec![100],
+            ops: vec![BoolOp::Intersection],
+            memory_from: Some(100),
+        };
+        // A cap of a nanosecond makes every call a long one.
+        let settings = Settings { seed: 1, rounds: 3, cap_seconds: 1e-9, quick: true };
+        let checkpoint = Checkpoint::new(&dir, "revision r".to_owned(), false).unwrap();
+        let registry = crate::registry::registry();
+        let measured = run(std::slice::from_ref(&group), &registry, &settings, &checkpoint).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let names: std::collections::BTreeSet<&str> = measured.rows.iter().map(|r| r.clipper.as_str()).collect();
+        assert!(names.len() >= 3, "{names:?}");
+        // One row per clipper and case (one round, no repetition), each a single call.
+        assert_eq!(measured.rows.len(), names.len() * group.indices.len(), "{:?}", measured.rows);
+        assert!(measured.rows.iter().all(|r| r.iterations == 1 && r.repetition == 0 && r.time_ns > 0.0));
+        assert!(measured.memory.is_empty(), "{:?}", measured.memory);
+        for name in names {
+            let note = format!("star: {name}: peak memory not measured at 100 edges, intersection: one call took");
+            assert!(measured.notes.iter().any(|n| n.starts_with(&note)), "{name}: {:?}", measured.notes);
+        }
+    }
 
     fn ms(t: u64) -> Duration {
         Duration::from_millis(t)

@@ -21,6 +21,7 @@ use crate::checks::{line_oracle, output_rules, run_line, run_polygon};
 use crate::cli_error::CliError;
 use crate::console;
 use crate::registry::{LineEntry, Origin, PolygonEntry, Registry};
+use crate::results_files::atlas::{ConformanceResults, ConformanceTally};
 use crate::write::write_file;
 
 /// The external suites.
@@ -59,6 +60,10 @@ pub struct ConformanceArgs {
     /// whole suite between them; their per-clipper counts add up to a whole run's.
     #[arg(long, value_name = "K/N")]
     pub partition: Option<crate::partition::Partition>,
+    /// Also write each clipper's passed, failed and skipped counts here as JSON (the report's
+    /// atlas reads it).
+    #[arg(long, value_name = "FILE")]
+    pub json: Option<PathBuf>,
     /// External clippers (docs/PROTOCOL.md).
     #[command(flatten)]
     pub external: crate::external::ExternalArgs,
@@ -136,15 +141,31 @@ pub fn run(args: &ConformanceArgs, registry: Registry) -> Result<ExitCode, CliEr
             }
         }
     }
-    for ((name, _), (passed, failed, skipped)) in clippers.iter().zip(&tally) {
-        let skipped = if *skipped > 0 { format!(", {skipped} skipped") } else { String::new() };
-        console::print_line(format_args!("{name}: {passed} passed, {failed} failed{skipped}"))?;
+    let tallies: Vec<ConformanceTally> = clippers
+        .iter()
+        .zip(&tally)
+        .enumerate()
+        .map(|(k, ((name, _), &(passed, failed, skipped)))| ConformanceTally {
+            clipper: (*name).to_owned(),
+            passed,
+            failed,
+            skipped,
+            handshake: if lines { None } else { registry.polygon[k].handshake.clone() },
+        })
+        .collect();
+    for t in &tallies {
+        console::print_line(format_args!("{}", t.line()))?;
     }
     for ((name, _), (exact, normalised)) in clippers.iter().zip(&readings).filter(|(_, r)| r.0 + r.1 > 0) {
         console::print_line(format_args!(
             "  ({name}: of its passes, {exact} by the exact area where the stored one is off, {normalised} by \
              Clipper2's live ring count in our ring convention)"
         ))?;
+    }
+    if let Some(path) = &args.json {
+        let results = ConformanceResults { suite: suite_name.to_owned(), clippers: tallies };
+        let text = serde_json::to_string_pretty(&results).map_err(|e| CliError::failed(e.to_string()))? + "\n";
+        write_file(path, &text)?;
     }
     if let (Some(path), Some(case)) = (&args.svg, cases.first()) {
         write_file(path, &picture(&registry, case))?;

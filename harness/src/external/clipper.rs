@@ -317,7 +317,7 @@ mod tests {
         let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/broken_clipper.py");
         let mut command = vec!["python3".to_owned(), script.to_owned(), dir.join("requests").display().to_string()];
         command.extend(faults.split(' ').map(str::to_owned));
-        ExternalSpec { name: "broken".into(), command, dir: None, file: None }
+        ExternalSpec { name: "broken".into(), command, dir: None, file: None, library: None, language: None }
     }
 
     fn request(id: u64) -> Result<String, serde_json::Error> {

@@ -5,7 +5,7 @@
 mod clipper;
 mod process;
 pub mod protocol;
-mod spec;
+pub mod spec;
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -74,6 +74,7 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
             option.push_str(&format!(" --call-timeout {}", timeout.as_secs_f64()));
         }
         let (polygon, line) = declared(&handshake).map_err(blame)?;
+        let handshake_name = handshake.name.clone();
         // The registry hands out `&'static str` names and capability slices: leaked once per
         // external clipper, for a registry that lives as long as the run.
         let name: &'static str = spec.name.clone().leak();
@@ -85,6 +86,7 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
                 tolerance: GEO_TOLERANCE,
                 own_time: Some(Arc::clone(&pool.own_time)),
                 external: Some(option.clone()),
+                handshake: Some(handshake_name.clone()),
             });
         }
         if let Some(capabilities) = line {

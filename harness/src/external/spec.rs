@@ -17,6 +17,11 @@ pub struct ExternalSpec {
     pub dir: Option<PathBuf>,
     /// The `--clippers` file it was read from, if any.
     pub file: Option<PathBuf>,
+    /// The library it runs, for people (a `--clippers` file's `library`; the handshake's
+    /// `name` adds the version the process found).
+    pub library: Option<String>,
+    /// The language the library is written in or called from (a `--clippers` file's `language`).
+    pub language: Option<String>,
 }
 
 impl ExternalSpec {
@@ -38,11 +43,12 @@ pub fn parse_flag(text: &str) -> Result<ExternalSpec, CliError> {
     };
     let name = checked_name(name.trim()).map_err(|e| CliError::usage(format!("--external '{text}': {e}")))?;
     let command = split_command(command).map_err(|e| CliError::usage(format!("--external {name}: {e}")))?;
-    Ok(ExternalSpec { name, command, dir: None, file: None })
+    Ok(ExternalSpec { name, command, dir: None, file: None, library: None, language: None })
 }
 
 /// The clippers of a TOML file: `[[clipper]]` tables with `name`, `command` and optionally
-/// `dir` (relative to the file's folder). Unknown keys and missing commands are refused with
+/// `dir` (relative to the file's folder), `library` and `language` (what the report's atlas says
+/// it is). Unknown keys and missing commands are refused with
 /// the line they are on.
 pub fn parse_file(path: &Path) -> Result<Vec<ExternalSpec>, CliError> {
     let text = std::fs::read_to_string(path)
@@ -68,6 +74,10 @@ struct ClipperTable {
     command: toml::Spanned<String>,
     #[serde(default)]
     dir: Option<String>,
+    #[serde(default)]
+    library: Option<String>,
+    #[serde(default)]
+    language: Option<String>,
 }
 
 /// [`parse_file`] on text; `base` is the folder relative `dir`s start from.
@@ -86,7 +96,14 @@ fn parse_toml(text: &str, base: &Path) -> Result<Vec<ExternalSpec>, String> {
         }
         let command =
             split_command(table.command.get_ref()).map_err(|e| format!("{}: {e}", at(table.command.span().start)))?;
-        specs.push(ExternalSpec { name, command, dir: table.dir.map(|d| base.join(d)), file: None });
+        specs.push(ExternalSpec {
+            name,
+            command,
+            dir: table.dir.map(|d| base.join(d)),
+            file: None,
+            library: table.library,
+            language: table.language,
+        });
     }
     Ok(specs)
 }
@@ -155,6 +172,10 @@ mod tests {
         let specs = parse_toml(good, Path::new("/base")).unwrap();
         assert_eq!(specs[0].command, vec!["./mine", "--json"]);
         assert_eq!(specs[0].dir.as_deref(), Some(Path::new("/base/tools")));
+        assert_eq!((specs[0].library.as_deref(), specs[0].language.as_deref()), (None, None));
+        let described = format!("{good}library = \"Boost.Geometry\"\nlanguage = \"C++\"\n");
+        let specs = parse_toml(&described, Path::new("/base")).unwrap();
+        assert_eq!((specs[0].library.as_deref(), specs[0].language.as_deref()), (Some("Boost.Geometry"), Some("C++")));
 
         let unknown = "[[clipper]]\nname = \"mine\"\ncommand = \"./mine\"\ntimeout = 3\n";
         let e = parse_toml(unknown, Path::new("")).unwrap_err();

@@ -6,6 +6,7 @@ use serde::Serialize;
 use serde::de::DeserializeOwned;
 
 use crate::cli_error::CliError;
+use crate::write::write_file;
 
 /// One timed repetition: the row format of every timing CSV (`vatti-table3.csv`,
 /// `wang-table4.csv`, `bench.csv`).
@@ -40,12 +41,18 @@ pub struct Measurement {
 
 /// Writes `rows` as CSV with a header line.
 pub fn write_csv<T: Serialize>(path: &Path, rows: &[T]) -> Result<(), CliError> {
-    let fail = |e: &dyn std::fmt::Display| CliError::failed(format!("{}: cannot write ({e})", path.display()));
-    let mut writer = csv::Writer::from_path(path).map_err(|e| fail(&e))?;
+    let text = csv_text(rows).map_err(|e| CliError::failed(format!("{}: cannot write ({e})", path.display())))?;
+    write_file(path, &text)
+}
+
+/// `rows` as CSV text with a header line, as [`write_csv`] writes them.
+pub fn csv_text<T: Serialize>(rows: &[T]) -> Result<String, String> {
+    let mut writer = csv::Writer::from_writer(Vec::new());
     for row in rows {
-        writer.serialize(row).map_err(|e| fail(&e))?;
+        writer.serialize(row).map_err(|e| e.to_string())?;
     }
-    writer.flush().map_err(|e| fail(&e))
+    let bytes = writer.into_inner().map_err(|e| e.to_string())?;
+    String::from_utf8(bytes).map_err(|e| e.to_string())
 }
 
 /// Reads every row of a CSV written by [`write_csv`].

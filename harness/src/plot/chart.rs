@@ -10,6 +10,7 @@ use plotters::prelude::*;
 
 use super::palette::{distinct, paper_tint};
 use crate::cli_error::CliError;
+use crate::write::write_file;
 
 /// One series of points.
 #[derive(Clone, Debug)]
@@ -52,30 +53,37 @@ const PLOT_SIZE: (u32, u32) = (900, 620);
 impl Chart {
     /// Draws the chart into an SVG file at `path`.
     pub fn write_svg(&self, path: &Path) -> Result<(), CliError> {
+        let mut svg = String::new();
+        self.draw_into(&mut svg)
+            .map_err(|e| CliError::failed(format!("{}: cannot draw the plot ({e})", path.display())))?;
+        write_file(path, &svg)
+    }
+
+    /// Draws the chart as SVG text into `svg`.
+    fn draw_into(&self, svg: &mut String) -> Result<(), Box<dyn Error>> {
         let spread = self.series.iter().flat_map(|s| s.spread.iter().flat_map(|&(x, low, high)| [(x, low), (x, high)]));
         let points: Vec<(f64, f64)> = self.series.iter().flat_map(|s| s.points.iter().copied()).chain(spread).collect();
         let points: Vec<(f64, f64)> = points.into_iter().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
         let xr = axis_range(points.iter().map(|p| p.0), self.log_x, false);
         let yr = axis_range(points.iter().map(|p| p.1), self.log_y, true);
         let x_ticks = if self.x_ticks.is_empty() { log_ticks(&xr) } else { self.x_ticks.clone() };
-        let drawn = if self.log_x {
-            self.draw_with_y(path, xr.log_scale().with_key_points(x_ticks), yr)
+        if self.log_x {
+            self.draw_with_y(svg, xr.log_scale().with_key_points(x_ticks), yr)
         } else {
-            self.draw_with_y(path, xr, yr)
-        };
-        drawn.map_err(|e| CliError::failed(format!("{}: cannot draw the plot ({e})", path.display())))
+            self.draw_with_y(svg, xr, yr)
+        }
     }
 
-    fn draw_with_y<X>(&self, path: &Path, x: X, y: Range<f64>) -> Result<(), Box<dyn Error>>
+    fn draw_with_y<X>(&self, svg: &mut String, x: X, y: Range<f64>) -> Result<(), Box<dyn Error>>
     where
         X: AsRangedCoord<Value = f64>,
         X::CoordDescType: ValueFormatter<f64>,
     {
         if self.log_y {
             let ticks = log_ticks(&y);
-            self.draw(path, x, y.log_scale().with_key_points(ticks))
+            self.draw(svg, x, y.log_scale().with_key_points(ticks))
         } else {
-            self.draw(path, x, y)
+            self.draw(svg, x, y)
         }
     }
 
@@ -85,7 +93,7 @@ impl Chart {
         (56 + 8 * longest as u32).clamp(140, 420)
     }
 
-    fn draw<X, Y>(&self, path: &Path, x: X, y: Y) -> Result<(), Box<dyn Error>>
+    fn draw<X, Y>(&self, svg: &mut String, x: X, y: Y) -> Result<(), Box<dyn Error>>
     where
         X: AsRangedCoord<Value = f64>,
         Y: AsRangedCoord<Value = f64>,
@@ -93,7 +101,7 @@ impl Chart {
         Y::CoordDescType: ValueFormatter<f64>,
     {
         let legend_width = self.legend_width();
-        let root = SVGBackend::new(path, (PLOT_SIZE.0 + legend_width, PLOT_SIZE.1)).into_drawing_area();
+        let root = SVGBackend::with_string(svg, (PLOT_SIZE.0 + legend_width, PLOT_SIZE.1)).into_drawing_area();
         root.fill(&WHITE)?;
         let root = root.titled(&self.title, ("sans-serif", 22))?;
         let (plot, legend) = root.split_horizontally(PLOT_SIZE.0);

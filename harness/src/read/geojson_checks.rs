@@ -6,9 +6,24 @@ use geojson::{GeometryValue, Position};
 
 use super::Place;
 
-/// Checks every position of a geometry at `place` (two numbers or more, all finite) and that
-/// every ring is closed; sets `beyond_xy` when a position has more than x and y (a z).
-pub fn check_geometry(value: &GeometryValue, place: &Place, beyond_xy: &mut bool) -> Result<(), String> {
+/// Whether a ring must end where it starts, as GeoJSON requires.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RingEnds {
+    /// An open ring is an error naming it (files a user hands to `clip`).
+    MustClose,
+    /// An open ring is closed as geo's reader closes it (geo's own test fixtures hold one).
+    MayBeOpen,
+}
+
+/// Checks every position of a geometry at `place` (two numbers or more, all finite) and, with
+/// [`RingEnds::MustClose`], that every ring is closed; sets `beyond_xy` when a position has more
+/// than x and y (a z).
+pub fn check_geometry(
+    value: &GeometryValue,
+    place: &Place,
+    ends: RingEnds,
+    beyond_xy: &mut bool,
+) -> Result<(), String> {
     let numbered = |part: &str, i: usize| place.then(format_args!("{part} {i}"));
     match value {
         GeometryValue::Point { coordinates } => check_position(coordinates, place, beyond_xy),
@@ -19,26 +34,26 @@ pub fn check_geometry(value: &GeometryValue, place: &Place, beyond_xy: &mut bool
             .iter()
             .enumerate()
             .try_for_each(|(i, line)| check_positions(line, &numbered("line string", i), beyond_xy)),
-        GeometryValue::Polygon { coordinates } => check_rings(coordinates, place, beyond_xy),
+        GeometryValue::Polygon { coordinates } => check_rings(coordinates, place, ends, beyond_xy),
         GeometryValue::MultiPolygon { coordinates } => coordinates
             .iter()
             .enumerate()
-            .try_for_each(|(i, rings)| check_rings(rings, &numbered("polygon", i), beyond_xy)),
+            .try_for_each(|(i, rings)| check_rings(rings, &numbered("polygon", i), ends, beyond_xy)),
         GeometryValue::GeometryCollection { geometries } => geometries
             .iter()
             .enumerate()
-            .try_for_each(|(i, g)| check_geometry(&g.value, &numbered("member", i), beyond_xy)),
+            .try_for_each(|(i, g)| check_geometry(&g.value, &numbered("member", i), ends, beyond_xy)),
     }
 }
 
-fn check_rings(rings: &[Vec<Position>], place: &Place, beyond_xy: &mut bool) -> Result<(), String> {
+fn check_rings(rings: &[Vec<Position>], place: &Place, ends: RingEnds, beyond_xy: &mut bool) -> Result<(), String> {
     for (i, ring) in rings.iter().enumerate() {
         let place = place.then(format_args!("ring {i}"));
         check_positions(ring, &place, beyond_xy)?;
         // An empty ring encloses nothing: reading drops it with a note, as it does a ring of two
         // distinct points.
         let (Some(first), Some(last)) = (ring.first(), ring.last()) else { continue };
-        if first.as_slice()[..2] != last.as_slice()[..2] {
+        if ends == RingEnds::MustClose && first.as_slice()[..2] != last.as_slice()[..2] {
             return Err(format!(
                 "{place} is not closed: it starts at {} and ends at {} (a GeoJSON ring ends where it starts)",
                 show(first.as_slice()),
@@ -84,7 +99,8 @@ mod tests {
     fn check(json: &str) -> Result<bool, String> {
         let Ok(geojson::GeoJson::Geometry(g)) = json.parse() else { panic!("not a GeoJSON geometry: {json}") };
         let mut beyond_xy = false;
-        check_geometry(&g.value, &Place::default().then("feature 3"), &mut beyond_xy).map(|()| beyond_xy)
+        check_geometry(&g.value, &Place::default().then("feature 3"), RingEnds::MustClose, &mut beyond_xy)
+            .map(|()| beyond_xy)
     }
 
     #[test]
@@ -96,7 +112,7 @@ mod tests {
         // Inside a collection the parser refuses it itself; a value built in code gets here.
         let point = geojson::Geometry::new(GeometryValue::Point { coordinates: vec![7.0].into() });
         let collection = GeometryValue::GeometryCollection { geometries: vec![point] };
-        let problem = check_geometry(&collection, &Place::default(), &mut false).unwrap_err();
+        let problem = check_geometry(&collection, &Place::default(), RingEnds::MustClose, &mut false).unwrap_err();
         assert_eq!(problem, "member 0 is [7]: a position needs two numbers, x and y");
         assert_eq!(check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1],[0,0]]]]}"#), Ok(false));
         assert_eq!(check(r#"{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[1,1,5],[0,0]]]]}"#), Ok(true), "a z");
@@ -125,7 +141,7 @@ mod tests {
     fn geojson_position_that_is_not_finite_is_an_error() {
         // JSON has no NaN or infinity, but a GeoJSON value built in code can hold them.
         let value = GeometryValue::LineString { coordinates: vec![vec![0.0, 0.0].into(), vec![f64::NAN, 1.0].into()] };
-        let problem = check_geometry(&value, &Place::default(), &mut false).unwrap_err();
+        let problem = check_geometry(&value, &Place::default(), RingEnds::MustClose, &mut false).unwrap_err();
         assert_eq!(problem, "position 1 is [NaN, 1]: its numbers must be finite");
     }
 }

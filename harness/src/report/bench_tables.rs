@@ -2,129 +2,27 @@
 //! measured in the same run; peak memory of the large cases; one log-log plot per group.
 
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::Path;
 
+use super::bench_points::{Point, Points, point_records};
+use super::derived::{Derived, DerivedFile};
 use super::markdown::{duration_interval_ns, header, num, num_interval, table};
 use super::provenance_line::provenance_line;
+use super::results_folder::ResultsFolder;
 use super::wording::Sides;
 use crate::cli_error::CliError;
-use crate::measure::interval::{CaseSamples, Interval, bootstrap, geometric_mean_ratio, mean_time, seed_of};
-use crate::measure::raw::{Measurement, read_csv, write_csv};
+use crate::measure::interval::Interval;
+use crate::measure::raw::{Measurement, csv_text};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
-use crate::results_files::bench::{
-    BASELINE, CSV, META, MemoryRecord, POINTS_CSV, PointRecord, TEXT_GROUP, read_memory,
-};
-
-/// The markdown file.
-pub const MD: &str = "bench.md";
-
-/// One point: a clipper on a group's size and operation.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Point {
-    /// Time per call in ns: mean over cases of the median over rounds.
-    pub time_ns: f64,
-    /// Geometric mean over cases of (this clipper's median / Clipper2's median on the same case);
-    /// NaN where Clipper2 has no time.
-    pub ratio: f64,
-    /// [`Point::time_ns`] with its 95% bootstrap interval (over cases and rounds).
-    pub time_interval: Interval,
-    /// [`Point::ratio`] with its 95% bootstrap interval (over cases and both clippers' rounds).
-    pub ratio_interval: Interval,
-    /// Rounds behind the medians (1 for a point over the cap).
-    pub rounds: usize,
-    /// Cases behind the point.
-    pub cases: usize,
-    /// Cases whose result the bench's check found wrong (bench.csv's `correct` column): a point
-    /// with any is shown as "wrong on k of n cases", with no time or ratio.
-    pub wrong_cases: usize,
-}
-
-impl Point {
-    /// Whether its time and ratio count: no case was found wrong.
-    pub fn trusted(&self) -> bool {
-        self.wrong_cases == 0
-    }
-}
-
-/// Points keyed by (group, op, size, clipper).
-pub type Points = BTreeMap<(String, String, usize, String), Point>;
+use crate::results_files::bench::{BASELINE, META, MemoryRecord, POINTS_CSV};
 
 /// The plot file of one group.
 pub fn plot_file(group: &str) -> String {
     format!("bench-{group}.svg")
 }
 
-/// Computes every point from raw rows, with seeded bootstrap intervals over cases and rounds.
-pub fn points(rows: &[Measurement]) -> Points {
-    // Per point, per case: the rounds' times and whether the result was found wrong.
-    type Cases = BTreeMap<String, (Vec<f64>, bool)>;
-    let mut grouped: BTreeMap<(String, String, usize, String), Cases> = BTreeMap::new();
-    for r in rows {
-        let point = grouped.entry((r.workload.clone(), r.op.clone(), r.size, r.clipper.clone())).or_default();
-        let case = point.entry(r.case.clone()).or_default();
-        case.0.push(r.time_ns);
-        case.1 |= r.correct == Some(false);
-    }
-    let none = Cases::new();
-    grouped
-        .iter()
-        .map(|((g, op, size, clipper), cases)| {
-            let baseline = grouped.get(&(g.clone(), op.clone(), *size, BASELINE.to_owned())).unwrap_or(&none);
-            // A ratio needs a right answer on both sides of the case.
-            let samples: Vec<CaseSamples> = cases
-                .iter()
-                .map(|(case, (times, wrong))| CaseSamples {
-                    times,
-                    baseline: baseline
-                        .get(case)
-                        .filter(|(_, base_wrong)| !*wrong && !*base_wrong)
-                        .map(|(b, _)| b.as_slice()),
-                })
-                .collect();
-            let seed = seed_of(&format!("{g}/{op}/{size}/{clipper}"));
-            let nan = Interval::exact(f64::NAN);
-            let time_interval = bootstrap(&samples, seed, mean_time).unwrap_or(nan);
-            let ratio_interval = bootstrap(&samples, seed, geometric_mean_ratio).unwrap_or(nan);
-            let point = Point {
-                time_ns: time_interval.estimate,
-                ratio: ratio_interval.estimate,
-                time_interval,
-                ratio_interval,
-                rounds: cases.values().map(|c| c.0.len()).min().unwrap_or(0),
-                cases: cases.len(),
-                wrong_cases: cases.values().filter(|c| c.1).count(),
-            };
-            ((g.clone(), op.clone(), *size, clipper.clone()), point)
-        })
-        .collect()
-}
-
-/// The rows of [`POINTS_CSV`]: every point with its intervals.
-pub fn point_records(points: &Points) -> Vec<PointRecord> {
-    let finite = |v: f64| v.is_finite().then_some(v);
-    points
-        .iter()
-        .map(|((workload, op, size, clipper), p)| PointRecord {
-            workload: workload.clone(),
-            op: op.clone(),
-            size: *size,
-            clipper: clipper.clone(),
-            cases: p.cases,
-            wrong_cases: p.wrong_cases,
-            rounds: p.rounds,
-            time_ns: p.time_interval.estimate,
-            time_low_ns: p.time_interval.low,
-            time_high_ns: p.time_interval.high,
-            ratio: finite(p.ratio_interval.estimate),
-            ratio_low: finite(p.ratio_interval.low),
-            ratio_high: finite(p.ratio_interval.high),
-        })
-        .collect()
-}
-
 /// Groups in first-seen order of the raw file, clippers likewise.
-fn order(rows: &[Measurement], pick: impl Fn(&Measurement) -> &str) -> Vec<String> {
+fn order(rows: &[&Measurement], pick: impl Fn(&Measurement) -> &str) -> Vec<String> {
     let mut seen = Vec::new();
     for r in rows {
         if !seen.iter().any(|s: &String| s == pick(r)) {
@@ -316,33 +214,24 @@ fn memory_table(records: &[MemoryRecord], group: &str, clippers: &[String]) -> O
     Some(table(&head, &body))
 }
 
-/// Recomputes the bench tables and plots from `out`'s CSVs.
-pub fn write(out: &Path) -> Result<(), CliError> {
-    super::write_markdown(out, MD, section(out)?)
-}
-
-/// The bench's markdown section after writing its plots; `None` when `out` holds no bench results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let csv = out.join(CSV);
-    if !csv.exists() {
-        return Ok(None);
-    }
-    // The text group has its own section (the lecture's text clipping).
-    let rows: Vec<Measurement> =
-        read_csv(&csv)?.into_iter().filter(|r: &Measurement| r.workload != TEXT_GROUP).collect();
+/// The bench's section, its plots and every point with its intervals (`bench-points.csv`);
+/// `None` when the folder holds no polygon bench results (the text group has its own section).
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let rows = folder.polygon_bench_rows()?;
     if rows.is_empty() {
         return Ok(None);
     }
-    let memory = read_memory(out)?;
-    let points = points(&rows);
-    write_csv(&out.join(POINTS_CSV), &point_records(&points))?;
+    let memory = folder.bench_memory()?;
+    let points = folder.bench_points()?;
+    let points_csv = csv_text(&point_records(points))
+        .map_err(|e| CliError::failed(format!("{}: cannot write ({e})", folder.join(POINTS_CSV).display())))?;
+    let mut files = vec![(POINTS_CSV.to_owned(), DerivedFile::Text(points_csv))];
     let groups = order(&rows, |r| r.workload.as_str());
     let clippers = order(&rows, |r| r.clipper.as_str());
     let ops = order(&rows, |r| r.op.as_str());
-    let (_, notes) = provenance_line(&out.join(META))?;
+    let (_, notes) = provenance_line(&folder.join(META))?;
     let mut text = format!(
-        "## Bench: the polygon clippers against geo and Clipper2\n\n\
-         Time per call (mean over the group's cases of the median over interleaved rounds), then `x` the ratio to \
+        "Time per call (mean over the group's cases of the median over interleaved rounds), then `x` the ratio to \
          `{BASELINE}` measured in the same run (geometric mean over cases of the ratio of medians; below 1 is faster \
          than Clipper2). Each figure carries its 95% interval in brackets: a seeded bootstrap over the cases and \
          the rounds, so two figures whose intervals overlap may not differ at all (every point with its \
@@ -354,18 +243,18 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          Ratios of `vatti` at 4, 20, 100, 200 edges and the largest size (intersection):\n\n{}\n\
          Sutherland-Hodgman and four-state on rectangle windows against Clipper2's rectangle clipper \
          (`clipper2-rect`, RectClip64), measured in the same run:\n\n{}\n{notes}\n",
-        vatti_ratios(&points, &groups),
-        rect_clip_ratios(&points, &groups)
+        vatti_ratios(points, &groups),
+        rect_clip_ratios(points, &groups)
     );
     for g in &groups {
-        chart(&points, g, &clippers).write_svg(&out.join(plot_file(g)))?;
+        files.push((plot_file(g), DerivedFile::Plot(chart(points, g, &clippers))));
         text.push_str(&format!("### {g}\n\n![{g}: time against size]({})\n\n", plot_file(g)));
         for op in &ops {
-            if let Some(t) = group_table(&points, g, op, &clippers) {
+            if let Some(t) = group_table(points, g, op, &clippers) {
                 text.push_str(&format!("{op}:\n\n{t}\n"));
             }
         }
-        if let Some(t) = memory_table(&memory, g, &clippers) {
+        if let Some(t) = memory_table(memory, g, &clippers) {
             text.push_str(&format!(
                 "peak memory of one intersection call (MiB above the resident size before it, measured in a fresh \
                  child process so no memory freed by earlier cases hides it; largest over the cases; ratio to \
@@ -373,12 +262,15 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
             ));
         }
     }
-    Ok(Some(text))
+    Ok(Some(Derived { body: text, files }))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::measure::raw::read_csv;
+    use crate::report::bench_points::points;
+    use crate::results_files::bench::CSV;
 
     fn m(clipper: &str, case: &str, rep: usize, ns: f64) -> Measurement {
         Measurement {

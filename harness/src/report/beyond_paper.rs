@@ -2,20 +2,18 @@
 //! line clipper, preparation time and memory, the crossover where indexing pays, a log-log plot,
 //! and the 10^6-segment point.
 
-use std::collections::BTreeMap;
-use std::path::Path;
-
+use super::derived::{Derived, DerivedFile};
 use super::markdown::{duration_ns, header, num, table};
 use super::provenance_line::provenance_line;
+use super::results_folder::ResultsFolder;
 use crate::cli_error::CliError;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::median;
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
 use crate::results_files::beyond_paper::{CSV, LARGE_CSV, LargeRecord, META, PREPARE_CSV, PrepareRecord};
+use std::collections::BTreeMap;
 
-/// The markdown file.
-pub const MD: &str = "beyond-paper.md";
 /// The plots: long segments, then short ones.
 pub const PLOTS: [(&str, &str); 2] = [("long", "beyond-paper-long.svg"), ("short", "beyond-paper-short.svg")];
 
@@ -291,30 +289,21 @@ pub fn reading(rows: &[Row], large: Option<(f64, f64)>) -> String {
     text
 }
 
-/// Recomputes the section from `out`'s CSVs and writes its markdown and plots.
-pub fn write(out: &Path) -> Result<(), CliError> {
-    super::write_markdown(out, MD, section(out)?)
-}
-
-/// The section's markdown after writing its plots; `None` when `out` holds no such results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let csv = out.join(CSV);
+/// The section and its plots; `None` when the folder holds no such results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let csv = folder.join(CSV);
     if !csv.exists() {
         return Ok(None);
     }
     let measurements: Vec<Measurement> = read_csv(&csv)?;
-    let prepare: Vec<PrepareRecord> = read_csv(&out.join(PREPARE_CSV))?;
-    let large: Vec<LargeRecord> = read_csv(&out.join(LARGE_CSV))?;
+    let prepare: Vec<PrepareRecord> = read_csv(&folder.join(PREPARE_CSV))?;
+    let large: Vec<LargeRecord> = read_csv(&folder.join(LARGE_CSV))?;
     let rows = rows(&measurements);
-    for (set, file) in PLOTS {
-        chart(&rows, set).write_svg(&out.join(file))?;
-    }
-    let (provenance, notes) = provenance_line(&out.join(META))?;
+    let (provenance, notes) = provenance_line(&folder.join(META))?;
     let param = |k: &str| provenance.parameters.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0);
     let (large_md, large_times) = large_table(&large);
-    Ok(Some(format!(
-        "## Beyond the paper: line clipping against windows of 6 to 10^4 edges\n\n\
-         Wang et al.'s Table 4 stops at 50 edges, where every clipper above is linear in the window's size. Here the \
+    let body = format!(
+        "Wang et al.'s Table 4 stops at 50 edges, where every clipper above is linear in the window's size. Here the \
          windows grow to 10^4 edges: lobed concave windows (a flower of 7 petals sampled at n vertices, so a line \
          crosses one a bounded number of times whatever n is) and convex ones, their bounding box sized like Table 4's \
          second size row (W1 = 4, W2 = 80) and centred on the 800 x 600 screen. Two batches of {} segments per window: \
@@ -342,7 +331,9 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         prepare_table(&prepare),
         large_md,
         notes
-    )))
+    );
+    let plots = PLOTS.iter().map(|&(set, file)| (file.to_owned(), DerivedFile::Plot(chart(&rows, set))));
+    Ok(Some(Derived { body, files: plots.collect() }))
 }
 
 #[cfg(test)]

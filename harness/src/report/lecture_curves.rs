@@ -2,11 +2,10 @@
 //! settled, ns per object with the tests on and off and by the polygon routes, their ratios, a
 //! plot against radius, and the Fig. 6-27 picture.
 
-use std::collections::BTreeMap;
-use std::path::Path;
-
+use super::derived::Derived;
 use super::markdown::{header, num, table};
 use super::provenance_line::provenance_line;
+use super::results_folder::ResultsFolder;
 use crate::cli_error::CliError;
 use crate::measure::raw::read_csv;
 use crate::measure::timing::median;
@@ -16,9 +15,8 @@ use crate::results_files::lecture_curves::{
     CSV, CurveStageRecord, CurveTiming, FIGURE_6_27, FLATTEN_GEO, FLATTEN_VATTI, META, STAGES_CSV, WITH_TESTS,
     WITHOUT_TESTS,
 };
+use std::collections::BTreeMap;
 
-/// The markdown section file.
-pub const MD: &str = "lecture-curves.md";
 /// The plot of ns per object against radius.
 pub const PLOT: &str = "lecture-curves.svg";
 
@@ -264,24 +262,18 @@ pub fn reading(rows: &[Row]) -> String {
     text
 }
 
-/// Recomputes the section from `out`'s CSVs and writes its markdown and plot.
-pub fn write(out: &Path) -> Result<(), CliError> {
-    super::write_markdown(out, MD, section(out)?)
-}
-
-/// The section's markdown after writing its plot; `None` when `out` holds no curve results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let csv = out.join(CSV);
+/// The section and its plot; `None` when the folder holds no curve results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let csv = folder.join(CSV);
     if !csv.exists() {
         return Ok(None);
     }
     let timings: Vec<CurveTiming> = read_csv(&csv)?;
-    let stages: Vec<CurveStageRecord> = read_csv(&out.join(STAGES_CSV))?;
+    let stages: Vec<CurveStageRecord> = read_csv(&folder.join(STAGES_CSV))?;
     let rows = rows(&timings, &stages);
-    chart(&timings, "circles", "rectangle").write_svg(&out.join(PLOT))?;
-    let (provenance, notes) = provenance_line(&out.join(META))?;
+    let (provenance, notes) = provenance_line(&folder.join(META))?;
     let param = |k: &str| provenance.parameters.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0);
-    let figure = if out.join(FIGURE_6_27).exists() {
+    let figure = if folder.join(FIGURE_6_27).exists() {
         format!(
             "### Fig. 6-27: a filled circle clipped by a rectangle\n\n![Fig. 6-27 redrawn]({FIGURE_6_27})\n\n\
              Drawn by `clipbench reproduce lecture` from the clipper's region (SVG elliptical arcs, not a \
@@ -290,9 +282,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     } else {
         String::new()
     };
-    Ok(Some(format!(
-        "## Curve clipping: what the preliminary tests save\n\n\
-         The lecture notes (*Computer Graphics, Lecture 17: Polygon Clipping*) test a curved object's bounding \
+    let body = format!(
+        "The lecture notes (*Computer Graphics, Lecture 17: Polygon Clipping*) test a curved object's bounding \
          rectangle against the window first (keep or drop it whole), then for a circle the extents of its quadrants \
          and octants, for an ellipse its quadrants, and solve the curve-line equations only for what survives; \
          against a polygon window, the bounding rectangles first. `clip-curve` does exactly that (`curve`) or goes \
@@ -315,7 +306,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         bins_table(&timings, &stages, "circles", "rectangle"),
         bins_table(&timings, &stages, "circles", "polygon"),
         notes
-    )))
+    );
+    Ok(Some(Derived::new(body).with_plot(PLOT, chart(&timings, "circles", "rectangle"))))
 }
 
 #[cfg(test)]

@@ -1,17 +1,18 @@
 //! The report's Fig. 6-24 section: the pictures `reproduce lecture` drew, when present.
 
-use std::path::Path;
-
+use super::derived::Derived;
+use super::results_folder::ResultsFolder;
+use crate::cli_error::CliError;
 use crate::results_files::lecture_sh::FIGURES;
 
-/// The section, or `None` when the pictures are not in `out`.
-pub fn section(out: &Path) -> Option<String> {
-    if !FIGURES.iter().all(|(file, _)| out.join(file).exists()) {
-        return None;
+/// The section (it draws nothing: `reproduce lecture` drew the pictures), or `None` when the
+/// pictures are not in the folder.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    if !FIGURES.iter().all(|(file, _)| folder.join(file).exists()) {
+        return Ok(None);
     }
     let mut text = String::from(
-        "## Lecture notes: Sutherland-Hodgman on a concave polygon (Fig. 6-24)\n\n\
-         *Computer Graphics, Lecture 17: Polygon Clipping*: a concave polygon whose part inside the window falls \
+        "*Computer Graphics, Lecture 17: Polygon Clipping*: a concave polygon whose part inside the window falls \
          into two pieces. Sutherland-Hodgman returns one vertex list and joins the pieces by a zero-width bridge \
          along the window; `sutherland-hodgman-split` (the notes' fix: the final list's vertices along each \
          window boundary rejoined in pairs) returns two rings and no bridge. Drawn by `clipbench reproduce \
@@ -21,5 +22,5 @@ pub fn section(out: &Path) -> Option<String> {
     for (file, caption) in FIGURES {
         text.push_str(&format!("![{caption}]({file})\n\n"));
     }
-    Some(text)
+    Ok(Some(Derived::new(text)))
 }

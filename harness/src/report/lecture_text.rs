@@ -1,7 +1,7 @@
 //! The report's text-clipping section: ns per character per strategy as the window shrinks, a plot, and the figures.
 
-use std::path::Path;
-
+use super::derived::Derived;
+use super::results_folder::ResultsFolder;
 use crate::cli_error::CliError;
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::median;
@@ -10,16 +10,14 @@ use crate::plot::palette::clipper_colour;
 use crate::report::markdown::{num, table};
 use crate::report::provenance_line::provenance_line;
 use crate::results_files::bench;
-use crate::results_files::lecture_text::{CSV, FIGURES, MD, META, PLOT, TextTiming};
+use crate::results_files::lecture_text::{CSV, FIGURES, META, TextTiming};
 use crate::text_paragraph::row_of_bench_name;
 
 /// The rows in the order the notes give the strategies.
 const ORDER: [&str; 5] = ["string", "char", "outline-vatti", "outline-sh-split", "bitmap"];
 
-/// Recomputes the section from `out`'s CSV and writes its markdown and plot.
-pub fn write(out: &Path) -> Result<(), CliError> {
-    super::write_markdown(out, MD, section(out)?)
-}
+/// The plot: ns per character against the window's side.
+pub const PLOT: &str = "lecture-text.svg";
 
 /// ns per character against window side, one line per strategy.
 pub fn chart(rows: &[TextTiming]) -> Chart {
@@ -162,36 +160,32 @@ pub fn from_bench(rows: &[Measurement], parameters: &serde_json::Value) -> Optio
 }
 
 /// The text timings and where they came from: the bench's raw results when it timed text, else
-/// `reproduce lecture`'s; `None` when neither is in `out`.
-fn timings(out: &Path) -> Result<Option<(Vec<TextTiming>, String, String)>, CliError> {
-    let bench_csv = out.join(bench::CSV);
-    if bench_csv.exists() {
-        let rows: Vec<Measurement> = read_csv(&bench_csv)?;
-        let (provenance, line) = provenance_line(&out.join(bench::META))?;
-        if let Some(timings) = from_bench(&rows, &provenance.parameters) {
+/// `reproduce lecture`'s; `None` when neither is in the folder.
+fn timings(folder: &ResultsFolder) -> Result<Option<(Vec<TextTiming>, String, String)>, CliError> {
+    if let Some(rows) = folder.bench_rows()? {
+        let (provenance, line) = provenance_line(&folder.join(bench::META))?;
+        if let Some(timings) = from_bench(rows, &provenance.parameters) {
             return Ok(Some((timings, format!("`{}`'s `text` group", bench::CSV), line)));
         }
     }
-    let csv = out.join(CSV);
+    let csv = folder.join(CSV);
     if !csv.exists() {
         return Ok(None);
     }
-    let (_, line) = provenance_line(&out.join(META))?;
+    let (_, line) = provenance_line(&folder.join(META))?;
     Ok(Some((read_csv(&csv)?, format!("`{CSV}` (`clipbench reproduce lecture`)"), line)))
 }
 
-/// The section after writing its plot; `None` when `out` holds no text timings.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let Some((rows, source, provenance)) = timings(out)? else { return Ok(None) };
-    chart(&rows).write_svg(&out.join(PLOT))?;
+/// The section and its plot; `None` when the folder holds no text timings.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let Some((rows, source, provenance)) = timings(folder)? else { return Ok(None) };
     let figures: String = FIGURES
         .iter()
-        .filter(|(file, _)| out.join(file).exists())
+        .filter(|(file, _)| folder.join(file).exists())
         .map(|(file, caption)| format!("![{caption}]({file})\n\n"))
         .collect();
-    Ok(Some(format!(
-        "## Lecture notes: text clipping (Figs. 6-28 to 6-30)\n\n\
-         *Computer Graphics, Lecture 17: Polygon Clipping*, \"Text Clipping\": all-or-none string (the string's box \
+    let body = format!(
+        "*Computer Graphics, Lecture 17: Polygon Clipping*, \"Text Clipping\": all-or-none string (the string's box \
          against the window), all-or-none character (each glyph's box), and per-component clipping (outline \
          glyphs of DejaVu Sans, flattened within 0.05 px, clipped as polygons by Vatti or by \
          `sutherland-hodgman-split`; glyphs of the 8x8 bitmap font `font8x8` pixel by pixel). A paragraph of six \
@@ -201,7 +195,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
          them with each other.\n\n{}\n![ns per character against window size]({PLOT})\n\n{}\n{figures}{provenance}",
         markdown_table(&rows),
         reading(&rows),
-    )))
+    );
+    Ok(Some(Derived::new(body).with_plot(PLOT, chart(&rows))))
 }
 
 #[cfg(test)]

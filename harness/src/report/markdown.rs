@@ -45,7 +45,9 @@ pub fn num_interval(i: &Interval, decimals: usize) -> String {
     if i.estimate.is_nan() {
         "n/a".to_owned()
     } else {
-        format!("{} ({}-{})", num(i.estimate, decimals), num(i.low, decimals), num(i.high, decimals))
+        // A dash between negative ends reads as a minus: `-5.0 (-7.0 to -3.0)`.
+        let to = if i.low < 0.0 || i.high < 0.0 { " to " } else { "-" };
+        format!("{} ({}{to}{})", num(i.estimate, decimals), num(i.low, decimals), num(i.high, decimals))
     }
 }
 

@@ -1,8 +1,11 @@
 //! `clipbench report`: every result in the output folder recomputed from its raw CSV into
 //! markdown tables and plots, gathered in REPORT.md.
 
+pub mod atlas;
+pub mod bench_points;
 pub mod bench_tables;
 pub mod beyond_paper;
+pub mod derived;
 pub mod document;
 pub mod lecture_curves;
 pub mod lecture_sh;
@@ -10,6 +13,9 @@ pub mod lecture_text;
 pub mod markdown;
 mod oracle_failures;
 mod provenance_line;
+pub mod results_folder;
+pub mod revisions;
+pub mod sections;
 pub mod summary;
 pub mod table3;
 pub mod table4;
@@ -29,7 +35,8 @@ pub struct ReportArgs {
     pub out: PathBuf,
 }
 
-/// Runs the command: recomputes every table and plot from the CSVs present, then REPORT.md.
+/// Runs the command: derives every section once from the CSVs present (its markdown file and
+/// plots), then REPORT.md.
 pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
     if !args.out.is_dir() {
         return Err(CliError::usage(format!(
@@ -38,27 +45,19 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, CliError> {
         )));
     }
     let out = ready_out_dir(&args.out)?;
-    table3::write(&out)?;
-    table4::write(&out)?;
-    beyond_paper::write(&out)?;
-    lecture_curves::write(&out)?;
-    bench_tables::write(&out)?;
-    lecture_text::write(&out)?;
     write_report(&out)?;
     Ok(ExitCode::SUCCESS)
 }
 
-/// Writes REPORT.md from every result in `out` and says where it is.
+/// Derives every section of the results in `out` once, writes their files and REPORT.md, and says
+/// where it is.
 pub fn write_report(out: &Path) -> Result<(), CliError> {
-    document::write(out)?;
-    eprintln!("clipbench: wrote {}", out.join(document::REPORT_FILE).display());
-    Ok(())
+    finish(document::ReportRun::new(out))
 }
 
-/// Writes a section's own markdown file (`file` in `out`) when `out` holds its results.
-fn write_markdown(out: &Path, file: &str, section: Option<String>) -> Result<(), CliError> {
-    match section {
-        Some(section) => crate::write::write_file(&out.join(file), &section),
-        None => Ok(()),
-    }
+/// Writes what `report` has not derived yet and REPORT.md, and says where it is.
+pub fn finish(report: document::ReportRun) -> Result<(), CliError> {
+    let path = report.write()?;
+    eprintln!("clipbench: wrote {}", path.display());
+    Ok(())
 }

@@ -2,26 +2,31 @@
 //! failures per clipper and workload, and the smallest shrunk failing case of each kind, drawn.
 
 use std::collections::BTreeMap;
-use std::path::Path;
 
+use super::derived::Derived;
 use super::markdown::table;
 use super::provenance_line::provenance_line;
+use super::results_folder::ResultsFolder;
+use super::summary::with_hung;
 use crate::cli_error::CliError;
-use crate::results_files::verify::{CaseEntry, FAILURES, META, VerifyRow, read};
+use crate::results_files::verify::{CaseEntry, FAILURES, META, PICTURE, VerifyRow};
 
-/// The section, or `None` when the folder holds no verify results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let Some(results) = read(out)? else { return Ok(None) };
-    let notes = if out.join(META).exists() { provenance_line(&out.join(META))?.1 } else { String::new() };
+/// The section (it draws nothing: `verify` drew each case's picture), or `None` when the folder
+/// holds no verify results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let Some(results) = folder.verify()? else { return Ok(None) };
+    let meta = folder.join(META);
+    let notes = if meta.exists() { provenance_line(&meta)?.1 } else { String::new() };
     let mut text = format!(
-        "## Where the clippers disagree with the oracle\n\n\
-         `clipbench verify` with {} generated cases per workload (seed {}): every clipper on every case, operation \
+        "`clipbench verify` with {} generated cases per workload (seed {}): every clipper on every case, operation \
          and fill rule it supports, against the exact oracle (output validity, membership at sample points, region \
          area) and the area identities. Each cell is failures / checked results, then the failed area identities \
          (one check per case and fill rule, over its four results) where there are any; a refusal of valid input, or an \
-         external clipper that crashed, hung or answered garbage, counts as a failure. Peers (geo, Clipper2, GEOS, \
-         i_overlay, Clipper 1, clipper2-rust and external clippers) are judged with the looser peer tolerance \
-         (`GEO_TOLERANCE`, 1e-6 of the inputs' box area), this project's clippers with 1e-9.\n\n{notes}\n",
+         external clipper that crashed or answered garbage, counts as a failure. An external clipper that gave no \
+         answer within the call time-out is not counted as a failure but as hung, beside it (\"2 hung\"). Peers \
+         (geo, Clipper2, GEOS, i_overlay, Clipper 1, clipper2-rust and external clippers) are judged with the \
+         looser peer tolerance (`GEO_TOLERANCE`, 1e-6 of the inputs' box area), this project's clippers with \
+         1e-9.\n\n{notes}\n",
         results.cases_per_workload, results.seed
     );
     for kind in ["polygon", "line"] {
@@ -32,7 +37,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     let smallest = smallest_cases(&results.cases);
     if smallest.is_empty() {
         text.push_str("No failure case was written.\n");
-        return Ok(Some(text));
+        return Ok(Some(Derived::new(text)));
     }
     text.push_str(
         "### The smallest failing case of each kind\n\n\
@@ -42,9 +47,9 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     );
     for c in smallest {
         let what = [c.op.as_deref(), c.fill.as_deref()].into_iter().flatten().collect::<Vec<_>>().join(", ");
-        let folder = format!("{FAILURES}/{}", c.folder);
+        let case_folder = format!("{FAILURES}/{}", c.folder);
         text.push_str(&format!(
-            "#### {} — {} on `{}`{}\n\n{} vertices after shrinking: {}\n\n![{}]({folder}/picture.svg)\n\n",
+            "#### {} — {} on `{}`{}\n\n{} vertices after shrinking: {}\n\n![{}]({case_folder}/{PICTURE})\n\n",
             c.clipper,
             c.check,
             c.workload,
@@ -54,7 +59,7 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
             c.folder,
         ));
     }
-    Ok(Some(text))
+    Ok(Some(Derived::new(text)))
 }
 
 /// Clippers down, workloads across, `failures / runs` in each cell ("–" where it did not run).
@@ -87,7 +92,8 @@ fn failure_table(rows: &[VerifyRow], kind: &str) -> Option<String> {
                     if r.identity_failures > 0 {
                         cell.push_str(&format!(" + {} identity", r.identity_failures));
                     }
-                    if r.oracle_failures + r.identity_failures > 0 { format!("**{cell}**") } else { cell }
+                    let cell = if r.oracle_failures + r.identity_failures > 0 { format!("**{cell}**") } else { cell };
+                    with_hung(cell, r.hung)
                 })
             }));
             line

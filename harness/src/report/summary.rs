@@ -4,19 +4,19 @@
 //! then one picture of trust against speed.
 
 use std::collections::BTreeMap;
-use std::path::Path;
 
-use super::bench_tables::{Points, points};
+use super::bench_points::{Point, Points};
+use super::derived::Derived;
 use super::markdown::{num, num_interval, table};
+use super::results_folder::ResultsFolder;
 use crate::cli_error::CliError;
 use crate::measure::interval::Interval;
-use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::geometric_mean;
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::clipper_colour;
 use crate::registry::Registry;
-use crate::results_files::bench::{BASELINE, CSV, MemoryRecord, TEXT_GROUP, read_memory};
-use crate::results_files::verify::{VerifyRow, read};
+use crate::results_files::bench::{BASELINE, MemoryRecord};
+use crate::results_files::verify::VerifyRow;
 
 /// The trust-against-speed plot.
 pub const PLOT: &str = "summary-trust-speed.svg";
@@ -29,7 +29,7 @@ const KINDS: [&str; 4] = ["polygon", "line", "curve", "text"];
 
 /// The language of this project's clippers and of the registered peers (external clippers say
 /// theirs in adapters/).
-fn language(clipper: &str, origin: &str) -> &'static str {
+pub fn language(clipper: &str, origin: &str) -> &'static str {
     match clipper {
         "clipper2" | "clipper2-rect" | "clipper2-open" | "clipper1" => "C++",
         "geos" => "C++, GEOS",
@@ -47,6 +47,8 @@ pub struct SummaryRow {
     pub origin: String,
     /// Oracle failures and checked results, summed over the workloads verified.
     pub verified: Option<(usize, usize)>,
+    /// Of those results, the ones an external clipper gave no answer to in time (not oracle failures).
+    pub hung: usize,
     /// Bench points with a wrong case, and points timed.
     pub bench_wrong: Option<(usize, usize)>,
     /// Geometric mean of its ratios to Clipper2 below [`LARGE_FROM`] edges, with the geometric
@@ -84,6 +86,7 @@ pub fn rows(verify: &[VerifyRow], bench: &Points, memory: &[MemoryRecord]) -> BT
         };
         let (failures, runs) = row.verified.unwrap_or((0, 0));
         row.verified = Some((failures + r.oracle_failures, runs + r.runs));
+        row.hung += r.hung;
     }
     let registry = crate::registry::registry();
     let mut benched: Vec<&str> = Vec::new();
@@ -102,8 +105,7 @@ pub fn rows(verify: &[VerifyRow], bench: &Points, memory: &[MemoryRecord]) -> BT
                 rows.last_mut().expect("just pushed")
             }
         };
-        let mine: Vec<(usize, &super::bench_tables::Point)> =
-            bench.iter().filter(|(k, _)| k.3 == clipper).map(|(k, p)| (k.2, p)).collect();
+        let mine: Vec<(usize, &Point)> = bench.iter().filter(|(k, _)| k.3 == clipper).map(|(k, p)| (k.2, p)).collect();
         row.bench_wrong = Some((mine.iter().filter(|(_, p)| !p.trusted()).count(), mine.len()));
         let ratios = |large: bool| -> Vec<&Interval> {
             mine.iter()
@@ -172,7 +174,7 @@ fn kind_table(rows: &[SummaryRow]) -> String {
             vec![
                 format!("`{}`", r.clipper),
                 format!("{} ({})", r.origin, language(&r.clipper, &r.origin)),
-                pair(r.verified),
+                with_hung(pair(r.verified), r.hung),
                 pair(r.bench_wrong),
                 r.speed_small.map_or("–".to_owned(), |i| num_interval(&i, 2)),
                 r.speed_large.map_or("–".to_owned(), |i| num_interval(&i, 2)),
@@ -183,6 +185,11 @@ fn kind_table(rows: &[SummaryRow]) -> String {
     table(&head, &body)
 }
 
+/// A count cell with its hangs beside it ("12 / 3200, 3 hung"), shown only when there are some.
+pub fn with_hung(cell: String, hung: usize) -> String {
+    if hung > 0 { format!("{cell}, {hung} hung") } else { cell }
+}
+
 /// Trust (share of checked results the oracle accepted) against speed (the overall geometric
 /// mean ratio to Clipper2, small and large sizes together), one point per polygon clipper with
 /// both.
@@ -190,7 +197,8 @@ pub fn chart(rows: &[SummaryRow]) -> Chart {
     let series = rows
         .iter()
         .filter_map(|r| {
-            let (failures, runs) = r.verified.filter(|v| v.1 > 0)?;
+            // Trust is over the results answered in time: a hang is not a wrong answer.
+            let (failures, runs) = r.verified.map(|(f, n)| (f, n - r.hung.min(n))).filter(|v| v.1 > 0)?;
             let speeds: Vec<f64> = [r.speed_small, r.speed_large].iter().flatten().map(|i| i.estimate).collect();
             let speed = (!speeds.is_empty()).then(|| geometric_mean(&speeds))?;
             let trust = 100.0 * (1.0 - failures as f64 / runs as f64);
@@ -206,7 +214,7 @@ pub fn chart(rows: &[SummaryRow]) -> Chart {
     Chart {
         title: format!("Polygon clippers: results the oracle accepted against time relative to {BASELINE}"),
         x_label: format!("time per call x {BASELINE} (geometric mean over bench points; log scale; left is faster)"),
-        y_label: "results the oracle accepted (%)".to_owned(),
+        y_label: "results the oracle accepted (% of those answered in time)".to_owned(),
         log_x: true,
         log_y: false,
         x_ticks: Vec::new(),
@@ -214,22 +222,16 @@ pub fn chart(rows: &[SummaryRow]) -> Chart {
     }
 }
 
-/// The summary section (after drawing its plot); `None` when `out` holds neither verify nor
-/// bench results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let verify = read(out)?.map(|v| v.rows).unwrap_or_default();
-    let bench_rows: Vec<Measurement> = if out.join(CSV).exists() {
-        read_csv(&out.join(CSV))?.into_iter().filter(|r: &Measurement| r.workload != TEXT_GROUP).collect()
-    } else {
-        Vec::new()
-    };
-    if verify.is_empty() && bench_rows.is_empty() {
+/// The summary section and its plot; `None` when the folder holds neither verify nor bench
+/// results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let verify = folder.verify()?.map_or(&[][..], |v| v.rows.as_slice());
+    if verify.is_empty() && folder.polygon_bench_rows()?.is_empty() {
         return Ok(None);
     }
-    let by_kind = rows(&verify, &points(&bench_rows), &read_memory(out)?);
+    let by_kind = rows(verify, folder.bench_points()?, folder.bench_memory()?);
     let mut text = format!(
-        "## Summary: which clipper to trust, and how fast it is\n\n\
-         Per kind of clipper: where it comes from; the results the exact oracle rejected out of those it checked, \
+        "Per kind of clipper: where it comes from; the results the exact oracle rejected out of those it checked, \
          over every workload `verify` ran (section \"Where the clippers disagree with the oracle\"); the bench points \
          where it answered wrongly (those count in no ratio); its time relative to `{BASELINE}` as the geometric mean \
          of its bench ratios below and from {LARGE_FROM} edges, with the geometric means of the points' 95% interval \
@@ -240,20 +242,20 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
             text.push_str(&format!("{kind} clippers:\n\n{}\n", kind_table(rows)));
         }
     }
-    if let Some(polygon) = by_kind.get("polygon") {
-        let chart = chart(polygon);
-        if !chart.series.is_empty() {
-            chart.write_svg(&out.join(PLOT))?;
-            text.push_str(&format!("![trust against speed]({PLOT})\n\n"));
-        }
+    let chart = by_kind.get("polygon").map(|polygon| chart(polygon)).filter(|c| !c.series.is_empty());
+    if chart.is_some() {
+        text.push_str(&format!("![trust against speed]({PLOT})\n\n"));
     }
-    Ok(Some(text))
+    let derived = Derived::new(text);
+    Ok(Some(match chart {
+        Some(chart) => derived.with_plot(PLOT, chart),
+        None => derived,
+    }))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::bench_tables::Point;
 
     fn verify_row(clipper: &str, origin: &str, kind: &str, failures: usize, runs: usize) -> VerifyRow {
         VerifyRow {
@@ -317,5 +319,22 @@ mod tests {
         // The liar is not placed on the trust-against-speed picture: it has no speed.
         let labels: Vec<String> = chart(polygon).series.into_iter().map(|s| s.label).collect();
         assert_eq!(labels, ["vatti", "clipper2"]);
+    }
+
+    #[test]
+    fn hangs_are_shown_beside_the_failures_and_left_out_of_trust() {
+        let mut slow = verify_row("slow", "external", "polygon", 1, 100);
+        slow.hung = 50;
+        let bench: Points = [(("star".to_owned(), "intersection".to_owned(), 20, "slow".to_owned()), point(2.0, 0))]
+            .into_iter()
+            .collect();
+        let rows = rows(&[slow], &bench, &[]);
+        let polygon = &rows["polygon"];
+        assert_eq!((polygon[0].verified, polygon[0].hung), (Some((1, 100)), 50));
+        let table = kind_table(polygon);
+        assert!(table.contains("| `slow` | external (see adapters/) | **1 / 100**, 50 hung |"), "{table}");
+        // 1 wrong of the 50 answered: 98%, not 99% of 100 nor 49% as if the hangs were wrong.
+        let trust = chart(polygon).series[0].points[0].1;
+        assert!((trust - 98.0).abs() < 1e-9, "{trust}");
     }
 }

@@ -1,12 +1,11 @@
 //! Vatti's Table 3 from its raw CSV: per size, both methods' clip, fill and total times, the
 //! improvement factors beside the paper's, a plot of the factors, and a short reading.
 
-use std::collections::BTreeMap;
-use std::path::Path;
-
+use super::derived::Derived;
 use super::markdown::{header, num, num_interval, table};
 use super::provenance_line::provenance_line;
-use super::wording::Sides;
+use super::results_folder::ResultsFolder;
+use super::wording::{self, Sides};
 use crate::cli_error::CliError;
 use crate::measure::interval::{CaseSamples, Interval, bootstrap, mean_ratio, seed_of};
 use crate::measure::raw::{Measurement, read_csv};
@@ -15,9 +14,8 @@ use crate::papers::{VATTI_TABLE3, vatti_row};
 use crate::plot::chart::{Chart, Series};
 use crate::plot::palette::FACTORS;
 use crate::results_files::vatti_table3::{CSV, META, METHOD1, METHOD2, PIXELS_CSV};
+use std::collections::BTreeMap;
 
-/// The markdown table file.
-pub const MD: &str = "vatti-table3.md";
 /// The improvement factor plot.
 pub const PLOT: &str = "vatti-table3-factors.svg";
 
@@ -180,23 +178,13 @@ pub fn reading(rows: &[Row]) -> String {
             "stays about level"
         }
     };
-    // Ours moves only when the two sizes' intervals do not overlap.
-    let our_trend = |a: &Interval, b: &Interval| {
-        if b.low > a.high {
-            "grows"
-        } else if b.high < a.low {
-            "falls"
-        } else {
-            "does not move beyond its intervals"
-        }
-    };
     let mut text = String::new();
     for (i, name) in ["clip", "fill", "total"].iter().enumerate() {
         let (a, b) = (&first.improvement_interval[i], &last.improvement_interval[i]);
         let (pa, pb) = (paper(first.edges, i), paper(last.edges, i));
         text.push_str(&format!(
             "- Our {name} improvement factor {} from {} at {} edges to {} at {}; the paper's {} from {} to {}.\n",
-            our_trend(a, b),
+            wording::trend(a, b),
             num_interval(a, 2),
             first.edges,
             num_interval(b, 2),
@@ -239,29 +227,21 @@ pub fn reading(rows: &[Row]) -> String {
     text
 }
 
-/// Recomputes the table from `out`'s CSV and writes its markdown and plot; `None` when the CSV
-/// is not there.
-pub fn write(out: &Path) -> Result<(), CliError> {
-    super::write_markdown(out, MD, section(out)?)
-}
-
-/// The table's markdown section (table, plot link, reading, provenance), after writing its plot;
-/// `None` when `out` holds no Table 3 results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let csv = out.join(CSV);
+/// The table's section (table, plot link, reading, provenance) and its plot; `None` when the
+/// folder holds no Table 3 results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let csv = folder.join(CSV);
     if !csv.exists() {
         return Ok(None);
     }
     let measurements: Vec<Measurement> = read_csv(&csv)?;
     let rows = rows(&measurements);
-    chart(&rows).write_svg(&out.join(PLOT))?;
-    let (provenance, notes) = provenance_line(&out.join(META))?;
+    let (provenance, notes) = provenance_line(&folder.join(META))?;
     let window = provenance.parameters.get("window").and_then(|w| w.as_str()).unwrap_or("see the sidecar").to_owned();
     let reps = provenance.parameters.get("repetitions").and_then(serde_json::Value::as_u64).unwrap_or(0);
     let cases = rows.first().map_or(0, |r| r.cases);
-    Ok(Some(format!(
-        "## Vatti 1992, Table 3: clip and fill, Method 1 against Method 2\n\n\
-         Workload `vatti-t3`: {cases} concave star-shaped subjects per size, fitted in 1280 x 1024, clipped \
+    let body = format!(
+        "Workload `vatti-t3`: {cases} concave star-shaped subjects per size, fitted in 1280 x 1024, clipped \
          (intersection, even-odd) by one fixed convex window: {window}. Method 1: `vatti` trapezoids + \
          `clip_raster::fill_trapezoids`. Method 2: `sutherland-hodgman` + `clip_raster::fill_polygons`. Times are the \
          median over {reps} interleaved repetitions, averaged over the cases; factors are Method 2 / Method 1 per case, \
@@ -272,7 +252,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         markdown_table(&rows),
         reading(&rows),
         notes
-    )))
+    );
+    Ok(Some(Derived::new(body).with_plot(PLOT, chart(&rows))))
 }
 
 #[cfg(test)]

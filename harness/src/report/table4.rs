@@ -1,12 +1,13 @@
 //! Wang et al.'s Table 4 from its raw CSV: per window, each line clipper's time per batch, the
 //! gain of New2 over Liu beside the paper's, the rejection stages' shares, a plot and a reading.
 
-use std::collections::BTreeMap;
-use std::path::Path;
-
-use super::markdown::{header, num, table};
+use super::derived::Derived;
+use super::markdown::{header, num, num_interval, table};
 use super::provenance_line::provenance_line;
+use super::results_folder::ResultsFolder;
+use super::wording::{self, Sides};
 use crate::cli_error::CliError;
+use crate::measure::interval::{CaseSamples, Interval, bootstrap, mean_ratio, seed_of};
 use crate::measure::raw::{Measurement, read_csv};
 use crate::measure::timing::median;
 use crate::papers::{WANG_TABLE4, wang_row};
@@ -15,9 +16,8 @@ use crate::plot::palette::SIZE_ROWS;
 use crate::results_files::wang_table4::{
     CSV, META, STAGE_TIMES_CSV, STAGES_CSV, StageRecord, StageTimeRecord, WINDOWS_CSV, WindowRecord,
 };
+use std::collections::BTreeMap;
 
-/// The markdown table file.
-pub const MD: &str = "wang-table4.md";
 /// The gain plot.
 pub const PLOT: &str = "wang-table4-gain.svg";
 
@@ -51,6 +51,9 @@ pub struct Row {
     pub ms: [f64; 6],
     /// Repetitions behind each median.
     pub repetitions: [usize; 6],
+    /// Liu's time over New2's with its 95% bootstrap interval over the repetitions: above 1 where
+    /// New2 is faster.
+    pub speedup: Interval,
 }
 
 impl Row {
@@ -66,6 +69,13 @@ impl Row {
     pub fn gain(&self) -> f64 {
         (self.ms[0] - self.ms[2]) * 100.0 / self.ms[2]
     }
+
+    /// [`Row::gain`] with its 95% interval.
+    pub fn gain_interval(&self) -> Interval {
+        let percent = |r: f64| (r - 1.0) * 100.0;
+        let s = self.speedup;
+        Interval { estimate: self.gain(), low: percent(s.low), high: percent(s.high) }
+    }
 }
 
 /// Computes the rows from raw timings and the window records.
@@ -80,6 +90,14 @@ pub fn rows(measurements: &[Measurement], windows: &[WindowRecord]) -> Vec<Row> 
             let size_row = SIZE_ROWS_NAMES.iter().position(|(n, _)| *n == w.size_row)?;
             let case = format!("{}-{}", w.shape, w.size_row);
             let series = COLUMNS.map(|(c, _)| times.get(&(case.clone(), w.edges, c.to_owned())));
+            let speedup = match (series[0], series[2]) {
+                (Some(liu), Some(new2)) => bootstrap(
+                    &[CaseSamples { times: liu, baseline: Some(new2) }],
+                    seed_of(&format!("wang-t4/{case}/{}", w.edges)),
+                    mean_ratio,
+                ),
+                _ => None,
+            };
             Some(Row {
                 shape: w.shape.clone(),
                 edges: w.edges,
@@ -87,6 +105,7 @@ pub fn rows(measurements: &[Measurement], windows: &[WindowRecord]) -> Vec<Row> 
                 w1_w2: (w.w1, w.w2),
                 ms: series.map(|s| s.map_or(f64::NAN, |v| median(v))),
                 repetitions: series.map(|s| s.map_or(0, Vec::len)),
+                speedup: speedup.unwrap_or(Interval::exact(f64::NAN)),
             })
         })
         .collect()
@@ -125,7 +144,7 @@ pub fn markdown_table(rows: &[Row]) -> String {
                 num(r.ms[0], 3),
                 num(r.ms[1], 3),
                 num(r.ms[2], 3),
-                format!("**{}**", num(r.gain(), 1)),
+                format!("**{}**", num_interval(&r.gain_interval(), 1)),
                 pv(|p| p.liu),
                 pv(|p| p.new1),
                 pv(|p| p.new2),
@@ -162,7 +181,7 @@ pub fn convex_table(rows: &[Row]) -> String {
                 num(r.ms[0], 3),
                 num(r.ms[1], 3),
                 num(r.ms[2], 3),
-                num(r.gain(), 1),
+                num_interval(&r.gain_interval(), 1),
                 num(r.ms[5], 3),
                 num(r.ms[3], 3),
                 num(r.ms[4], 2),
@@ -405,7 +424,8 @@ pub fn chart(rows: &[Row]) -> Chart {
     }
 }
 
-/// A short reading, every statement computed from the rows.
+/// A short reading, every statement computed from the rows; a claim counts only the windows whose
+/// interval supports it.
 pub fn reading(rows: &[Row]) -> String {
     let mut text = String::new();
     for (i, (_, label)) in SIZE_ROWS_NAMES.iter().enumerate() {
@@ -414,20 +434,21 @@ pub fn reading(rows: &[Row]) -> String {
         let pa = wang_row(a.edges, i).map_or(f64::NAN, |p| p.gain);
         let pb = wang_row(b.edges, i).map_or(f64::NAN, |p| p.gain);
         text.push_str(&format!(
-            "- {label}: our gain goes from {}% at {} edges to {}% at {}; the paper's from {}% to {}%.\n",
-            num(a.gain(), 1),
+            "- {label}: our gain (%) {} from {} at {} edges to {} at {}; the paper's from {}% to {}%.\n",
+            wording::trend(&a.gain_interval(), &b.gain_interval()),
+            num_interval(&a.gain_interval(), 1),
             a.edges,
-            num(b.gain(), 1),
+            num_interval(&b.gain_interval(), 1),
             b.edges,
             num(pa, 1),
             num(pb, 1)
         ));
     }
     let concave: Vec<&Row> = rows.iter().filter(|r| r.shape == "concave").collect();
-    let faster = concave.iter().filter(|r| r.ms[2] < r.ms[0]).count();
+    let sides = Sides::of_speedups(concave.iter().map(|r| &r.speedup));
     text.push_str(&format!(
-        "- New2 is faster than Liu on {faster} of {} concave windows (the paper: 12 of 12).\n",
-        concave.len()
+        "- Against Liu, New2 is {} (the paper: faster at 12 of 12).\n",
+        sides.sentence("concave windows")
     ));
     let box45: Vec<f64> = concave.iter().map(|r| (r.ms[1] - r.ms[2]) * 100.0 / r.ms[2]).collect();
     let paper45: Vec<f64> = WANG_TABLE4.iter().map(|r| (r.new1 - r.new2) * 100.0 / r.new2).collect();
@@ -474,23 +495,17 @@ pub fn reading(rows: &[Row]) -> String {
     text
 }
 
-/// Recomputes the table from `out`'s CSVs and writes its markdown and plot.
-pub fn write(out: &Path) -> Result<(), CliError> {
-    super::write_markdown(out, MD, section(out)?)
-}
-
-/// The table's markdown section after writing its plot; `None` when `out` holds no Table 4 results.
-pub fn section(out: &Path) -> Result<Option<String>, CliError> {
-    let csv = out.join(CSV);
+/// The table's section and its plot; `None` when the folder holds no Table 4 results.
+pub fn derive(folder: &ResultsFolder) -> Result<Option<Derived>, CliError> {
+    let csv = folder.join(CSV);
     if !csv.exists() {
         return Ok(None);
     }
     let measurements: Vec<Measurement> = read_csv(&csv)?;
-    let windows: Vec<WindowRecord> = read_csv(&out.join(WINDOWS_CSV))?;
-    let stages: Vec<StageRecord> = read_csv(&out.join(STAGES_CSV))?;
+    let windows: Vec<WindowRecord> = read_csv(&folder.join(WINDOWS_CSV))?;
+    let stages: Vec<StageRecord> = read_csv(&folder.join(STAGES_CSV))?;
     let rows = rows(&measurements, &windows);
-    chart(&rows).write_svg(&out.join(PLOT))?;
-    let stage_times_path = out.join(STAGE_TIMES_CSV);
+    let stage_times_path = folder.join(STAGE_TIMES_CSV);
     let stage_times = if stage_times_path.exists() {
         let records: Vec<StageTimeRecord> = read_csv(&stage_times_path)?;
         let (md, sums) = stage_times_table(&records);
@@ -506,11 +521,10 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
     } else {
         String::new()
     };
-    let (provenance, notes) = provenance_line(&out.join(META))?;
+    let (provenance, notes) = provenance_line(&folder.join(META))?;
     let param = |k: &str| provenance.parameters.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0);
-    Ok(Some(format!(
-        "## Wang et al. 2005, Table 4: line clipping against concave windows\n\n\
-         Workload `wang-t4`: {} random segments (endpoints uniform in 800 x 600) clipped against star-shaped concave \
+    let body = format!(
+        "Workload `wang-t4`: {} random segments (endpoints uniform in 800 x 600) clipped against star-shaped concave \
          windows of 6 to 50 edges at the paper's two size rows; W1 = 600 / L and W2 = 600 x 800 / MEB area are \
          measured on our windows (L read as MEB width + height, see `clip_testkit::workload::wang`). Times are \
          medians over {} interleaved repetitions (geo: {}) of one batch, in ms per batch of 10000 segments, which is \
@@ -527,7 +541,8 @@ pub fn section(out: &Path) -> Result<Option<String>, CliError> {
         stages_table(&stages),
         stage_times,
         notes
-    )))
+    );
+    Ok(Some(Derived::new(body).with_plot(PLOT, chart(&rows))))
 }
 
 #[cfg(test)]
@@ -581,6 +596,7 @@ mod tests {
             w1_w2: (2.7, 41.0),
             ms: [0.18, f64::NAN, new2_ms, f64::NAN, f64::NAN, f64::NAN],
             repetitions: [1; 6],
+            speedup: Interval::exact(0.18 / new2_ms),
         };
         // Mixed batch: Liu 18 ns (order 2), New2 21.5 (order 7): the excess 5 exceeds the boxes' 4.
         let text = stage_reading(&sums, &[row(0.215)]);
@@ -613,6 +629,35 @@ mod tests {
         assert_eq!(rows[0].gain(), 50.0);
         assert_eq!(rows[0].repetitions, [3, 0, 2, 0, 0, 0]);
         assert!(rows[0].ms[3].is_nan());
-        assert!(reading(&rows).contains("our gain goes from 50.0% at 6 edges"));
+        assert!(reading(&rows).contains("from 50.0 (50.0-4400.0) at 6 edges"), "{}", reading(&rows));
+    }
+
+    #[test]
+    fn a_window_whose_interval_crosses_one_is_not_counted_faster() {
+        let reps = |c: &str, times: &[f64], edges: usize| {
+            times.iter().map(|&t| Measurement { size: edges, ..m(c, 0, t) }).collect::<Vec<_>>()
+        };
+        let mut raw = reps("liu", &[3.0, 3.1, 2.9, 3.0, 3.05], 6);
+        raw.extend(reps("virtual-box", &[2.0, 2.1, 1.9, 2.0, 2.05], 6));
+        raw.extend(reps("liu", &[1.0, 1.2, 0.8, 1.1, 0.9], 8));
+        raw.extend(reps("virtual-box", &[1.0, 0.9, 1.1, 1.2, 0.8], 8));
+        let window = |edges| WindowRecord {
+            shape: "concave".into(),
+            size_row: "W1".into(),
+            edges,
+            w1: 2.7,
+            w2: 41.0,
+            paper_w1: 2.76,
+            paper_w2: 40.0,
+        };
+        let rows = rows(&raw, &[window(6), window(8)]);
+        assert!(rows[0].speedup.above(1.0), "{:?}", rows[0].speedup);
+        assert!(!rows[1].speedup.above(1.0) && !rows[1].speedup.below(1.0), "{:?}", rows[1].speedup);
+        let text = reading(&rows);
+        assert!(
+            text.contains("New2 is faster at 1 of 2 concave windows, slower at 0, indistinguishable at 1"),
+            "{text}"
+        );
+        assert!(text.contains("our gain (%) falls from 50.0"), "{text}");
     }
 }

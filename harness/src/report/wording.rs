@@ -62,6 +62,18 @@ impl Sides {
     }
 }
 
+/// How a figure moves from interval `a` to interval `b`: it grows or falls only when the two
+/// intervals do not overlap.
+pub fn trend(a: &Interval, b: &Interval) -> &'static str {
+    if b.low > a.high {
+        "grows"
+    } else if b.high < a.low {
+        "falls"
+    } else {
+        "does not move beyond its intervals"
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -22,6 +22,11 @@ pub const POINTS_CSV: &str = "bench-points.csv";
 /// The baseline every ratio is taken against.
 pub const BASELINE: &str = "clipper2";
 
+/// The raw-file name of an external clipper's own times (the round trip keeps its plain name).
+pub fn own_time_name(clipper: &str) -> String {
+    format!("{clipper} (own time)")
+}
+
 /// One row of [`MEMORY_CSV`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MemoryRecord {

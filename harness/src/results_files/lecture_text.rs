@@ -6,10 +6,6 @@ use serde::{Deserialize, Serialize};
 pub const CSV: &str = "lecture-text.csv";
 /// The sidecar of [`CSV`].
 pub const META: &str = "lecture-text.meta.json";
-/// The plot `report` draws from [`CSV`].
-pub const PLOT: &str = "lecture-text.svg";
-/// The markdown `report` writes from [`CSV`].
-pub const MD: &str = "lecture-text.md";
 /// The notes' text figures redrawn from real runs, with their captions: all-or-none string
 /// (6-28), all-or-none character (6-29), per-component on the outline and the bitmap font (6-30).
 pub const FIGURES: [(&str, &str); 4] = [

@@ -15,6 +15,8 @@ pub const JSON: &str = "verify.json";
 pub const META: &str = "verify.meta.json";
 /// The folder of shrunk failure cases, one sub-folder per [`CaseEntry`].
 pub const FAILURES: &str = "verify-failures";
+/// The picture of the failure in each case's folder, which the report shows.
+pub const PICTURE: &str = "picture.svg";
 
 /// A verify run: counts per clipper and workload, and the failure cases written.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -40,45 +42,78 @@ pub struct VerifyResults {
     pub partition: Option<Partition>,
 }
 
-/// The counts of one clipper on one workload.
+/// The counts of one clipper on one workload, as the file holds them.
+pub type VerifyRow = CountsRow<String>;
+
+/// The counts of one clipper on one workload, its names of type `S`: owned in the file
+/// ([`VerifyRow`]), static while verify counts.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct VerifyRow {
+pub struct CountsRow<S: Ord> {
     /// Clipper name.
-    pub clipper: String,
+    pub clipper: S,
     /// `ours`, `peer`, `external` or `strict`.
-    pub origin: String,
+    pub origin: S,
     /// `polygon` or `line`.
-    pub kind: String,
+    pub kind: S,
     /// Workload name.
-    pub workload: String,
+    pub workload: S,
     /// Generated input cases the clipper ran on.
     pub cases: usize,
     /// Checked results: one per case, operation and fill rule (one per case for lines).
     pub runs: usize,
-    /// Results the oracle rejected (including refusals and failures to answer): at most `runs`.
+    /// Results the oracle rejected (including refusals and failures to answer, but not hangs):
+    /// with `hung`, at most `runs`.
     pub oracle_failures: usize,
+    /// Runs where an external clipper gave no answer within the call time-out: not a wrong
+    /// answer (counted in `oracle_failures` by files written before they were counted apart).
+    #[serde(default)]
+    pub hung: usize,
     /// Cases and fill rules whose four results break an area identity (not runs themselves;
     /// counted in `oracle_failures` by files written before they were counted apart).
     #[serde(default)]
     pub identity_failures: usize,
-    /// Results that differ from another clipper's while both passed the oracle, per other clipper.
-    pub disagreements: BTreeMap<String, usize>,
+    /// Results that differ by region (or by visible intervals) from another clipper's while both
+    /// passed the oracle, per other clipper; where one side failed, the difference is counted as
+    /// that side's oracle failure instead.
+    pub disagreements: BTreeMap<S, usize>,
     /// Zero-width bridges in the output, for clippers whose capabilities say they make them.
     pub bridges: Option<usize>,
 }
 
-impl VerifyRow {
+impl<S: Ord + Clone> CountsRow<S> {
     /// Adds another part's counts of the same clipper, kind and workload.
-    pub fn add(&mut self, other: &VerifyRow) {
+    pub fn add(&mut self, other: &CountsRow<S>) {
         self.cases += other.cases;
         self.runs += other.runs;
         self.oracle_failures += other.oracle_failures;
+        self.hung += other.hung;
         self.identity_failures += other.identity_failures;
         for (name, n) in &other.disagreements {
             *self.disagreements.entry(name.clone()).or_default() += n;
         }
         if let Some(b) = other.bridges {
             self.bridges = Some(self.bridges.unwrap_or(0) + b);
+        }
+    }
+
+    /// The same counts with owned names, as the file holds them.
+    pub fn to_file(&self) -> VerifyRow
+    where
+        S: AsRef<str>,
+    {
+        let own = |s: &S| s.as_ref().to_owned();
+        CountsRow {
+            clipper: own(&self.clipper),
+            origin: own(&self.origin),
+            kind: own(&self.kind),
+            workload: own(&self.workload),
+            cases: self.cases,
+            runs: self.runs,
+            oracle_failures: self.oracle_failures,
+            hung: self.hung,
+            identity_failures: self.identity_failures,
+            disagreements: self.disagreements.iter().map(|(k, v)| (own(k), *v)).collect(),
+            bridges: self.bridges,
         }
     }
 }

@@ -56,8 +56,9 @@ impl LinePlan<'_> {
                     row.cases += 1;
                     row.runs += 1;
                     if let Err(failure) = &verdict {
-                        row.oracle_failures += 1;
-                        outcome.findings.push(finding(e.clipper.name(), Check::Oracle, failure.clone()));
+                        let check = failure.run_check();
+                        *row.failures(check) += 1;
+                        outcome.findings.push(finding(e.clipper.name(), check, failure.clone()));
                     }
                 }
                 passed[i] = verdict.is_ok();

@@ -219,7 +219,8 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
         .chain(registry.curve.iter().filter(|e| e.origin.fails_run()).map(|e| e.clipper.name()))
         .chain(text.names.iter().copied())
         .collect();
-    let ours_failed = rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures + r.identity_failures > 0);
+    let ours_failed =
+        rows.iter().any(|r| ours.contains(&r.clipper) && r.oracle_failures + r.hung + r.identity_failures > 0);
 
     // Shrink and write the first failures of each clipper and workload.
     let (chosen, skipped) = first_of_each(&findings, args.max_records, |f| (f.clipper, f.workload, f.check));

@@ -95,12 +95,13 @@ impl PolygonPlan<'_> {
                                 row.bridges = Some(row.bridges.unwrap_or(0) + bridge_count_along(out, clip, snap));
                             }
                             if let Err(failure) = &verdict {
-                                row.oracle_failures += 1;
+                                let check = failure.run_check();
+                                *row.failures(check) += 1;
                                 outcome.findings.push(finding(
                                     e.clipper.name(),
                                     Some(op),
                                     fill,
-                                    Check::Oracle,
+                                    check,
                                     failure.clone(),
                                 ));
                             }

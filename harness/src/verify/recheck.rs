@@ -40,7 +40,7 @@ pub fn polygon_failure(registry: &Registry, target: Target, subject: &Polygons, 
         polygon_oracle(e, subject, clip, op, fill, &out).map(|_| out)
     };
     match target.check {
-        Check::Oracle => checked(entry, target.op?).err(),
+        Check::Oracle | Check::Hung => checked(entry, target.op?).err(),
         Check::AreaIdentities => {
             let mut outputs = Vec::new();
             for op in BoolOp::ALL {
@@ -76,7 +76,7 @@ pub fn line_failure(registry: &Registry, target: Target, window: &Polygons, segm
         line_oracle(e, window, segments, &pieces).map(|()| pieces)
     };
     match target.check {
-        Check::Oracle => checked(entry).err(),
+        Check::Oracle | Check::Hung => checked(entry).err(),
         Check::AreaIdentities => None,
         Check::Disagreement(other) => {
             let other = registry.find_line(other)?;

@@ -24,6 +24,7 @@ use crate::checks::{Check, output_rules, run_line, run_polygon};
 use crate::cli_error::CliError;
 use crate::curve_input::curves_to_text;
 use crate::registry::Registry;
+use crate::results_files::verify::PICTURE;
 use crate::write::write_file;
 
 /// The case file (`case.json`) of a failure folder: what failed, where it came from, and the
@@ -34,7 +35,7 @@ pub struct CaseFile {
     pub kind: String,
     /// The clipper the failure is counted under.
     pub clipper: String,
-    /// `oracle`, `area-identities`, or `disagreement`.
+    /// `oracle`, `hung`, `area-identities`, or `disagreement`.
     pub check: String,
     /// For a disagreement, the other clipper.
     pub other: Option<String>,
@@ -109,6 +110,7 @@ pub fn record(
     let (other, check) = match finding.check {
         Check::Disagreement(o) => (Some(o.to_owned()), "disagreement"),
         Check::Oracle => (None, "oracle"),
+        Check::Hung => (None, "hung"),
         Check::AreaIdentities => (None, "area-identities"),
     };
     let mut case = CaseFile {
@@ -229,7 +231,7 @@ fn polygon_files(
     let failing = named.first().filter(|(n, _)| *n == finding.clipper).map(|(_, p)| *p);
     let caption = format!("{} {}: {}", finding.clipper, case.check, case.shrunk);
     let mark = polygon_mark(&case.shrunk, failing);
-    files.push(("picture.svg".into(), polygon_failure_svg(&subject, &clip, fill, &named, &caption, mark)));
+    files.push((PICTURE.into(), polygon_failure_svg(&subject, &clip, fill, &named, &caption, mark)));
     let mut layers = vec![Layer::Rings("subject", "subject", &subject), Layer::Rings("clip", "clip", &clip)];
     layers.extend(named.iter().map(|(n, p)| Layer::Rings("output", n, p)));
     files.push(("case.geojson".into(), case_geojson(&layers, Some(fill.name()))));
@@ -274,7 +276,7 @@ fn line_files(
     let failing = named.first().filter(|(n, _)| *n == finding.clipper).map(|(_, p)| *p);
     let caption = format!("{} {}: {}", finding.clipper, case.check, case.shrunk);
     let mark = line_mark(&case.shrunk, &segments, failing);
-    files.push(("picture.svg".into(), line_failure_svg(&window, &segments, &named, &caption, mark)));
+    files.push((PICTURE.into(), line_failure_svg(&window, &segments, &named, &caption, mark)));
     let pieces: Vec<(&str, Vec<Segment>)> =
         named.iter().map(|(n, p)| (*n, p.iter().map(|v| v.piece).collect())).collect();
     let mut layers =
@@ -324,7 +326,7 @@ fn curve_files(
             .zip(&regions)
             .map(|((o, a), r)| CurvePicture { arc: &o.arc, visible: &a.intervals, region: r.as_ref() })
             .collect();
-        files.push(("picture.svg".into(), curves_svg(&generated.window, &pictures, finding.clipper)));
+        files.push((PICTURE.into(), curves_svg(&generated.window, &pictures, finding.clipper)));
     }
     Ok(files)
 }

@@ -69,15 +69,18 @@ pub fn checked(case: &CaseFile, registry: &Registry, path: &Path) -> Result<Repl
             clippers.push(other);
             Check::Disagreement(other.0)
         }
-        (check @ ("oracle" | "area-identities"), Some(other)) => {
+        (check @ ("oracle" | "hung" | "area-identities"), Some(other)) => {
             return Err(bad(format!("'other' ({other}) is for a disagreement, and the check here is {check}")));
         }
         ("oracle", None) => Check::Oracle,
+        ("hung", None) => Check::Hung,
         ("area-identities", None) if kind == Kind::Polygon => Check::AreaIdentities,
         ("area-identities", None) => {
             return Err(bad(format!("area identities are a polygon check, and this is a {} case", kind.name())));
         }
-        (other, _) => return Err(bad(format!("unknown check '{other}' (oracle, area-identities or disagreement)"))),
+        (other, _) => {
+            return Err(bad(format!("unknown check '{other}' (oracle, hung, area-identities or disagreement)")));
+        }
     };
     let op = case.op.as_deref().map(|s| s.parse::<BoolOp>().map_err(|e| bad(e.to_string()))).transpose()?;
     let fill = case.fill.as_deref().map(|s| s.parse::<FillRule>().map_err(|e| bad(e.to_string()))).transpose()?;

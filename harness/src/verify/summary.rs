@@ -1,37 +1,10 @@
 //! The verify summary: counts per clipper and workload, printed as a table or written as JSON.
-
-use std::collections::BTreeMap;
-
+use crate::checks::Check;
 use crate::registry::Origin;
-use crate::results_files::verify::{CaseEntry, VerifyResults, VerifyRow};
+use crate::results_files::verify::{CaseEntry, CountsRow, VerifyResults};
 
-/// The counts of one clipper on one workload.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Row {
-    /// Clipper name.
-    pub clipper: &'static str,
-    /// `ours`, `peer`, `external` or `strict` ([`Origin::label`]).
-    pub origin: &'static str,
-    /// `polygon` or `line`.
-    pub kind: &'static str,
-    /// Workload name.
-    pub workload: &'static str,
-    /// Generated input cases the clipper ran on.
-    pub cases: usize,
-    /// Checked results: one per case, operation and fill rule (one per case for lines).
-    pub runs: usize,
-    /// Results the oracle rejected (including refusals and failures to answer): at most `runs`.
-    pub oracle_failures: usize,
-    /// Cases and fill rules whose four results break an area identity (counted apart from the
-    /// runs, of which they are not one).
-    pub identity_failures: usize,
-    /// Results that differ by region (or by visible intervals) from another clipper's while both
-    /// passed the oracle, per other clipper; where one side failed, the difference is counted as
-    /// that side's oracle failure instead.
-    pub disagreements: BTreeMap<&'static str, usize>,
-    /// Zero-width bridges in the output, for clippers whose capabilities say they make them.
-    pub bridges: Option<usize>,
-}
+/// The counts of one clipper on one workload, while verify counts.
+pub type Row = CountsRow<&'static str>;
 
 impl Row {
     /// An empty row.
@@ -39,18 +12,9 @@ impl Row {
         Row { clipper, origin: origin.label(), kind, workload, ..Row::default() }
     }
 
-    /// Adds another row's counts (same clipper and workload) to this one.
-    pub fn add(&mut self, other: &Row) {
-        self.cases += other.cases;
-        self.runs += other.runs;
-        self.oracle_failures += other.oracle_failures;
-        self.identity_failures += other.identity_failures;
-        for (name, n) in &other.disagreements {
-            *self.disagreements.entry(name).or_default() += n;
-        }
-        if let Some(b) = other.bridges {
-            self.bridges = Some(self.bridges.unwrap_or(0) + b);
-        }
+    /// The count a failed run is added to: `hung` for [`Check::Hung`], else `oracle_failures`.
+    pub fn failures(&mut self, check: Check) -> &mut usize {
+        if check == Check::Hung { &mut self.hung } else { &mut self.oracle_failures }
     }
 }
 
@@ -79,22 +43,7 @@ impl Summary {
         VerifyResults {
             seed: self.seed,
             cases_per_workload: self.cases_per_workload,
-            rows: self
-                .rows
-                .iter()
-                .map(|r| VerifyRow {
-                    clipper: r.clipper.to_owned(),
-                    origin: r.origin.to_owned(),
-                    kind: r.kind.to_owned(),
-                    workload: r.workload.to_owned(),
-                    cases: r.cases,
-                    runs: r.runs,
-                    oracle_failures: r.oracle_failures,
-                    identity_failures: r.identity_failures,
-                    disagreements: r.disagreements.iter().map(|(k, v)| ((*k).to_owned(), *v)).collect(),
-                    bridges: r.bridges,
-                })
-                .collect(),
+            rows: self.rows.iter().map(Row::to_file).collect(),
             failures_recorded: self.failures_recorded,
             failures_not_recorded: self.failures_not_recorded,
             ours_failed: self.ours_failed,
@@ -118,6 +67,7 @@ pub fn table(rows: &[Row]) -> String {
     let with_identities = rows.iter().any(|r| r.kind == "polygon");
     let mut header = vec!["clipper".to_owned(), "kind".into(), "workload".into(), "cases".into(), "runs".into()];
     header.push("oracle fail".into());
+    header.push("hung".into());
     if with_identities {
         header.push("identity fail".into());
     }
@@ -134,6 +84,7 @@ pub fn table(rows: &[Row]) -> String {
             r.cases.to_string(),
             r.runs.to_string(),
             r.oracle_failures.to_string(),
+            r.hung.to_string(),
         ];
         if with_identities {
             cells.push(if r.kind == "polygon" { r.identity_failures.to_string() } else { "-".to_owned() });
@@ -189,9 +140,10 @@ mod tests {
         let mut b = a.clone();
         b.cases = 3;
         b.bridges = Some(2);
+        b.hung = 1;
         b.disagreements.insert("geo", 1);
         a.add(&b);
         a.add(&b);
-        assert_eq!((a.cases, a.bridges, a.disagreements["geo"]), (6, Some(4), 2));
+        assert_eq!((a.cases, a.bridges, a.hung, a.disagreements["geo"]), (6, Some(4), 2, 2));
     }
 }

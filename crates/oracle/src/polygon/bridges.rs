@@ -1,8 +1,10 @@
 //! The count of zero-width bridges in bridged output (docs/DESIGN.md): pairs of edges running
 //! both ways along one stretch.
 
+use core::convert::Infallible;
+
 use clip_core::predicates::on_segment;
-use clip_core::{Point, Polygons, Rect, Segment, SegmentIntersection, segment_intersection};
+use clip_core::{CellIndex, Point, Polygons, Rect, Segment, SegmentIntersection, segment_intersection};
 
 /// One edge of an output ring, with its box.
 #[derive(Clone, Copy, Debug)]
@@ -15,91 +17,16 @@ fn ring_edges(p: &Polygons) -> Vec<RingEdge> {
     p.edges().map(|segment| RingEdge { segment, bounds: segment.bounds() }).collect()
 }
 
-/// Calls `visit` once on every pair of edges whose bounding boxes meet, each pair in the one
-/// cell of a [`CellIndex`] that holds the lower-left corner of the overlap of their boxes. So
-/// output whose edges crowd along a curve (10^4-gons) or across a checkerboard costs about
-/// linear time rather than quadratic.
+/// Calls `visit` once on every pair of edges whose bounding boxes meet ([`CellIndex`]'s close
+/// pairs). So output whose edges crowd along a curve (10^4-gons) or across a checkerboard costs
+/// about linear time rather than quadratic.
 fn for_each_close_pair(edges: &[RingEdge], mut visit: impl FnMut(&RingEdge, &RingEdge)) {
     let boxes: Vec<Rect> = edges.iter().map(|e| e.bounds).collect();
     let Some(index) = CellIndex::new(&boxes) else { return };
-    for members in index.entries.chunk_by(|a, b| a.0 == b.0) {
-        for (k, &(cell, i)) in members.iter().enumerate() {
-            let e = &edges[i as usize];
-            for &(_, j) in &members[k + 1..] {
-                let f = &edges[j as usize];
-                if !e.bounds.intersects(&f.bounds) {
-                    continue;
-                }
-                let corner = Point::new(e.bounds.min.x.max(f.bounds.min.x), e.bounds.min.y.max(f.bounds.min.y));
-                if index.cell(corner) == cell {
-                    visit(e, f);
-                }
-            }
-        }
-    }
-}
-
-/// Boxes binned into a uniform grid whose square cells are about as large as a typical box,
-/// kept sparse as sorted (cell, box) entries: every cell a box covers lists it.
-struct CellIndex {
-    origin: Point,
-    size: f64,
-    columns: u64,
-    rows: u64,
-    /// (cell key, box index), sorted.
-    entries: Vec<(u64, u32)>,
-}
-
-impl CellIndex {
-    /// The index of `boxes`, or `None` when there are none. Cells start at the median box's
-    /// larger side and double until the boxes cover at most eight cells each on average (a few
-    /// long boxes among many small ones must not cover millions).
-    fn new(boxes: &[Rect]) -> Option<CellIndex> {
-        let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
-        if b.is_empty() {
-            return None;
-        }
-        let mut sides: Vec<f64> = boxes.iter().map(|r| r.width().max(r.height())).collect();
-        let middle = sides.len() / 2;
-        let median = *sides.select_nth_unstable_by(middle, f64::total_cmp).1;
-        let mut size = median.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
-        loop {
-            let covered: f64 =
-                boxes.iter().map(|r| ((r.width() / size).floor() + 2.0) * ((r.height() / size).floor() + 2.0)).sum();
-            if covered <= 8.0 * boxes.len() as f64 || !size.is_finite() {
-                break;
-            }
-            size *= 2.0;
-        }
-        let count = |span: f64| ((span / size).floor() as u64).saturating_add(1);
-        let mut index =
-            CellIndex { origin: b.min, size, columns: count(b.width()), rows: count(b.height()), entries: Vec::new() };
-        let mut entries = Vec::with_capacity(2 * boxes.len());
-        for (i, r) in boxes.iter().enumerate() {
-            let ((x0, y0), (x1, y1)) = (index.coordinates(r.min), index.coordinates(r.max));
-            for y in y0..=y1 {
-                entries.extend((x0..=x1).map(|x| (y * index.columns + x, i as u32)));
-            }
-        }
-        entries.sort_unstable();
-        index.entries = entries;
-        Some(index)
-    }
-
-    /// The column and row holding `p` (clamped to the grid).
-    fn coordinates(&self, p: Point) -> (u64, u64) {
-        let index = |v: f64, lo: f64, n: u64| {
-            let k = ((v - lo) / self.size).floor();
-            if k > 0.0 { (k as u64).min(n - 1) } else { 0 }
-        };
-        (index(p.x, self.origin.x, self.columns), index(p.y, self.origin.y, self.rows))
-    }
-
-    /// The key of the cell holding `p`.
-    fn cell(&self, p: Point) -> u64 {
-        let (x, y) = self.coordinates(p);
-        y * self.columns + x
-    }
+    let Ok(()) = index.try_for_each_close_pair(&boxes, |i, j| -> Result<(), Infallible> {
+        visit(&edges[i], &edges[j]);
+        Ok(())
+    });
 }
 
 /// True when `p` is on `e` (exactly, when `snap` is 0) or within `snap` of it.

@@ -109,7 +109,7 @@ fn test_point(points: &[Point], i: usize) -> Point {
 
 /// True when a point of `rings[hole]` off every other ring (an edge's midpoint, else a vertex:
 /// [`test_point`]) has a winding number of 1 or more in them: the hole lies inside an outer.
-/// False when every such point lies on another ring (the repair's sweep then decides). Exact
+/// False when every such point lies on another ring (the snap fallback's sweep then decides). Exact
 /// for the point tested. The reference for [`HeldTest`], which asks the same for all holes at
 /// once; the tests hold the two against each other. `boxes` are the rings' bounds.
 #[cfg(test)]

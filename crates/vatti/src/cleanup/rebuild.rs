@@ -11,10 +11,10 @@ use super::simple_loops::split_repeats;
 use super::touches::Touches;
 use crate::raw_rings::RawRings;
 
-/// Rebuilds the touched rings of `rings` into simple rings, handed to `emit` as points (in the
-/// order of the edges they start from); returns whether two of their edges leave or arrive at
+/// Rebuilds the touched rings of `rings` into simple rings, handed to `emit` as ids of
+/// `touches.distinct` and as points (in the order of the edges they start from); returns whether two of their edges leave or arrive at
 /// one point in the same direction.
-pub(crate) fn rebuild(rings: &RawRings, touches: &Touches, emit: &mut impl FnMut(&[Point])) -> SameWay {
+pub(crate) fn rebuild(rings: &RawRings, touches: &Touches, emit: &mut impl FnMut(&[u32], &[Point])) -> SameWay {
     let Touches { touched, splits, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let inside: usize = splits.iter().map(|s| s.inside.len()).sum();
@@ -107,7 +107,7 @@ pub(crate) fn rebuild(rings: &RawRings, touches: &Touches, emit: &mut impl FnMut
         split_repeats(&walk, &mut slot, &mut stack, &mut |ring: &[u32]| {
             points.clear();
             points.extend(ring.iter().map(|&i| pts[i as usize]));
-            emit(&points);
+            emit(ring, &points);
         });
     }
     same_way

@@ -1,6 +1,6 @@
 //! Edges of the rebuild that leave or arrive at one point in the same direction: they overlap
 //! along the shorter one, running the same way, so two rings' insides overlap there or a hole
-//! pokes out of its outer. The rebuild reports it as a broken form, for the repair to join.
+//! pokes out of its outer. The rebuild reports it as a broken form, for the snap fallback to replace.
 
 use clip_core::Point;
 

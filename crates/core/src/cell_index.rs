@@ -1,0 +1,282 @@
+//! A sparse uniform grid of boxes, for finding the boxes that meet without testing every pair.
+//!
+//! Shared by the oracle's form check (pairs of output edges) and the snap-rounding noder (pairs
+//! of input edges, and the hot pixels each edge meets). Cost: near linear when the boxes are
+//! small beside their extent; a box covers every cell it spans, so many long boxes sharing cells
+//! (nested squares, combs, long near-parallel edges) make it quadratic.
+
+use crate::{Point, Rect};
+
+/// Boxes binned into a uniform grid whose square cells are about as large as a typical box,
+/// kept sparse as sorted (cell, box) entries: every cell a box covers lists it.
+#[derive(Clone, Debug)]
+pub struct CellIndex {
+    origin: Point,
+    size: f64,
+    columns: u64,
+    rows: u64,
+    /// (cell key, box index), sorted.
+    entries: Vec<(u64, u32)>,
+}
+
+impl CellIndex {
+    /// The index of `boxes`, or `None` when there are none. Cells start at the median box's
+    /// larger side and double until the boxes cover at most eight cells each on average (a few
+    /// long boxes among many small ones must not cover millions).
+    pub fn new(boxes: &[Rect]) -> Option<CellIndex> {
+        let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
+        if b.is_empty() {
+            return None;
+        }
+        let mut sides: Vec<f64> = boxes.iter().map(|r| r.width().max(r.height())).collect();
+        let middle = sides.len() / 2;
+        let median = *sides.select_nth_unstable_by(middle, f64::total_cmp).1;
+        let mut size = median.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
+        loop {
+            let covered: f64 =
+                boxes.iter().map(|r| ((r.width() / size).floor() + 2.0) * ((r.height() / size).floor() + 2.0)).sum();
+            if covered <= 8.0 * boxes.len() as f64 || !size.is_finite() {
+                break;
+            }
+            size *= 2.0;
+        }
+        CellIndex::with_cell_size(boxes, size)
+    }
+
+    /// The index of `boxes` on cells of side `size` (at least 1/65536 of their extent), or `None`
+    /// when there are none. For boxes looked up by others of another scale: the hot pixels of
+    /// snap rounding, tiny squares, are found by the edges that meet them, on cells sized like
+    /// the edges (cells the size of a pixel would make every long edge walk millions of them).
+    pub fn with_cell_size(boxes: &[Rect], size: f64) -> Option<CellIndex> {
+        let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
+        if b.is_empty() {
+            return None;
+        }
+        let size = size.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
+        let count = |span: f64| ((span / size).floor() as u64).saturating_add(1);
+        let mut index =
+            CellIndex { origin: b.min, size, columns: count(b.width()), rows: count(b.height()), entries: Vec::new() };
+        let mut entries = Vec::with_capacity(2 * boxes.len());
+        for (i, r) in boxes.iter().enumerate() {
+            let ((x0, y0), (x1, y1)) = (index.coordinates(r.min), index.coordinates(r.max));
+            for y in y0..=y1 {
+                entries.extend((x0..=x1).map(|x| (y * index.columns + x, i as u32)));
+            }
+        }
+        entries.sort_unstable();
+        index.entries = entries;
+        Some(index)
+    }
+
+    /// The side of the cells.
+    pub fn cell_size(&self) -> f64 {
+        self.size
+    }
+
+    /// The (cell key, box index) entries, sorted by cell: one per cell a box covers.
+    pub fn entries(&self) -> &[(u64, u32)] {
+        &self.entries
+    }
+
+    /// The column and row holding `p` (clamped to the grid).
+    fn coordinates(&self, p: Point) -> (u64, u64) {
+        let index = |v: f64, lo: f64, n: u64| {
+            let k = ((v - lo) / self.size).floor();
+            if k > 0.0 { (k as u64).min(n - 1) } else { 0 }
+        };
+        (index(p.x, self.origin.x, self.columns), index(p.y, self.origin.y, self.rows))
+    }
+
+    /// The key of the cell holding `p` (clamped to the grid).
+    pub fn cell(&self, p: Point) -> u64 {
+        let (x, y) = self.coordinates(p);
+        y * self.columns + x
+    }
+
+    /// The boxes listed in the cell holding `p`.
+    pub fn at(&self, p: Point) -> impl Iterator<Item = usize> + '_ {
+        let key = self.cell(p);
+        let start = self.entries.partition_point(|e| e.0 < key);
+        self.entries[start..].iter().take_while(move |e| e.0 == key).map(|e| e.1 as usize)
+    }
+
+    /// Calls `visit(i, j)` (i before j in a cell's list) once on every pair of the indexed
+    /// `boxes` that meet, in the one cell that holds the lower-left corner of their overlap;
+    /// stops at the first error.
+    pub fn try_for_each_close_pair<E>(
+        &self,
+        boxes: &[Rect],
+        mut visit: impl FnMut(usize, usize) -> Result<(), E>,
+    ) -> Result<(), E> {
+        for members in self.entries.chunk_by(|a, b| a.0 == b.0) {
+            for (k, &(cell, i)) in members.iter().enumerate() {
+                let e = &boxes[i as usize];
+                for &(_, j) in &members[k + 1..] {
+                    let f = &boxes[j as usize];
+                    if !e.intersects(f) {
+                        continue;
+                    }
+                    let corner = Point::new(e.min.x.max(f.min.x), e.min.y.max(f.min.y));
+                    if self.cell(corner) == cell {
+                        visit(i as usize, j as usize)?;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Calls `visit(i)` once on every indexed box of `boxes` that meets `query`. Walks the cells
+    /// `query` covers, or every entry when that is fewer.
+    pub fn for_each_meeting(&self, boxes: &[Rect], query: &Rect, mut visit: impl FnMut(usize)) {
+        if query.is_empty() {
+            return;
+        }
+        let ((x0, y0), (x1, y1)) = (self.coordinates(query.min), self.coordinates(query.max));
+        let cells = (x1 - x0 + 1).saturating_mul(y1 - y0 + 1);
+        if cells as usize >= self.entries.len() {
+            // Every box once: entries of one box are never adjacent across cells, so mark them.
+            let mut seen = vec![false; boxes.len()];
+            for &(_, i) in &self.entries {
+                let i = i as usize;
+                if !seen[i] && boxes[i].intersects(query) {
+                    seen[i] = true;
+                    visit(i);
+                }
+            }
+            return;
+        }
+        for y in y0..=y1 {
+            let (from, to) = (y * self.columns + x0, y * self.columns + x1);
+            let start = self.entries.partition_point(|e| e.0 < from);
+            for &(cell, i) in self.entries[start..].iter().take_while(|e| e.0 <= to) {
+                let b = &boxes[i as usize];
+                if !b.intersects(query) {
+                    continue;
+                }
+                let corner = Point::new(b.min.x.max(query.min.x), b.min.y.max(query.min.y));
+                if self.cell(corner) == cell {
+                    visit(i as usize);
+                }
+            }
+        }
+    }
+}
+
+impl CellIndex {
+    /// Calls `visit(i)` on every indexed box of `boxes` that meets the segment `a`–`b` widened
+    /// by `margin` (and on some others; a box can be visited more than once). Walks the rows of
+    /// cells the segment crosses, in each only the columns its stretch there covers: a long
+    /// diagonal edge looks at cells along it, not at every cell of its box.
+    pub fn for_each_near_segment(&self, boxes: &[Rect], a: Point, b: Point, margin: f64, mut visit: impl FnMut(usize)) {
+        // Rounding of the line's x, of the rows' heights and of the cell of a point: a few ulps
+        // of the largest coordinate involved, covered many times over.
+        let extent = (self.columns + self.rows) as f64 * self.size;
+        let scale = [a.x, a.y, b.x, b.y, self.origin.x, self.origin.y].iter().fold(extent, |m, v| m.max(v.abs()));
+        let margin = margin + 16.0 * f64::EPSILON * scale;
+        let reach =
+            Rect::new(a.x.min(b.x) - margin, a.y.min(b.y) - margin, a.x.max(b.x) + margin, a.y.max(b.y) + margin);
+        if reach.is_empty() {
+            return;
+        }
+        let ((_, y0), (_, y1)) = (self.coordinates(reach.min), self.coordinates(reach.max));
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        // The x of the segment's line at height y, to within 8 ulps of `scale`.
+        let x_at = |y: f64| a.x + (y - a.y) / dy * dx;
+        for row in y0..=y1 {
+            let (bottom, top) = (self.origin.y + row as f64 * self.size, self.origin.y + (row + 1) as f64 * self.size);
+            let (lo, hi) = (reach.min.y.max(bottom - margin), reach.max.y.min(top + margin));
+            let (mut left, mut right) = (reach.min.x, reach.max.x);
+            if dy != 0.0 && lo <= hi {
+                let (p, q) = (x_at(lo.max(a.y.min(b.y))), x_at(hi.min(a.y.max(b.y))));
+                left = left.max(p.min(q) - margin);
+                right = right.min(p.max(q) + margin);
+            }
+            let stretch = Rect::new(left, lo, right, hi);
+            if stretch.is_empty() {
+                continue;
+            }
+            let ((x0, _), (x1, _)) = (self.coordinates(stretch.min), self.coordinates(stretch.max));
+            let (from, to) = (row * self.columns + x0, row * self.columns + x1);
+            let start = self.entries.partition_point(|e| e.0 < from);
+            for &(_, i) in self.entries[start..].iter().take_while(|e| e.0 <= to) {
+                if boxes[i as usize].intersects(&stretch) {
+                    visit(i as usize);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn segment_walks_find_every_box_the_segment_passes_through() {
+        // Small squares on a lattice, and long and short segments every way: a square holding a
+        // point of the segment is visited, and a long diagonal skips squares far from it.
+        let mut boxes = Vec::new();
+        for k in 0..900 {
+            let (x, y) = (f64::from(k % 30) * 0.37, f64::from(k / 30) * 0.41);
+            boxes.push(Rect::new(x, y, x + 0.05, y + 0.05));
+        }
+        let index = CellIndex::with_cell_size(&boxes, 0.3).expect("boxes");
+        let ends = [(0.0, 0.0), (11.0, 12.0), (3.0, 0.2), (3.0, 9.0), (10.9, 0.1), (5.55, 5.55)];
+        for &(ax, ay) in &ends {
+            for &(bx, by) in &ends {
+                let (a, b) = (Point::new(ax, ay), Point::new(bx, by));
+                let mut seen = vec![false; boxes.len()];
+                index.for_each_near_segment(&boxes, a, b, 0.0, |i| seen[i] = true);
+                for t in 0..=500 {
+                    let p = a + (b - a) * (f64::from(t) / 500.0);
+                    for (i, r) in boxes.iter().enumerate() {
+                        assert!(!r.contains(p) || seen[i], "{a:?}-{b:?}: {r:?} holds {p:?}");
+                    }
+                }
+                if (ax, ay, bx, by) == (0.0, 0.0, 11.0, 12.0) {
+                    assert!(seen.iter().filter(|&&v| v).count() < boxes.len() / 4);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn close_pairs_and_queries_match_brute_force() {
+        // Small and long boxes mixed, on a grid with touching neighbours.
+        let mut boxes = Vec::new();
+        for k in 0..40 {
+            let (x, y) = (f64::from(k % 7) * 1.5, f64::from(k / 7) * 1.25);
+            boxes.push(Rect::new(x, y, x + 1.5, y + 0.5));
+        }
+        boxes.push(Rect::new(-3.0, 2.0, 30.0, 2.1));
+        boxes.push(Rect::new(4.0, -1.0, 4.2, 9.0));
+        let index = CellIndex::new(&boxes).expect("boxes");
+        let mut found = Vec::new();
+        index
+            .try_for_each_close_pair::<()>(&boxes, |i, j| {
+                found.push((i.min(j), i.max(j)));
+                Ok(())
+            })
+            .unwrap();
+        found.sort_unstable();
+        let mut expected = Vec::new();
+        for i in 0..boxes.len() {
+            for j in i + 1..boxes.len() {
+                if boxes[i].intersects(&boxes[j]) {
+                    expected.push((i, j));
+                }
+            }
+        }
+        assert_eq!(found, expected);
+        for query in
+            [Rect::new(2.0, 1.0, 5.0, 3.0), Rect::new(-100.0, -100.0, 100.0, 100.0), Rect::new(9.0, 9.0, 9.0, 9.0)]
+        {
+            let mut met = Vec::new();
+            index.for_each_meeting(&boxes, &query, |i| met.push(i));
+            met.sort_unstable();
+            let expected: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i].intersects(&query)).collect();
+            assert_eq!(met, expected, "{query:?}");
+        }
+    }
+}

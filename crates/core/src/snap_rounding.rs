@@ -1,0 +1,431 @@
+//! Snap rounding: two operands' rings noded on a grid, so that their edges meet only at shared
+//! vertices.
+//!
+//! J. D. Hobby, *Practical segment intersection with finite precision output*, Computational
+//! Geometry: Theory and Applications 13(4):199-214, 1999 (GEOS OverlayNG's `SnapRoundingNoder`
+//! and `HotPixel` are built the same way). The plane is tiled by pixels of side `s`, a power of
+//! two; the pixel of centre `c` is the half-open square `[c.x - s/2, c.x + s/2) × [c.y - s/2,
+//! c.y + s/2)`. A pixel is hot when it holds an input vertex or the exact crossing point of two
+//! input edges. Every edge is then replaced by the path through the centres of the hot pixels it
+//! meets, in order along it. Hobby's theorem: no two of the resulting edges cross, and (since a
+//! pixel between two hot pixels along an output edge is met by the input edge too) no output
+//! vertex lies inside an output edge: output edges meet only at shared end points, or coincide.
+//! Every output vertex is the centre of a pixel its input edge meets, so it lies within `s·√2/2`
+//! of that edge (and of its input vertex, for a vertex's own pixel).
+//!
+//! Every decision is exact: whether an edge meets a pixel (the box test and the orientation of
+//! the pixel's corners against the edge, with the open sides moved in by a symbolic ε), which
+//! pixel holds a crossing ([`predicates::crossing_coordinate_cmp`], after a filtered estimate),
+//! and the order of the pixels along an edge (by column in the edge's x direction, then row in
+//! its y direction: no float projection, which would tie on nearly vertical edges). Grid points
+//! are multiples of `s`, exact in f64 within 2^51 pixels of the origin (farther coordinates
+//! are refused).
+//!
+//! Limits. The topology can change by up to a pixel: features narrower than a pixel collapse
+//! (rings can become spikes or touch themselves; rings left with fewer than three distinct points
+//! or all on one line are dropped), and a vertex can end up within `s·√2/2` of an edge it was not
+//! near. Finding pairs of edges and the pixels an edge meets goes through a [`CellIndex`]: near
+//! linear when edges are short beside the extent, quadratic when many long edges share cells
+//! (long nearly coincident edges each meeting many pixels). That is acceptable for a fallback run
+//! only where a faster path's output was broken, which is what it is for.
+
+use crate::predicates::{self, Orientation, accurate_crossing_point, crossing_coordinate_cmp, orient};
+use crate::{CellIndex, ClipError, Operand, Point, Polygons, Rect, Ring, Segment, SegmentIntersection};
+
+/// A pixel, as its column and row: its centre is `(column·s, row·s)`.
+type Pixel = (i64, i64);
+
+/// Both operands' rings snap rounded to pixels of side `pixel` (a power of two): the subject's
+/// rings, then the clip's, each without the rings the rounding leaves with fewer than three
+/// distinct points or all on one line. Edges of the result (of both operands together) meet only
+/// at shared end points or coincide; every vertex is a multiple of `pixel`, within `pixel·√2/2`
+/// of the input edge it comes from.
+pub fn snap_round(subject: &Polygons, clip: &Polygons, pixel: f64) -> Result<(Polygons, Polygons), ClipError> {
+    if !(pixel.is_normal() && pixel > 0.0 && pixel.to_bits() & ((1u64 << 52) - 1) == 0) {
+        return Err(ClipError::InvalidPixel { value: pixel });
+    }
+    for (operand, polygons) in [(Operand::Subject, subject), (Operand::Clip, clip)] {
+        check_on_grid(operand, polygons, pixel)?;
+    }
+    let rings: Vec<&Ring> = subject.rings.iter().chain(&clip.rings).collect();
+    let mut snapped = snap_rings(&rings, pixel).into_iter();
+    let mut take = |n: usize| Polygons::new(snapped.by_ref().take(n).flatten().map(Ring::new).collect());
+    let a = take(subject.rings.len());
+    let b = take(clip.rings.len());
+    Ok((a, b))
+}
+
+/// Every coordinate finite and within 2^51 pixels of the origin, where the pixel's centre and
+/// borders are exact.
+fn check_on_grid(operand: Operand, polygons: &Polygons, pixel: f64) -> Result<(), ClipError> {
+    let limit = pixel * 2f64.powi(51);
+    for (part, ring) in polygons.rings.iter().enumerate() {
+        for (vertex, p) in ring.points.iter().enumerate() {
+            if !p.is_finite() {
+                return Err(ClipError::NonFinite { operand, part, vertex, x: p.x, y: p.y });
+            }
+            if let Some(value) = [p.x, p.y].into_iter().find(|v| v.abs() >= limit) {
+                return Err(ClipError::BeyondGrid { operand, part, vertex, value, pixel });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The snap-rounded points of each ring (finite, on the grid's range), `None` for a ring left
+/// with fewer than three distinct points or all on one line.
+fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
+    let segments: Vec<Segment> = rings.iter().flat_map(|r| r.edges()).collect();
+    let (hot, cell_size) = hot_pixels(&segments, s);
+    let squares: Vec<Rect> = hot.iter().map(|&p| square(p, s)).collect();
+    // Cells a fraction of the edges' (which each cover a few): an edge walks the cells along it
+    // (a row at a time), so finer cells mean fewer pixels beside it to test.
+    let index = cell_size.and_then(|size| CellIndex::with_cell_size(&squares, size / 8.0));
+    let mut met = Vec::new();
+    let mut next = 0;
+    rings
+        .iter()
+        .map(|ring| {
+            let mut out: Vec<Point> = Vec::with_capacity(ring.len());
+            for segment in &segments[next..next + ring.len()] {
+                met.clear();
+                if let Some(index) = &index {
+                    index.for_each_near_segment(&squares, segment.a, segment.b, 0.0, |k| {
+                        if meets_pixel(*segment, hot[k], s) {
+                            met.push(hot[k]);
+                        }
+                    });
+                }
+                order_along(&mut met, *segment);
+                for &p in &met {
+                    let c = centre(p, s);
+                    if out.last() != Some(&c) {
+                        out.push(c);
+                    }
+                }
+            }
+            next += ring.len();
+            while out.len() > 1 && out.first() == out.last() {
+                out.pop();
+            }
+            has_area(&out).then_some(out)
+        })
+        .collect()
+}
+
+/// The pixels holding an input vertex or the exact crossing point of two input edges, each once,
+/// and the cell size of the edges' index (`None` without edges).
+fn hot_pixels(segments: &[Segment], s: f64) -> (Vec<Pixel>, Option<f64>) {
+    let mut hot: Vec<Pixel> = segments.iter().map(|e| pixel_of(e.a, s)).collect();
+    let boxes: Vec<Rect> = segments.iter().map(Segment::bounds).collect();
+    let index = CellIndex::new(&boxes);
+    if let Some(index) = &index {
+        let _ = index.try_for_each_close_pair::<()>(&boxes, |i, j| {
+            // Touching points and overlaps end at input vertices, whose pixels are hot already.
+            if let SegmentIntersection::Crossing(_) = predicates::segment_intersection(segments[i], segments[j]) {
+                hot.push(crossing_pixel(segments[i], segments[j], s));
+            }
+            Ok(())
+        });
+    }
+    hot.sort_unstable();
+    hot.dedup();
+    (hot, index.map(|i| i.cell_size()))
+}
+
+/// The pixel holding `p`: half-open, so a point on a border belongs to the pixel above or right.
+/// Exact: `p / s` is exact (a power of two), and adding a half is exact below 2^52.
+fn pixel_of(p: Point, s: f64) -> Pixel {
+    ((p.x / s + 0.5).floor() as i64, (p.y / s + 0.5).floor() as i64)
+}
+
+fn centre(p: Pixel, s: f64) -> Point {
+    Point::new(p.0 as f64 * s, p.1 as f64 * s)
+}
+
+/// The closed square of a pixel, for the index.
+fn square(p: Pixel, s: f64) -> Rect {
+    let (x, y) = (p.0 as f64, p.1 as f64);
+    Rect::new((x - 0.5) * s, (y - 0.5) * s, (x + 0.5) * s, (y + 0.5) * s)
+}
+
+/// The pixel holding the exact crossing point of `e` and `f` (whose interiors cross): the pixel
+/// of an estimate, moved a pixel at a time while the exact crossing lies beyond one of its
+/// borders. Where the crossing's quotients are exact in f64 (grids), each border is decided by
+/// one division ([`predicates::quotient_cmp`]); else borders farther from the estimate than its
+/// error bound are decided by the estimate, and the rest exactly.
+fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
+    let quotients = predicates::exact_crossing_quotients(e, f);
+    let estimate = match quotients {
+        Some((nx, ny, d)) => Point::new(e.a.x + nx / d, e.a.y + ny / d),
+        None => accurate_crossing_point(e, f),
+    };
+    let mut pixel = pixel_of(estimate, s);
+    for along_y in [false, true] {
+        let (at, span, base) =
+            if along_y { (estimate.y, e.b.y - e.a.y, e.a.y) } else { (estimate.x, e.b.x - e.a.x, e.a.x) };
+        let error = 16.0 * f64::EPSILON * span.abs() + 2.0 * f64::EPSILON * at.abs() + f64::MIN_POSITIVE;
+        let below = |m: f64| {
+            if let Some((nx, ny, d)) = quotients
+                && let Some(order) = predicates::quotient_cmp(if along_y { ny } else { nx }, d, base, m)
+            {
+                return order.is_lt();
+            }
+            if at - m > error {
+                false
+            } else if m - at > error {
+                true
+            } else {
+                crossing_coordinate_cmp(e, f, along_y, m).is_lt()
+            }
+        };
+        let k = if along_y { &mut pixel.1 } else { &mut pixel.0 };
+        // The exact crossing lies in the segment's box, within 2^51 pixels: this ends.
+        loop {
+            if below((*k as f64 - 0.5) * s) {
+                *k -= 1;
+            } else if !below((*k as f64 + 0.5) * s) {
+                *k += 1;
+            } else {
+                break;
+            }
+        }
+    }
+    pixel
+}
+
+/// Whether the closed segment `e` meets the half-open pixel `p`, exactly: their boxes meet (the
+/// open sides strictly), and the pixel's corners are not all on one side of `e`'s line. The
+/// corners on the open sides are moved in by infinitesimals (x's far larger than y's), so a
+/// line through such a corner is judged by the side the corner moves to. The side is linear
+/// over the (shrunk) square, so its two corners farthest either way along the line's normal
+/// decide: the other two lie between them.
+fn meets_pixel(e: Segment, p: Pixel, s: f64) -> bool {
+    let (x, y) = (p.0 as f64, p.1 as f64);
+    let (x0, x1, y0, y1) = ((x - 0.5) * s, (x + 0.5) * s, (y - 0.5) * s, (y + 0.5) * s);
+    let b = e.bounds();
+    if b.max.x < x0 || b.min.x >= x1 || b.max.y < y0 || b.min.y >= y1 {
+        return false;
+    }
+    if e.a == e.b {
+        return true;
+    }
+    let (dx, dy) = (e.b.x - e.a.x, e.b.y - e.a.y);
+    // The sign of orient(a, b, c - (εx, εy)): the exact sign, else εx·dy - εy·dx's.
+    let side = |c: Point, moved_x: bool, moved_y: bool| -> i32 {
+        let o = orient(e.a, e.b, c);
+        if o != Orientation::Collinear {
+            return o.sign();
+        }
+        if moved_x && dy != 0.0 {
+            return if dy > 0.0 { 1 } else { -1 };
+        }
+        if moved_y && dx != 0.0 {
+            return if dx > 0.0 { -1 } else { 1 };
+        }
+        0
+    };
+    // orient(a, b, c) = dx·(c.y - a.y) - dy·(c.x - a.x): largest at this corner, least at the
+    // opposite one.
+    let (high_x, high_y) = (dy <= 0.0, dx > 0.0);
+    let corner =
+        |right: bool, top: bool| side(Point::new(if right { x1 } else { x0 }, if top { y1 } else { y0 }), right, top);
+    let (most, least) = (corner(high_x, high_y), corner(!high_x, !high_y));
+    !((most > 0 && least > 0) || (most < 0 && least < 0))
+}
+
+/// Sorts the pixels an edge meets into their order along it: by column in its x direction, then
+/// by row in its y direction (along an edge both are monotone), and drops repeats.
+fn order_along(pixels: &mut Vec<Pixel>, e: Segment) {
+    let sx = if e.b.x >= e.a.x { 1 } else { -1 };
+    let sy = if e.b.y >= e.a.y { 1 } else { -1 };
+    pixels.sort_unstable_by_key(|p| (sx * p.0, sy * p.1));
+    pixels.dedup();
+}
+
+/// At least three distinct points, not all on one line.
+fn has_area(points: &[Point]) -> bool {
+    let Some(&a) = points.first() else { return false };
+    let Some(&b) = points.iter().find(|&&p| p != a) else { return false };
+    points.iter().any(|&c| orient(a, b, c) != Orientation::Collinear)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A small xorshift generator: seeded, so every failure reproduces.
+    struct Rng(u64);
+
+    impl Rng {
+        fn next(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    fn ring(points: &[(f64, f64)]) -> Ring {
+        Ring::new(points.iter().map(|&(x, y)| Point::new(x, y)).collect())
+    }
+
+    fn random_ring(rng: &mut Rng, n: usize, scale: f64) -> Ring {
+        Ring::new((0..n).map(|_| Point::new(rng.next() * scale, rng.next() * scale)).collect())
+    }
+
+    /// (a): no two output edges cross, and no output vertex lies inside an output edge (they
+    /// meet only at shared end points, or coincide). Brute force, exact.
+    fn assert_noded(out: &[&Polygons]) {
+        let edges: Vec<Segment> = out.iter().flat_map(|p| p.edges()).filter(|e| e.a != e.b).collect();
+        for (i, &e) in edges.iter().enumerate() {
+            for &f in &edges[i + 1..] {
+                match predicates::segment_intersection(e, f) {
+                    SegmentIntersection::Crossing(p) => panic!("{e:?} crosses {f:?} near {p:?}"),
+                    SegmentIntersection::Touching(p) => {
+                        let ends = [e.a, e.b, f.a, f.b];
+                        assert!(
+                            (p == e.a || p == e.b) && (p == f.a || p == f.b),
+                            "{e:?} and {f:?} touch at {p:?}, inside one of them ({ends:?})"
+                        );
+                    }
+                    SegmentIntersection::Overlap(_) => {
+                        let same = (e.a == f.a && e.b == f.b) || (e.a == f.b && e.b == f.a);
+                        assert!(same, "{e:?} and {f:?} overlap without coinciding");
+                    }
+                    SegmentIntersection::None => {}
+                }
+            }
+        }
+    }
+
+    /// (b) and (c): every output vertex a multiple of `s`, within s·√2/2 of an edge of the input
+    /// ring it came from (`snap_rings` keeps ring order).
+    fn assert_near_inputs(rings: &[&Ring], snapped: &[Option<Vec<Point>>], s: f64) {
+        let reach = s * std::f64::consts::SQRT_2 / 2.0 * (1.0 + 1e-12);
+        for (ring, out) in rings.iter().zip(snapped) {
+            for &p in out.iter().flatten() {
+                assert!(p.x % s == 0.0 && p.y % s == 0.0, "{p:?} off the grid of {s:e}");
+                let near = ring.edges().any(|e| distance_to_segment(p, e) <= reach);
+                assert!(near, "{p:?} farther than s·√2/2 from its ring");
+            }
+        }
+    }
+
+    fn distance_to_segment(p: Point, e: Segment) -> f64 {
+        let d = e.b - e.a;
+        let len2 = d.dot(d);
+        let t = if len2 > 0.0 { ((p - e.a).dot(d) / len2).clamp(0.0, 1.0) } else { 0.0 };
+        p.distance(e.at(t))
+    }
+
+    /// Snap rounds both operands and checks (a), (b) and (c).
+    fn check(subject: &Polygons, clip: &Polygons, s: f64) -> (Polygons, Polygons) {
+        let rings: Vec<&Ring> = subject.rings.iter().chain(&clip.rings).collect();
+        assert_near_inputs(&rings, &snap_rings(&rings, s), s);
+        let (a, b) = snap_round(subject, clip, s).expect("valid input");
+        assert_noded(&[&a, &b]);
+        (a, b)
+    }
+
+    #[test]
+    fn random_rings_are_noded_on_the_grid_near_their_inputs() {
+        for seed in 1..=60u64 {
+            let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+            let n = 3 + seed as usize % 9;
+            let subject = Polygons::new(vec![random_ring(&mut rng, n, 1.0), random_ring(&mut rng, 4, 1.0)]);
+            let clip = Polygons::new(vec![random_ring(&mut rng, n + 2, 1.0)]);
+            // A coarse grid collapses and reroutes a lot; a fine one is the vatti fallback's.
+            for s in [2f64.powi(-3), 2f64.powi(-6), 2f64.powi(-50)] {
+                check(&subject, &clip, s);
+            }
+        }
+    }
+
+    #[test]
+    fn an_edge_and_a_copy_turned_by_1e_16_are_noded() {
+        let turned = |x: f64, y: f64, angle: f64| {
+            let (sin, cos) = angle.sin_cos();
+            (x * cos - y * sin, x * sin + y * cos)
+        };
+        for angle in [1e-16, -1e-16, 3e-16, 1e-15] {
+            let square = [(0.1, 0.2), (0.9, 0.25), (0.95, 0.8), (0.15, 0.7)];
+            let copy: Vec<(f64, f64)> = square.iter().map(|&(x, y)| turned(x, y, angle)).collect();
+            let subject = Polygons::new(vec![ring(&square)]);
+            let clip = Polygons::new(vec![ring(&copy)]);
+            // Nearly coincident edges cross somewhere along them: the crossings must be hot.
+            let crossings = subject
+                .edges()
+                .flat_map(|e| clip.edges().map(move |f| (e, f)))
+                .filter(|&(e, f)| matches!(predicates::segment_intersection(e, f), SegmentIntersection::Crossing(_)))
+                .count();
+            assert!(crossings > 0, "angle {angle:e}: the copy does not cross the square");
+            let s = 2f64.powi(-51);
+            let (a, b) = check(&subject, &clip, s);
+            assert_eq!((a.rings.len(), b.rings.len()), (1, 1));
+        }
+    }
+
+    #[test]
+    fn a_vertex_2_ulps_off_an_edge_is_noded() {
+        let ulp = f64::EPSILON / 2.0;
+        for offset in [2.0 * ulp, -2.0 * ulp, ulp] {
+            let subject = Polygons::new(vec![ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)])]);
+            // A triangle whose apex is `offset` off the diagonal's middle.
+            let clip = Polygons::new(vec![ring(&[(0.75, 0.25), (0.5 + offset, 0.5), (0.25, 0.75), (0.2, 0.2)])]);
+            for s in [2f64.powi(-50), 2f64.powi(-48)] {
+                check(&subject, &clip, s);
+            }
+        }
+    }
+
+    #[test]
+    fn grid_input_without_crossings_comes_back_unchanged() {
+        let s = 0.25;
+        let subject = Polygons::new(vec![
+            ring(&[(0.0, 0.0), (4.0, 0.0), (4.0, 3.0), (0.0, 3.0)]),
+            ring(&[(1.0, 1.0), (1.0, 2.0), (2.0, 1.0)]),
+        ]);
+        // Touching the subject along an edge and at a vertex, crossing nothing.
+        let clip = Polygons::new(vec![ring(&[(4.0, 0.0), (6.0, 0.0), (5.0, 2.0), (4.0, 3.0)])]);
+        let (a, b) = snap_round(&subject, &clip, s).expect("valid input");
+        assert_eq!((a, b), (subject.clone(), clip.clone()));
+        // Crossing edges do change: the crossing becomes a vertex of both.
+        let crossing = Polygons::new(vec![ring(&[(-1.0, 1.5), (1.0, 1.5), (0.0, 5.0)])]);
+        let (a, b) = snap_round(&subject, &crossing, s).expect("valid input");
+        assert_noded(&[&a, &b]);
+        assert_ne!(a, subject);
+        assert_eq!(a.rings[0].distinct_points(), 6);
+    }
+
+    #[test]
+    fn bad_pixels_and_far_coordinates_are_refused() {
+        let square = Polygons::new(vec![ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)])]);
+        for pixel in [0.0, -0.5, 0.3, f64::NAN, f64::INFINITY, f64::MIN_POSITIVE / 4.0] {
+            assert!(matches!(snap_round(&square, &square, pixel), Err(ClipError::InvalidPixel { .. })), "{pixel}");
+        }
+        let far = Polygons::new(vec![ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 2f64.powi(60))])]);
+        let e = snap_round(&square, &far, 2f64.powi(-4)).unwrap_err();
+        assert!(matches!(e, ClipError::BeyondGrid { operand: Operand::Clip, part: 0, vertex: 2, .. }), "{e}");
+        let nan = Polygons::new(vec![ring(&[(0.0, 0.0), (f64::NAN, 0.0), (1.0, 1.0)])]);
+        let e = snap_round(&nan, &square, 1.0).unwrap_err();
+        assert!(matches!(e, ClipError::NonFinite { operand: Operand::Subject, vertex: 1, .. }), "{e}");
+    }
+
+    #[test]
+    fn pixel_membership_is_half_open() {
+        let s = 1.0;
+        // A horizontal edge along the top border belongs to the pixel above only.
+        let top = Segment::new(Point::new(-3.0, 0.5), Point::new(3.0, 0.5));
+        assert!(!meets_pixel(top, (0, 0), s) && meets_pixel(top, (0, 1), s));
+        // A diagonal through the pixel's top-right corner only meets it there: not in it.
+        let corner = Segment::new(Point::new(0.0, 1.0), Point::new(1.0, 0.0));
+        assert!(!meets_pixel(corner, (0, 0), s) && meets_pixel(corner, (1, 1), s));
+        let through = Segment::new(Point::new(-1.0, 2.0), Point::new(2.0, -1.0));
+        assert!(!meets_pixel(through, (0, 0), s));
+        assert!(meets_pixel(through, (1, 0), s) && meets_pixel(through, (0, 1), s));
+        // The bottom-left corner belongs to it.
+        let low = Segment::new(Point::new(-2.0, 1.0), Point::new(1.0, -2.0));
+        assert!(meets_pixel(low, (0, 0), s));
+    }
+}

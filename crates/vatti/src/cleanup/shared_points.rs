@@ -1,0 +1,161 @@
+//! Whether rings meet cleanly at the points they share: the form that a rebuild over retraced
+//! edges near rounding can break while every ring stays simple. Exact: comparisons of
+//! coordinates and orientation tests only.
+
+use std::cmp::Ordering;
+
+use clip_core::Point;
+
+use super::directions::counter_clockwise_from_east;
+
+/// True when the closed rings `ids[ends[r - 1]..ends[r]]` (ids of `pts`, none repeated in a
+/// row) do not meet cleanly at a point that two of them, or one twice, pass through.
+///
+/// They meet cleanly at such a point `v` when no ring passes it twice and, counter-clockwise
+/// round `v`, the ways out of it alternate between a ring's next vertex (the region on its
+/// counter-clockwise side) and a ring's previous vertex (the region on its clockwise side), no
+/// two point one way (edges overlapping), and no two passes interleave (their rings cross).
+/// Alternation alone is not enough: three rings can alternate and still cross. Linear in the
+/// passes, but for sorting the ways out of each shared point.
+pub(crate) fn cross_at_shared_points(pts: &[Point], ids: &[u32], ends: &[usize]) -> bool {
+    // Passes by point (compressed rows, in ring order): `at[row[v]..row[v + 1]]`.
+    let mut row = vec![0u32; pts.len() + 1];
+    for &v in ids {
+        row[v as usize + 1] += 1;
+    }
+    if row.iter().all(|&n| n < 2) {
+        return false;
+    }
+    for v in 0..pts.len() {
+        row[v + 1] += row[v];
+    }
+    let mut fill = row.clone();
+    let mut at = vec![0u32; ids.len()];
+    for (k, &v) in ids.iter().enumerate() {
+        at[fill[v as usize] as usize] = k as u32;
+        fill[v as usize] += 1;
+    }
+    drop(fill);
+    // Ring `r` is `ids[start[r]..ends[r]]`; `ring_of[k]` the ring of pass `k`.
+    let start = |r: usize| if r == 0 { 0 } else { ends[r - 1] };
+    let mut ring_of = vec![0u32; ids.len()];
+    for r in 0..ends.len() {
+        ring_of[start(r)..ends[r]].fill(r as u32);
+    }
+    // The ways out of one point: far end, pass, and whether it leaves along the ring.
+    let mut ways: Vec<(Point, u32, bool)> = Vec::new();
+    let mut open: Vec<u32> = Vec::new();
+    for v in 0..pts.len() {
+        let passes = &at[row[v] as usize..row[v + 1] as usize];
+        if passes.len() < 2 {
+            continue;
+        }
+        // Passes are in ring order: one ring passing twice has two in a row.
+        if passes.windows(2).any(|w| ring_of[w[0] as usize] == ring_of[w[1] as usize]) {
+            return true;
+        }
+        let pv = pts[v];
+        ways.clear();
+        for &k in passes {
+            let (k, r) = (k as usize, ring_of[k as usize] as usize);
+            let next = if k + 1 == ends[r] { start(r) } else { k + 1 };
+            let prev = if k == start(r) { ends[r] - 1 } else { k - 1 };
+            ways.push((pts[ids[next] as usize], k as u32, true));
+            ways.push((pts[ids[prev] as usize], k as u32, false));
+        }
+        ways.sort_unstable_by(|a, b| counter_clockwise_from_east(pv, a.0, b.0));
+        let one_way = |w: &[(Point, u32, bool)]| counter_clockwise_from_east(pv, w[0].0, w[1].0) == Ordering::Equal;
+        if ways.windows(2).any(|w| one_way(w) || w[0].2 == w[1].2) {
+            return true;
+        }
+        // A pass's two ways close it; another pass opened between them and not closed crosses it.
+        open.clear();
+        for &(_, pass, _) in &ways {
+            if open.last() == Some(&pass) {
+                open.pop();
+            } else {
+                open.push(pass);
+            }
+        }
+        if !open.is_empty() {
+            return true;
+        }
+    }
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rings as distinct points, their ids ring after ring, and where each ring ends.
+    fn flat(rings: &[&[(f64, f64)]]) -> (Vec<Point>, Vec<u32>, Vec<usize>) {
+        let (mut pts, mut ids, mut ends) = (Vec::new(), Vec::new(), Vec::new());
+        for r in rings {
+            for &(x, y) in *r {
+                let p = Point::new(x, y);
+                let id = pts.iter().position(|&q| q == p).unwrap_or_else(|| {
+                    pts.push(p);
+                    pts.len() - 1
+                });
+                ids.push(id as u32);
+            }
+            ends.push(ids.len());
+        }
+        (pts, ids, ends)
+    }
+
+    fn cross(rings: &[&[(f64, f64)]]) -> bool {
+        let (pts, ids, ends) = flat(rings);
+        cross_at_shared_points(&pts, &ids, &ends)
+    }
+
+    #[test]
+    fn rings_touching_at_a_corner_or_a_hole_on_its_outer_meet_cleanly() {
+        let a: &[(f64, f64)] = &[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+        let b: &[(f64, f64)] = &[(1.0, 1.0), (2.0, 1.0), (2.0, 2.0), (1.0, 2.0)];
+        assert!(!cross(&[a, b]));
+        // A clockwise hole touching its outer's bottom edge at a vertex of both, from inside.
+        let outer: &[(f64, f64)] = &[(0.0, 0.0), (2.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)];
+        let hole: &[(f64, f64)] = &[(2.0, 0.0), (1.0, 1.0), (3.0, 1.0)];
+        assert!(!cross(&[outer, hole]));
+        // Three squares round one point, each on its own quarter: clean.
+        let c: &[(f64, f64)] = &[(0.0, 0.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0)];
+        assert!(!cross(&[a, c, &[(0.0, 0.0), (-0.5, 1.0), (-1.0, 0.5)]]));
+        assert!(!cross(&[a]));
+    }
+
+    #[test]
+    fn rings_crossing_or_overlapping_at_a_shared_point_do_not() {
+        // Two counter-clockwise triangles through the origin whose wedges interleave.
+        let a: &[(f64, f64)] = &[(0.0, 0.0), (2.0, 1.0), (-2.0, 1.0)];
+        let b: &[(f64, f64)] = &[(0.0, 0.0), (1.0, -2.0), (1.0, 2.0)];
+        assert!(cross(&[a, b]));
+        // One counter-clockwise wedge inside another's: their insides overlap.
+        let wide: &[(f64, f64)] = &[(0.0, 0.0), (4.0, 0.0), (0.0, 4.0)];
+        let narrow: &[(f64, f64)] = &[(0.0, 0.0), (2.0, 1.0), (1.0, 2.0)];
+        assert!(cross(&[wide, narrow]));
+        // Two edges leaving the origin one way.
+        let along: &[(f64, f64)] = &[(0.0, 0.0), (2.0, 0.0), (2.0, -1.0)];
+        assert!(cross(&[wide, along]));
+        // One ring passing a point twice (a figure eight).
+        assert!(cross(&[&[(0.0, 0.0), (1.0, 1.0), (-1.0, 1.0), (0.0, 0.0), (-1.0, -1.0), (1.0, -1.0)]]));
+    }
+
+    #[test]
+    fn three_passes_alternating_round_a_point_can_still_cross() {
+        // Ways out of the origin counter-clockwise from east: a out, b back, c out, a back, b out,
+        // c back. They alternate, but a's two ways hold one of b's and one of c's between them.
+        let a: &[(f64, f64)] = &[(0.0, 0.0), (1.0, 0.0), (1.0, 2.0), (-1.0, 2.0), (-1.0, 0.5)];
+        let b: &[(f64, f64)] = &[(0.0, 0.0), (-1.0, -1.0), (1.0, -1.0), (1.0, 1.0)];
+        let c: &[(f64, f64)] = &[(0.0, 0.0), (-1.0, 1.0), (-1.5, 0.0), (0.5, -1.0)];
+        let v = Point::new(0.0, 0.0);
+        let p = |(x, y): (f64, f64)| Point::new(x, y);
+        let mut ways = vec![(p(a[1]), 'a', true), (p(a[4]), 'a', false), (p(b[1]), 'b', true), (p(b[3]), 'b', false)];
+        ways.extend([(p(c[1]), 'c', true), (p(c[3]), 'c', false)]);
+        ways.sort_by(|x, y| counter_clockwise_from_east(v, x.0, y.0));
+        let order: String = ways.iter().map(|w| if w.2 { w.1.to_ascii_uppercase() } else { w.1 }).collect();
+        assert_eq!(order, "AbCaBc", "the test's rings are not laid out as the comment says");
+        assert!(cross(&[a, b, c]));
+    }
+}
