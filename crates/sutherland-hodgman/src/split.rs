@@ -15,9 +15,11 @@
 //! and clockwise where `c < 0`, paired last-opened-first-closed; layers no endpoint opens or
 //! closes are whole window loops. So every winding number inside the window is kept (the output
 //! is the same region as Sutherland-Hodgman's, under any fill rule), and no walk runs against
-//! another: the bridges, which are runs covering a stretch both ways, cancel out. For a subject in
-//! conventional form `c` is 0 or 1, so the rings are simple, outers counter-clockwise and holes
-//! clockwise: the conventional output of docs/DESIGN.md.
+//! another: the bridges, which are runs covering a stretch both ways, cancel out. A chain vertex
+//! that touches the boundary between its ends splits the chain there, so a walk passing it closes
+//! one ring and opens the next: rings meet at such a point instead of one visiting it twice. For a
+//! subject in conventional form `c` is 0 or 1, so the rings are simple, outers counter-clockwise
+//! and holes clockwise: the conventional output of docs/DESIGN.md.
 //!
 //! Every decision is exact: the tags come from exact side tests, and perimeter positions are
 //! compared by coordinates along each boundary's dominant axis.
@@ -226,24 +228,37 @@ impl Pieces {
         // Chains start after a run and end where the next run starts.
         let mut i = (first_run + 1) % n;
         for _ in 0..n {
-            if run[(i + n - 1) % n].is_some() && run[i].is_none() {
+            // Both ends are on a run, so on a boundary: `place` is `Some` for them.
+            if run[(i + n - 1) % n].is_some()
+                && run[i].is_none()
+                && let Some(mut entry) = perimeter.place(&list[i])
+            {
                 let mut chain = vec![list[i].point];
                 let mut j = i;
-                while run[j].is_none() {
+                loop {
                     j = (j + 1) % n;
                     chain.push(list[j].point);
+                    let Some(place) = perimeter.place(&list[j]) else { continue };
+                    // A vertex inside the chain that touches the boundary ends one chain and
+                    // starts the next, so a walk passing it closes a ring there: the rings share
+                    // the point instead of one ring visiting it twice.
+                    self.push_chain(core::mem::replace(&mut chain, vec![list[j].point]), entry, place);
+                    entry = place;
+                    if run[j].is_some() {
+                        break;
+                    }
                 }
-                let (Some(entry), Some(exit)) = (perimeter.place(&list[i]), perimeter.place(&list[j])) else {
-                    // Unreachable: both ends are on a run, so on a boundary.
-                    continue;
-                };
-                let id = self.chains.len();
-                self.chains.push(chain);
-                self.ends.push(End { place: entry, exit: false, chain: id });
-                self.ends.push(End { place: exit, exit: true, chain: id });
             }
             i = (i + 1) % n;
         }
+    }
+
+    /// A chain from `entry` to `exit`, with its two ends.
+    fn push_chain(&mut self, chain: Vec<Point>, entry: Place, exit: Place) {
+        let id = self.chains.len();
+        self.chains.push(chain);
+        self.ends.push(End { place: entry, exit: false, chain: id });
+        self.ends.push(End { place: exit, exit: true, chain: id });
     }
 
     /// The net cover just past `place` (a point of no run's end beyond it, or the perimeter's start).

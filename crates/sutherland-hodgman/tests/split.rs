@@ -40,6 +40,22 @@ fn figure_6_24_falls_into_two_rings_without_the_extraneous_edge() {
     assert_eq!(bridge_count_within(&out, 0.0), 0);
 }
 
+/// Found by verify on `comb` once the oracle judged the form strictly: the window's edge passes
+/// exactly through a reflex vertex of the subject, so the answer is two pieces touching there.
+/// The walk along that edge passed the vertex, and one ring visited it twice; the chain is now
+/// cut at the vertex, and two rings share it.
+#[test]
+fn a_reflex_vertex_on_the_window_edge_splits_the_answer_into_two_rings_sharing_it() {
+    let subject = Polygons::from(Ring::from(&[(0.0, -4.0), (72.0, -4.0), (12.0, 0.0), (12.0, 36.0)][..]));
+    let window = Polygons::from(Ring::from(&[(8.0, 4.0), (24.0, -12.0), (4.0, 28.0)][..]));
+    let out = split(&subject, &window, FillRule::EvenOdd);
+    check_valid_output(&out).unwrap();
+    assert_eq!(out.rings.len(), 2, "{out:?}");
+    assert!(out.rings.iter().all(|r| r.points.contains(&(12.0, 0.0).into())), "{out:?}");
+    let rules = OutputRules::conventional(REGION_TOLERANCE);
+    check_polygon_result(&subject, &window, BoolOp::Intersection, FillRule::EvenOdd, &out, &rules).unwrap();
+}
+
 /// A hole cut by the window merges into its outer as a notch, instead of staying a clockwise ring
 /// that runs back over the outer's edge along the window (a bridge between two rings).
 #[test]
