@@ -3,9 +3,12 @@
 //! The clean-up sees only rings that share a point. Where an output edge is within a few
 //! thousand ulps of the inputs' largest coordinate, rounded crossings can also leave rings that
 //! share no point overlapping along an edge, crossing, or one inside another running the same
-//! way (found by the `vatti` fuzz target at 1e15 and with edges running to 5e25 and 6e66). For
-//! outputs of at most [`MAX_EDGES`] edges this check looks for exactly those, pair by pair, so
-//! that `snap_fallback` can replace them; larger outputs are not checked (a known limit).
+//! way (found by the `vatti` fuzz target at 1e15 and with edges running to 5e25 and 6e66), and
+//! two crossings rounded a few ulps apart can leave edges crossing, overlapping or a ring meeting
+//! itself between them (at any scale). For outputs of at most [`MAX_EDGES`] edges with such a
+//! short edge, thin ring or pair of near vertices, this check looks for exactly those faults,
+//! pair by pair, so that `snap_fallback` can replace them; larger outputs are not checked (a
+//! known limit).
 
 use clip_core::{Point, Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection};
 
@@ -23,10 +26,39 @@ const ULPS_NEAR_ROUNDING: f64 = 4096.0;
 /// overlap, or nest against their orientation. False for outputs not checked.
 pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
     let edge_count: usize = rings.iter().map(Ring::len).sum();
-    if edge_count > MAX_EDGES || rings.is_empty() || !near_rounding(subject, clip, rings) {
+    if edge_count > MAX_EDGES
+        || rings.is_empty()
+        || !(near_rounding(subject, clip, rings) || vertices_near_rounding(subject, clip, rings))
+    {
         return false;
     }
     crossing_or_overlapping(rings) || nested_against_orientation(rings)
+}
+
+/// Whether two distinct output vertices, of any rings, lie within [`ULPS_NEAR_ROUNDING`] ulps of
+/// the inputs' largest coordinate of each other: crossings rounded twice (once per pair of edges),
+/// or rounded next to an input vertex, land a few ulps apart, and the edges between them may then
+/// cross or overlap although no ring has a short edge. O(n log n): points sorted by (x, y), and
+/// each compared with the next of its column and, by binary search, the columns within reach.
+fn vertices_near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
+    let largest = [subject, clip]
+        .iter()
+        .flat_map(|p| p.rings.iter().flat_map(|r| &r.points))
+        .fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
+    let reach = largest * ULPS_NEAR_ROUNDING * f64::EPSILON;
+    let mut points: Vec<Point> = rings.iter().flat_map(|r| r.points.iter().copied()).collect();
+    points.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    points.dedup();
+    let columns: Vec<&[Point]> = points.chunk_by(|a, b| a.x == b.x).collect();
+    columns.iter().enumerate().any(|(c, column)| {
+        column.windows(2).any(|w| w[1].y - w[0].y <= reach)
+            || columns[c + 1..].iter().take_while(|next| next[0].x - column[0].x <= reach).any(|next| {
+                column.iter().any(|p| {
+                    let k = next.partition_point(|q| q.y < p.y - reach);
+                    next.get(k).is_some_and(|q| q.y <= p.y + reach)
+                })
+            })
+    })
 }
 
 /// Whether an output edge is shorter, or a ring thinner, than [`ULPS_NEAR_ROUNDING`] ulps of the
@@ -67,8 +99,9 @@ fn reaches_rounding<'a>(subject: &Polygons, clip: &Polygons, rings: impl Iterato
         .any(|r| r.points.iter().any(|q| q.x.abs().max(q.y.abs()) >= largest_far))
 }
 
-/// Two edges crossing, a ring overlapping itself, or two rings running the same way along an
-/// edge. Rings may touch at points and share edges run in opposite directions.
+/// Two edges crossing, two edges overlapping (conventional output shares no stretch between
+/// rings: two outers would be one, a hole along its outer a notch), or a ring meeting itself away
+/// from its own vertices' neighbours (it may visit a point once). Rings may touch at points.
 fn crossing_or_overlapping(rings: &[Ring]) -> bool {
     let edges: Vec<(usize, usize, Segment, Rect)> = rings
         .iter()
@@ -82,8 +115,8 @@ fn crossing_or_overlapping(rings: &[Ring]) -> bool {
                 continue;
             }
             match segment_intersection(s, t) {
-                SegmentIntersection::Crossing(_) => return true,
-                SegmentIntersection::Overlap(_) if r == q || (t.b - t.a).dot(s.b - s.a) > 0.0 => return true,
+                SegmentIntersection::Crossing(_) | SegmentIntersection::Overlap(_) => return true,
+                SegmentIntersection::Touching(_) if r == q => return true,
                 _ => {}
             }
         }
@@ -132,6 +165,31 @@ mod tests {
         assert!(small_output_broken(&far, &Polygons::default(), &crossing));
         let hole = [square(1e15, 1e15, 64.0, true), square(1e15 + 8.0, 1e15 + 8.0, 8.0, false)];
         assert!(!small_output_broken(&far, &Polygons::default(), &hole));
+    }
+
+    /// Found by the `vatti` fuzz target (`fuzz/corpus/vatti/a9146f53…`): a union's two rings hold
+    /// the crossings (-1.4, 1.7) and (-1.4000000000000004, 1.7), and the ring with the first has a
+    /// vertex just across its own edge; no edge is short and no ring thin.
+    #[test]
+    fn vertices_a_few_ulps_apart_in_different_rings_are_near_rounding() {
+        let input = Polygons::from(square(-8.0, 0.0, 16.0, true));
+        let ring = |p: &[(f64, f64)]| Ring::new(p.iter().map(|&(x, y)| Point::new(x, y)).collect());
+        let union = [
+            ring(&[(-5.9, 4.7), (-1.4, 1.7), (-0.9000000000000004, 1.7), (-2.9000000000000004, 2.7)]),
+            ring(&[(-1.4000000000000004, 1.7), (-7.9, 1.7), (0.09999999999999956, 0.7)]),
+        ];
+        assert!(!near_rounding(&input, &Polygons::default(), &union));
+        assert!(vertices_near_rounding(&input, &Polygons::default(), &union));
+        assert!(small_output_broken(&input, &Polygons::default(), &union));
+        // The same shapes a unit apart are far from rounding: not checked.
+        let apart = [union[0].clone(), ring(&[(-0.4, 1.7), (-7.9, 1.7), (0.09999999999999956, 0.7)])];
+        assert!(!vertices_near_rounding(&input, &Polygons::default(), &apart));
+        // Near in x but in another column and far in y; near in y in the next column.
+        let columns = |dy: f64| {
+            [ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]), ring(&[(1.0 + 1e-15, 1.0 + dy), (2.0, 5.0), (1.5, 5.0)])]
+        };
+        assert!(!vertices_near_rounding(&input, &Polygons::default(), &columns(1.0)));
+        assert!(vertices_near_rounding(&input, &Polygons::default(), &columns(1e-15)));
     }
 
     #[test]
