@@ -38,27 +38,50 @@ pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[
 /// Whether two distinct output vertices, of any rings, lie within [`ULPS_NEAR_ROUNDING`] ulps of
 /// the inputs' largest coordinate of each other: crossings rounded twice (once per pair of edges),
 /// or rounded next to an input vertex, land a few ulps apart, and the edges between them may then
-/// cross or overlap although no ring has a short edge. O(n log n): points sorted by (x, y), and
-/// each compared with the next of its column and, by binary search, the columns within reach.
+/// cross or overlap although no ring has a short edge. O(n log n): the points sorted by (x, y),
+/// each compared with the next of its column and, in the rare columns within reach in x, merged
+/// with their points.
 fn vertices_near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
     let largest = [subject, clip]
         .iter()
         .flat_map(|p| p.rings.iter().flat_map(|r| &r.points))
         .fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
     let reach = largest * ULPS_NEAR_ROUNDING * f64::EPSILON;
-    let mut points: Vec<Point> = rings.iter().flat_map(|r| r.points.iter().copied()).collect();
-    points.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    // Integer keys in the order of the values: one comparison each, not a float total order.
+    let key = |v: f64| {
+        let b = v.to_bits();
+        if b >> 63 == 1 { !b } else { b | 1 << 63 }
+    };
+    let value = |k: u64| f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k });
+    let mut points: Vec<(u64, u64)> = rings.iter().flat_map(|r| &r.points).map(|p| (key(p.x), key(p.y))).collect();
+    points.sort_unstable();
     points.dedup();
-    let columns: Vec<&[Point]> = points.chunk_by(|a, b| a.x == b.x).collect();
-    columns.iter().enumerate().any(|(c, column)| {
-        column.windows(2).any(|w| w[1].y - w[0].y <= reach)
-            || columns[c + 1..].iter().take_while(|next| next[0].x - column[0].x <= reach).any(|next| {
-                column.iter().any(|p| {
-                    let k = next.partition_point(|q| q.y < p.y - reach);
-                    next.get(k).is_some_and(|q| q.y <= p.y + reach)
-                })
-            })
-    })
+    let column_end = |start: usize| start + points[start..].iter().take_while(|p| p.0 == points[start].0).count();
+    let mut start = 0;
+    while start < points.len() {
+        let end = column_end(start);
+        let column = &points[start..end];
+        if column.windows(2).any(|w| value(w[1].1) - value(w[0].1) <= reach) {
+            return true;
+        }
+        let x = value(column[0].0);
+        let mut next = end;
+        while next < points.len() && value(points[next].0) - x <= reach {
+            let next_end = column_end(next);
+            let near = |p: &(u64, u64)| {
+                let y = value(p.1);
+                let other = &points[next..next_end];
+                let k = other.partition_point(|q| value(q.1) < y - reach);
+                other.get(k).is_some_and(|q| value(q.1) <= y + reach)
+            };
+            if column.iter().any(near) {
+                return true;
+            }
+            next = next_end;
+        }
+        start = end;
+    }
+    false
 }
 
 /// Whether an output edge is shorter, or a ring thinner, than [`ULPS_NEAR_ROUNDING`] ulps of the
