@@ -5,8 +5,9 @@
 //! share no point overlapping along an edge, crossing, or one inside another running the same
 //! way (found by the `vatti` fuzz target at 1e15 and with edges running to 5e25 and 6e66), and
 //! two crossings rounded a few ulps apart can leave edges crossing, overlapping or a ring meeting
-//! itself between them (at any scale). For outputs of at most [`MAX_EDGES`] edges with such a
-//! short edge, thin ring or pair of near vertices, this check looks for exactly those faults,
+//! itself between them (at any scale), as can an input vertex a few ulps off an edge (the sweep's
+//! near miss). For outputs of at most [`MAX_EDGES`] edges with such a short edge, thin ring,
+//! pair of near vertices or near miss, this check looks for exactly those faults,
 //! pair by pair, so that `snap_fallback` can replace them; larger outputs are not checked (a
 //! known limit).
 
@@ -22,59 +23,56 @@ pub(crate) const MAX_EDGES: usize = 1024;
 const ULPS_NEAR_ROUNDING: f64 = 4096.0;
 
 /// True when `rings` (at most [`MAX_EDGES`] edges, with an edge or a ring's width within
-/// [`ULPS_NEAR_ROUNDING`] ulps of the largest coordinate of `subject` and `clip`) cross,
-/// overlap, or nest against their orientation. False for outputs not checked.
-pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
-    let edge_count: usize = rings.iter().map(Ring::len).sum();
-    if edge_count > MAX_EDGES
-        || rings.is_empty()
-        || !(near_rounding(subject, clip, rings) || vertices_near_rounding(subject, clip, rings))
-    {
+/// [`ULPS_NEAR_ROUNDING`] ulps of the largest coordinate of `subject` and `clip`, or with
+/// `near_vertices`: the sweep's near miss or [`vertices_near_rounding`]) cross, overlap, or nest
+/// against their orientation. False for outputs not checked.
+pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[Ring], near_vertices: bool) -> bool {
+    if !checked(rings) || !(near_vertices || near_rounding(subject, clip, rings)) {
         return false;
     }
     crossing_or_overlapping(rings) || nested_against_orientation(rings)
 }
 
-/// Whether two distinct output vertices, of any rings, lie within [`ULPS_NEAR_ROUNDING`] ulps of
-/// the inputs' largest coordinate of each other: crossings rounded twice (once per pair of edges),
-/// or rounded next to an input vertex, land a few ulps apart, and the edges between them may then
-/// cross or overlap although no ring has a short edge. O(n log n): the points sorted by (x, y),
-/// each compared with the next of its column and, in the rare columns within reach in x, merged
-/// with their points.
-fn vertices_near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -> bool {
+/// Whether two distinct points of the sweep's output, of any rings, lie within
+/// [`ULPS_NEAR_ROUNDING`] ulps of the inputs' largest coordinate of each other: crossings rounded
+/// twice (once per pair of edges), or rounded next to an input vertex, land a few ulps apart, and
+/// the edges between them may then cross or overlap although no ring has a short edge. `by_y`
+/// holds the distinct points ordered by y, then x (the clean-up's `Touches::distinct_by_y`), so
+/// this is one pass: each point against the next of its row, and rows within reach in y (rare)
+/// by binary search.
+pub(crate) fn vertices_near_rounding(subject: &Polygons, clip: &Polygons, by_y: &[Point]) -> bool {
+    if by_y.len() < 2 {
+        return false;
+    }
     let largest = [subject, clip]
         .iter()
         .flat_map(|p| p.rings.iter().flat_map(|r| &r.points))
         .fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
     let reach = largest * ULPS_NEAR_ROUNDING * f64::EPSILON;
-    // Integer keys in the order of the values: one comparison each, not a float total order.
-    let key = |v: f64| {
-        let b = v.to_bits();
-        if b >> 63 == 1 { !b } else { b | 1 << 63 }
-    };
-    let value = |k: u64| f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k });
-    let mut points: Vec<(u64, u64)> = rings.iter().flat_map(|r| &r.points).map(|p| (key(p.x), key(p.y))).collect();
-    points.sort_unstable();
-    points.dedup();
-    let column_end = |start: usize| start + points[start..].iter().take_while(|p| p.0 == points[start].0).count();
+    // Most rows are one point and most neighbouring rows far apart in y: one pass over
+    // neighbours, and the full row by row pass only where two rows are within reach.
+    let rows_apart =
+        by_y.windows(2).all(|w| if w[0].y == w[1].y { w[1].x - w[0].x > reach } else { w[1].y - w[0].y > reach });
+    if rows_apart {
+        return false;
+    }
+    let row_end = |start: usize| start + by_y[start..].iter().take_while(|p| p.y == by_y[start].y).count();
     let mut start = 0;
-    while start < points.len() {
-        let end = column_end(start);
-        let column = &points[start..end];
-        if column.windows(2).any(|w| value(w[1].1) - value(w[0].1) <= reach) {
+    while start < by_y.len() {
+        let end = row_end(start);
+        let row = &by_y[start..end];
+        if row.windows(2).any(|w| w[1].x - w[0].x <= reach) {
             return true;
         }
-        let x = value(column[0].0);
         let mut next = end;
-        while next < points.len() && value(points[next].0) - x <= reach {
-            let next_end = column_end(next);
-            let near = |p: &(u64, u64)| {
-                let y = value(p.1);
-                let other = &points[next..next_end];
-                let k = other.partition_point(|q| value(q.1) < y - reach);
-                other.get(k).is_some_and(|q| value(q.1) <= y + reach)
+        while next < by_y.len() && by_y[next].y - row[0].y <= reach {
+            let next_end = row_end(next);
+            let other = &by_y[next..next_end];
+            let near = |p: &Point| {
+                let k = other.partition_point(|q| q.x < p.x - reach);
+                other.get(k).is_some_and(|q| q.x <= p.x + reach)
             };
-            if column.iter().any(near) {
+            if row.iter().any(near) {
                 return true;
             }
             next = next_end;
@@ -82,6 +80,11 @@ fn vertices_near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring]) -
         start = end;
     }
     false
+}
+
+/// Whether an output is small enough to be checked: at most [`MAX_EDGES`] edges, and not empty.
+pub(crate) fn checked(rings: &[Ring]) -> bool {
+    !rings.is_empty() && rings.iter().map(Ring::len).sum::<usize>() <= MAX_EDGES
 }
 
 /// Whether an output edge is shorter, or a ring thinner, than [`ULPS_NEAR_ROUNDING`] ulps of the
@@ -183,11 +186,19 @@ mod tests {
     fn rings_nested_or_crossing_near_rounding_are_broken() {
         let far = Polygons::from(square(1e15, 1e15, 64.0, true));
         let inside_same_way = [square(1e15, 1e15, 64.0, true), square(1e15 + 8.0, 1e15 + 8.0, 8.0, true)];
-        assert!(small_output_broken(&far, &Polygons::default(), &inside_same_way));
+        assert!(small_output_broken(&far, &Polygons::default(), &inside_same_way, false));
         let crossing = [square(1e15, 1e15, 16.0, true), square(1e15 + 8.0, 1e15 + 8.0, 16.0, true)];
-        assert!(small_output_broken(&far, &Polygons::default(), &crossing));
+        assert!(small_output_broken(&far, &Polygons::default(), &crossing, false));
         let hole = [square(1e15, 1e15, 64.0, true), square(1e15 + 8.0, 1e15 + 8.0, 8.0, false)];
-        assert!(!small_output_broken(&far, &Polygons::default(), &hole));
+        assert!(!small_output_broken(&far, &Polygons::default(), &hole, false));
+    }
+
+    /// The distinct points of `rings` by y, then x, as the clean-up hands them over.
+    fn by_y(rings: &[Ring]) -> Vec<Point> {
+        let mut p: Vec<Point> = rings.iter().flat_map(|r| r.points.iter().copied()).collect();
+        p.sort_by(|a, b| a.y.total_cmp(&b.y).then(a.x.total_cmp(&b.x)));
+        p.dedup();
+        p
     }
 
     /// Found by the `vatti` fuzz target (`fuzz/corpus/vatti/a9146f53…`): a union's two rings hold
@@ -196,29 +207,31 @@ mod tests {
     #[test]
     fn vertices_a_few_ulps_apart_in_different_rings_are_near_rounding() {
         let input = Polygons::from(square(-8.0, 0.0, 16.0, true));
+        let none = Polygons::default();
         let ring = |p: &[(f64, f64)]| Ring::new(p.iter().map(|&(x, y)| Point::new(x, y)).collect());
         let union = [
             ring(&[(-5.9, 4.7), (-1.4, 1.7), (-0.9000000000000004, 1.7), (-2.9000000000000004, 2.7)]),
             ring(&[(-1.4000000000000004, 1.7), (-7.9, 1.7), (0.09999999999999956, 0.7)]),
         ];
-        assert!(!near_rounding(&input, &Polygons::default(), &union));
-        assert!(vertices_near_rounding(&input, &Polygons::default(), &union));
-        assert!(small_output_broken(&input, &Polygons::default(), &union));
-        // The same shapes a unit apart are far from rounding: not checked.
+        assert!(!near_rounding(&input, &none, &union));
+        assert!(vertices_near_rounding(&input, &none, &by_y(&union)));
+        assert!(small_output_broken(&input, &none, &union, true));
+        assert!(!small_output_broken(&input, &none, &union, false));
+        // The same shapes a unit apart are far from rounding.
         let apart = [union[0].clone(), ring(&[(-0.4, 1.7), (-7.9, 1.7), (0.09999999999999956, 0.7)])];
-        assert!(!vertices_near_rounding(&input, &Polygons::default(), &apart));
-        // Near in x but in another column and far in y; near in y in the next column.
-        let columns = |dy: f64| {
-            [ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]), ring(&[(1.0 + 1e-15, 1.0 + dy), (2.0, 5.0), (1.5, 5.0)])]
+        assert!(!vertices_near_rounding(&input, &none, &by_y(&apart)));
+        // Near in y but in another row and far in x; near in x in the next row.
+        let rows = |dx: f64| {
+            [ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]), ring(&[(1.0 + dx, 1.0 + 1e-15), (5.0, 2.0), (5.0, 1.5)])]
         };
-        assert!(!vertices_near_rounding(&input, &Polygons::default(), &columns(1.0)));
-        assert!(vertices_near_rounding(&input, &Polygons::default(), &columns(1e-15)));
+        assert!(!vertices_near_rounding(&input, &none, &by_y(&rows(1.0))));
+        assert!(vertices_near_rounding(&input, &none, &by_y(&rows(1e-15))));
     }
 
     #[test]
     fn outputs_far_above_rounding_are_not_checked() {
         let near = Polygons::from(square(0.0, 0.0, 64.0, true));
         let inside_same_way = [square(0.0, 0.0, 64.0, true), square(8.0, 8.0, 8.0, true)];
-        assert!(!small_output_broken(&near, &Polygons::default(), &inside_same_way));
+        assert!(!small_output_broken(&near, &Polygons::default(), &inside_same_way, false));
     }
 }

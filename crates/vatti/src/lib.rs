@@ -241,8 +241,8 @@ impl Vatti {
     /// snap-rounded operands are swept once instead (`snap_fallback`): their edges meet only at
     /// vertices, so that sweep rounds nothing.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        let rings = Vatti::sweep_clean(subject, clip, op, fill, sweep, true);
-        let broken = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings);
+        let (rings, near_vertices) = Vatti::sweep_clean(subject, clip, op, fill, sweep, true);
+        let broken = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings, near_vertices);
         if broken && let Some(snapped) = snap_fallback::SnappedOperands::of(subject, clip) {
             return snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep));
         }
@@ -251,11 +251,12 @@ impl Vatti {
 
     /// The sweep's conventional rings of valid operands, whatever the clean-up reports.
     fn sweep_polygons_once(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, false).rings)
+        Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, false).0.rings)
     }
 
     /// The sweep's clean-up of valid operands, with whether rounding broke its form (`strict`:
-    /// edges retraced near rounding count too).
+    /// edges retraced near rounding count too) and, with `strict`, whether two of its distinct
+    /// points lie within rounding of each other (`form_check::vertices_near_rounding`).
     fn sweep_clean(
         subject: &Polygons,
         clip: &Polygons,
@@ -263,11 +264,15 @@ impl Vatti {
         fill: FillRule,
         sweep: Sweep,
         strict: bool,
-    ) -> cleanup::CleanRings {
+    ) -> (cleanup::CleanRings, bool) {
         Vatti::sweep(sweep, subject, clip, op, fill, false, |rings, touches, turns, _| {
-            cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
+            let clean = cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
                 form_check::raw_near_rounding(subject, clip, rings)
-            })
+            });
+            let near = strict
+                && form_check::checked(&clean.rings)
+                && (rings.near_miss || form_check::vertices_near_rounding(subject, clip, &touches.distinct_by_y()));
+            (clean, near)
         })
     }
 

@@ -45,6 +45,8 @@ pub(crate) struct Touches {
     /// `shared`, run `i` ending at `shared_ends[i]`.
     pub shared: Vec<u32>,
     pub shared_ends: Vec<u32>,
+    /// Whether `distinct` came out ordered by y, then x (from the emission order).
+    by_y: bool,
     /// Work buffers: point index by emission stamp, ring of every point, and one run of equal
     /// y by x.
     slot: Vec<u32>,
@@ -75,6 +77,16 @@ impl Touches {
         self.shared.clear();
         self.shared_ends.clear();
         ring_of(raw, &mut self.ring);
+    }
+
+    /// The distinct points ordered by y, then x: as found from the emission order, else sorted.
+    pub(crate) fn distinct_by_y(&self) -> std::borrow::Cow<'_, [Point]> {
+        if self.by_y {
+            return std::borrow::Cow::Borrowed(&self.distinct);
+        }
+        let mut sorted = self.distinct.clone();
+        sorted.sort_unstable_by(|a, b| a.y.total_cmp(&b.y).then(a.x.total_cmp(&b.x)));
+        std::borrow::Cow::Owned(sorted)
     }
 
     /// The indices of the points before and after point `k` in its ring (after [`Touches::find`]).
@@ -142,6 +154,7 @@ impl Touches {
         }
         // Every point stamped once (the sweep's stamps are distinct; this guards the reading).
         let found = monotone && seen == raw.points.len();
+        self.by_y = found;
         if found {
             self.take_run(raw, &ring, &mut run);
             self.splits.sort_unstable_by_key(|s| (s.ring, s.edge));
