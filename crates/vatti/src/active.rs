@@ -164,6 +164,15 @@ impl Edge {
     /// there (x then taken on the steeper edge), x clamped to the span of `xs`, the two edges'
     /// x at `yb` and `yt`.
     pub(crate) fn crossing_with(&self, other: &Edge, yb: f64, yt: f64, xs: [f64; 4]) -> Point {
+        // A swap at a vertex both edges start or end at: that vertex exactly, which the quotient
+        // below can miss by an ulp (`bot.x * den` is rounded); the sweep of snap-rounded operands
+        // must output no point but theirs. (Sharing an end, they meet nowhere else, or overlap.)
+        if xs[0] == xs[2] && self.bot == other.bot {
+            return Point::new(xs[0], yb);
+        }
+        if xs[1] == xs[3] && self.top == other.top {
+            return Point::new(xs[1], yt);
+        }
         let (d1, d2) = (self.top - self.bot, other.top - other.bot);
         let den = d1.cross(d2);
         let num = (other.bot - self.bot).cross(d2);

@@ -1,36 +1,67 @@
-//! An exact check of a small output's form, run only where rounding may have broken it.
+//! An exact check of an output's form, run only where rounding may have broken it.
 //!
 //! The clean-up sees only rings that share a point. Where an output edge is within a few
 //! thousand ulps of the inputs' largest coordinate, rounded crossings can also leave rings that
 //! share no point overlapping along an edge, crossing, or one inside another running the same
 //! way (found by the `vatti` fuzz target at 1e15 and with edges running to 5e25 and 6e66), and
-//! two crossings rounded a few ulps apart can leave edges crossing, overlapping or a ring meeting
-//! itself between them (at any scale), as can an input vertex a few ulps off an edge (the sweep's
-//! near miss). For outputs of at most [`MAX_EDGES`] edges with such a short edge, thin ring,
-//! pair of near vertices or near miss, this check looks for exactly those faults,
-//! pair by pair, so that `snap_fallback` can replace them; larger outputs are not checked (a
-//! known limit).
+//! two crossings rounded a few ulps apart can leave edges crossing, overlapping, a ring meeting
+//! itself or two rings crossing at a shared vertex between them (at any scale), as can an input
+//! vertex a few ulps off an edge (the sweep's near miss). This check looks for exactly those
+//! faults, so that `snap_fallback` can replace them: in outputs of at most [`MAX_EDGES`] edges
+//! with a pair of near vertices or a near miss, and of at most [`MAX_SCANNED_EDGES`] with a short
+//! edge or thin ring (a scan of its own over every output edge, where the near-vertex test rides
+//! on the clean-up's order). Larger outputs are not checked (a known limit).
 
-use clip_core::{Point, Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection};
+use clip_core::{
+    CellIndex, Point, Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection,
+};
 
+use crate::cleanup::cross_at_shared_points;
 use crate::raw_rings::RawRings;
 
-/// The most output edges checked: the pair test is quadratic in the worst case.
-pub(crate) const MAX_EDGES: usize = 1024;
+/// The most output edges checked: the pair test goes through a cell index, near linear on
+/// most outputs but quadratic where many long edges share cells.
+pub(crate) const MAX_EDGES: usize = 1 << 16;
+
+/// The most output edges scanned for a short edge or thin ring ([`near_rounding`]).
+const MAX_SCANNED_EDGES: usize = 1024;
 
 /// Output edges shorter, or rings thinner, than this many ulps of the inputs' largest coordinate
 /// make the output worth checking: features that small are where rounding misplaces edges.
 const ULPS_NEAR_ROUNDING: f64 = 4096.0;
 
-/// True when `rings` (at most [`MAX_EDGES`] edges, with an edge or a ring's width within
-/// [`ULPS_NEAR_ROUNDING`] ulps of the largest coordinate of `subject` and `clip`, or with
-/// `near_vertices`: the sweep's near miss or [`vertices_near_rounding`]) cross, overlap, or nest
-/// against their orientation. False for outputs not checked.
-pub(crate) fn small_output_broken(subject: &Polygons, clip: &Polygons, rings: &[Ring], near_vertices: bool) -> bool {
-    if !checked(rings) || !(near_vertices || near_rounding(subject, clip, rings)) {
+/// True when `rings` cross, overlap, meet uncleanly at a shared point or nest against their
+/// orientation, where they are checked: with `near_vertices` (the sweep's near miss or
+/// [`vertices_near_rounding`]) and at most [`MAX_EDGES`] edges, or with an edge or a ring's
+/// width within [`ULPS_NEAR_ROUNDING`] ulps of the largest coordinate of `subject` and `clip`
+/// and at most [`MAX_SCANNED_EDGES`] edges. False for outputs not checked.
+pub(crate) fn broken_near_rounding(subject: &Polygons, clip: &Polygons, rings: &[Ring], near_vertices: bool) -> bool {
+    let edges = rings.iter().map(Ring::len).sum::<usize>();
+    let gate = if near_vertices {
+        edges <= MAX_EDGES
+    } else {
+        edges <= MAX_SCANNED_EDGES && near_rounding(subject, clip, rings)
+    };
+    if rings.is_empty() || !gate {
         return false;
     }
-    crossing_or_overlapping(rings) || nested_against_orientation(rings)
+    crossing_or_overlapping(rings) || nested_against_orientation(rings) || unclean_at_shared_points(rings)
+}
+
+/// Whether the rings cross, or one passes twice, at a point they share
+/// (`cleanup::cross_at_shared_points`): rounded crossings a few ulps apart can leave two rings
+/// that meet at a vertex and cross there, which no pair of edges shows.
+fn unclean_at_shared_points(rings: &[Ring]) -> bool {
+    let mut pts: Vec<Point> = rings.iter().flat_map(|r| r.points.iter().copied()).collect();
+    pts.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    pts.dedup();
+    let id = |p: &Point| pts.partition_point(|q| q.x.total_cmp(&p.x).then(q.y.total_cmp(&p.y)).is_lt()) as u32;
+    let (mut ids, mut ends) = (Vec::new(), Vec::new());
+    for r in rings {
+        ids.extend(r.points.iter().map(id));
+        ends.push(ids.len());
+    }
+    cross_at_shared_points(&pts, &ids, &ends)
 }
 
 /// Whether two distinct points of the sweep's output, of any rings, lie within
@@ -82,7 +113,8 @@ pub(crate) fn vertices_near_rounding(subject: &Polygons, clip: &Polygons, by_y: 
     false
 }
 
-/// Whether an output is small enough to be checked: at most [`MAX_EDGES`] edges, and not empty.
+/// Whether an output can be checked when its vertices are near: at most [`MAX_EDGES`] edges, and
+/// not empty.
 pub(crate) fn checked(rings: &[Ring]) -> bool {
     !rings.is_empty() && rings.iter().map(Ring::len).sum::<usize>() <= MAX_EDGES
 }
@@ -128,40 +160,51 @@ fn reaches_rounding<'a>(subject: &Polygons, clip: &Polygons, rings: impl Iterato
 /// Two edges crossing, two edges overlapping (conventional output shares no stretch between
 /// rings: two outers would be one, a hole along its outer a notch), or a ring meeting itself away
 /// from its own vertices' neighbours (it may visit a point once). Rings may touch at points.
+/// Pairs come from a cell index over the edges' boxes: near linear unless many long edges
+/// share cells.
 fn crossing_or_overlapping(rings: &[Ring]) -> bool {
-    let edges: Vec<(usize, usize, Segment, Rect)> = rings
-        .iter()
-        .enumerate()
-        .flat_map(|(r, ring)| ring.edges().enumerate().map(move |(i, s)| (r, i, s, s.bounds())))
-        .collect();
-    for (k, &(r, i, s, sb)) in edges.iter().enumerate() {
-        for &(q, j, t, tb) in &edges[k + 1..] {
-            let n = rings[r].len();
-            if !sb.intersects(&tb) || (r == q && (j == i + 1 || (i == 0 && j == n - 1))) {
-                continue;
+    let edges: Vec<(usize, usize, Segment)> =
+        rings.iter().enumerate().flat_map(|(r, ring)| ring.edges().enumerate().map(move |(i, s)| (r, i, s))).collect();
+    let boxes: Vec<Rect> = edges.iter().map(|e| e.2.bounds()).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return false };
+    let neighbours = |r: usize, i: usize, j: usize| {
+        let n = rings[r].len();
+        (i + 1) % n == j || (j + 1) % n == i
+    };
+    index
+        .try_for_each_close_pair(&boxes, |a, b| {
+            let ((r, i, s), (q, j, t)) = (edges[a], edges[b]);
+            if r == q && neighbours(r, i, j) {
+                return Ok(());
             }
             match segment_intersection(s, t) {
-                SegmentIntersection::Crossing(_) | SegmentIntersection::Overlap(_) => return true,
-                SegmentIntersection::Touching(_) if r == q => return true,
-                _ => {}
+                SegmentIntersection::Crossing(_) | SegmentIntersection::Overlap(_) => Err(()),
+                SegmentIntersection::Touching(_) if r == q => Err(()),
+                _ => Ok(()),
             }
-        }
-    }
-    false
+        })
+        .is_err()
 }
 
 /// A ring whose orientation disagrees with the number of other rings around it (outers, at
 /// even depth, counter-clockwise; holes clockwise). Each ring is placed by its first vertex off
-/// every other ring; a ring with none such is counted as broken.
+/// every other ring; a ring with none such is counted as broken. The rings around a point come
+/// from a cell index over the rings' boxes.
 fn nested_against_orientation(rings: &[Ring]) -> bool {
+    let boxes: Vec<Rect> = rings.iter().map(Ring::bounds).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return false };
     rings.iter().enumerate().any(|(r, ring)| {
         let depth = ring.points.iter().find_map(|&p| {
-            rings.iter().enumerate().filter(|&(k, _)| k != r).try_fold(0usize, |d, (_, other)| {
-                if !other.bounds().contains(p) {
-                    return Some(d);
+            let (mut depth, mut on_ring) = (0usize, false);
+            index.for_each_meeting(&boxes, &Rect::new(p.x, p.y, p.x, p.y), |k| {
+                if k != r && !on_ring {
+                    match ring_winding(p, &rings[k]) {
+                        Some(w) => depth += usize::from(w != 0),
+                        None => on_ring = true,
+                    }
                 }
-                ring_winding(p, other).map(|w| d + usize::from(w != 0))
-            })
+            });
+            (!on_ring).then_some(depth)
         });
         depth.is_none_or(|d| (d % 2 == 0) != ring.runs_counter_clockwise())
     })
@@ -186,11 +229,11 @@ mod tests {
     fn rings_nested_or_crossing_near_rounding_are_broken() {
         let far = Polygons::from(square(1e15, 1e15, 64.0, true));
         let inside_same_way = [square(1e15, 1e15, 64.0, true), square(1e15 + 8.0, 1e15 + 8.0, 8.0, true)];
-        assert!(small_output_broken(&far, &Polygons::default(), &inside_same_way, false));
+        assert!(broken_near_rounding(&far, &Polygons::default(), &inside_same_way, false));
         let crossing = [square(1e15, 1e15, 16.0, true), square(1e15 + 8.0, 1e15 + 8.0, 16.0, true)];
-        assert!(small_output_broken(&far, &Polygons::default(), &crossing, false));
+        assert!(broken_near_rounding(&far, &Polygons::default(), &crossing, false));
         let hole = [square(1e15, 1e15, 64.0, true), square(1e15 + 8.0, 1e15 + 8.0, 8.0, false)];
-        assert!(!small_output_broken(&far, &Polygons::default(), &hole, false));
+        assert!(!broken_near_rounding(&far, &Polygons::default(), &hole, false));
     }
 
     /// The distinct points of `rings` by y, then x, as the clean-up hands them over.
@@ -215,8 +258,8 @@ mod tests {
         ];
         assert!(!near_rounding(&input, &none, &union));
         assert!(vertices_near_rounding(&input, &none, &by_y(&union)));
-        assert!(small_output_broken(&input, &none, &union, true));
-        assert!(!small_output_broken(&input, &none, &union, false));
+        assert!(broken_near_rounding(&input, &none, &union, true));
+        assert!(!broken_near_rounding(&input, &none, &union, false));
         // The same shapes a unit apart are far from rounding.
         let apart = [union[0].clone(), ring(&[(-0.4, 1.7), (-7.9, 1.7), (0.09999999999999956, 0.7)])];
         assert!(!vertices_near_rounding(&input, &none, &by_y(&apart)));
@@ -232,6 +275,6 @@ mod tests {
     fn outputs_far_above_rounding_are_not_checked() {
         let near = Polygons::from(square(0.0, 0.0, 64.0, true));
         let inside_same_way = [square(0.0, 0.0, 64.0, true), square(8.0, 8.0, 8.0, true)];
-        assert!(!small_output_broken(&near, &Polygons::default(), &inside_same_way, false));
+        assert!(!broken_near_rounding(&near, &Polygons::default(), &inside_same_way, false));
     }
 }

@@ -122,8 +122,10 @@
 //!   two edges leaving or arriving at one point in the same direction once opposite edges
 //!   cancelled; two one way and one back, as grid unions' holes retrace their outers, only near
 //!   rounding and when the rebuilt rings then cross or overlap at a point they share, checked
-//!   exactly); outputs of at most `form_check::MAX_EDGES` edges with an edge within 4096 ulps of
-//!   the inputs' largest coordinate also get a full exact check of their form. Where the sweep
+//!   exactly); outputs near rounding also get a full exact check of their form (`form_check`:
+//!   up to 65,536 edges where two distinct vertices lie within 4096 ulps of the inputs' largest
+//!   coordinate of each other or the sweep met a near miss, up to 1024 where an edge or a ring is
+//!   that short or thin). Where the sweep
 //!   left a point near an edge but off it (a near miss), the clean-up also splits slanted edges
 //!   at the vertices on them, so rounded edges through exact vertices cancel or are reported like
 //!   horizontal ones. A broken output is replaced once, by the sweep of both operands snap
@@ -132,8 +134,9 @@
 //!   only at vertices, so that sweep (ordering edges exactly where rounding could swap them, and
 //!   taking no exact point for a rounded one) rounds nothing, and its output is valid by
 //!   construction; each of its vertices is within `s·√2/2` of the exact vertex or crossing.
-//!   Outputs not reported broken are returned as the first sweep made them. Known limit: a
-//!   larger output broken between rings that share no point and with no near miss is not found.
+//!   Outputs not reported broken are returned as the first sweep made them. Known limit: an
+//!   output broken between rings that share no point, with no near vertices and over 1024 edges
+//!   (or over 65,536), is not found.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
@@ -242,7 +245,7 @@ impl Vatti {
     /// vertices, so that sweep rounds nothing.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
         let (rings, near_vertices) = Vatti::sweep_clean(subject, clip, op, fill, sweep, true);
-        let broken = rings.broken_form || form_check::small_output_broken(subject, clip, &rings.rings, near_vertices);
+        let broken = rings.broken_form || form_check::broken_near_rounding(subject, clip, &rings.rings, near_vertices);
         if broken && let Some(snapped) = snap_fallback::SnappedOperands::of(subject, clip) {
             return snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep));
         }
@@ -256,7 +259,8 @@ impl Vatti {
 
     /// The sweep's clean-up of valid operands, with whether rounding broke its form (`strict`:
     /// edges retraced near rounding count too) and, with `strict`, whether two of its distinct
-    /// points lie within rounding of each other (`form_check::vertices_near_rounding`).
+    /// points lie within rounding of each other (`form_check::vertices_near_rounding`) or the
+    /// sweep met a near miss (a vertex within rounding of another edge).
     fn sweep_clean(
         subject: &Polygons,
         clip: &Polygons,
@@ -269,7 +273,9 @@ impl Vatti {
             let clean = cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
                 form_check::raw_near_rounding(subject, clip, rings)
             });
+            // Already broken: the fallback runs anyway, so the near test would be wasted.
             let near = strict
+                && !clean.broken_form
                 && form_check::checked(&clean.rings)
                 && (rings.near_miss || form_check::vertices_near_rounding(subject, clip, &touches.distinct_by_y()));
             (clean, near)

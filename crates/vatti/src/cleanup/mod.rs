@@ -41,7 +41,7 @@ use clip_core::{Point, Ring};
 use self::held::HeldTest;
 use self::rebuild::rebuild;
 use self::same_way::SameWay;
-use self::shared_points::cross_at_shared_points;
+pub(crate) use self::shared_points::cross_at_shared_points;
 pub(crate) use self::touches::Touches;
 pub(crate) use self::turns::Turns;
 use crate::raw_rings::RawRings;
