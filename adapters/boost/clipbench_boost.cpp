@@ -30,7 +30,7 @@ BMulti boost_region(const clipbench::Rings& rings, const std::string& fill) {
   set.polygons_with_holes(std::back_inserter(polygons));
   auto ring_of = [](const clipbench::Polygon_set::Polygon_2& p, BPolygon::ring_type& r) {
     for (auto v = p.vertices_begin(); v != p.vertices_end(); ++v)
-      r.push_back(BPoint(CGAL::to_double(v->x()), CGAL::to_double(v->y())));
+      r.push_back(BPoint(clipbench::nearest_double(v->x()), clipbench::nearest_double(v->y())));
   };
   BMulti multi;
   for (const auto& p : polygons) {
