@@ -188,13 +188,16 @@ fn crossing_or_overlapping(rings: &[Ring]) -> bool {
 
 /// A ring whose orientation disagrees with the number of other rings around it (outers, at
 /// even depth, counter-clockwise; holes clockwise). Each ring is placed by its first vertex off
-/// every other ring; a ring with none such is counted as broken. The rings around a point come
-/// from a cell index over the rings' boxes.
+/// every other ring, else by the first midpoint of an edge off them (a triangle whose corners
+/// all touch other rings: its edges cannot lie on them, which would be an overlap); a ring
+/// with none such is counted as broken. The rings around a point come from a cell index over
+/// the rings' boxes.
 fn nested_against_orientation(rings: &[Ring]) -> bool {
     let boxes: Vec<Rect> = rings.iter().map(Ring::bounds).collect();
     let Some(index) = CellIndex::new(&boxes) else { return false };
     rings.iter().enumerate().any(|(r, ring)| {
-        let depth = ring.points.iter().find_map(|&p| {
+        let midpoints = ring.edges().map(|e| Point::new(0.5 * e.a.x + 0.5 * e.b.x, 0.5 * e.a.y + 0.5 * e.b.y));
+        let depth = ring.points.iter().copied().chain(midpoints).find_map(|p| {
             let (mut depth, mut on_ring) = (0usize, false);
             index.for_each_meeting(&boxes, &Rect::new(p.x, p.y, p.x, p.y), |k| {
                 if k != r && !on_ring {
@@ -269,6 +272,25 @@ mod tests {
         };
         assert!(!vertices_near_rounding(&input, &none, &by_y(&rows(1.0))));
         assert!(vertices_near_rounding(&input, &none, &by_y(&rows(1e-15))));
+    }
+
+    /// Found by the `vatti` fuzz target at 1e149: small triangles whose corners all touch other
+    /// rings were counted as broken, and the snap fallback replaced a valid union.
+    #[test]
+    fn a_ring_whose_corners_all_touch_other_rings_is_placed_by_an_edge() {
+        let ring = |p: &[(f64, f64)]| Ring::new(p.iter().map(|&(x, y)| Point::new(x, y)).collect());
+        let rings = [
+            ring(&[(0.0, 0.0), (2.0, 0.0), (1.0, 2.0)]),
+            ring(&[(0.0, 0.0), (-1.0, 0.0), (-1.0, -1.0)]),
+            ring(&[(2.0, 0.0), (3.0, -1.0), (3.0, 0.0)]),
+            ring(&[(1.0, 2.0), (2.0, 3.0), (0.0, 3.0)]),
+        ];
+        let input = Polygons::from(square(-8.0, -8.0, 16.0, true));
+        assert!(!broken_near_rounding(&input, &Polygons::default(), &rings, true));
+        // The middle one turned clockwise, with nothing around it: broken.
+        let mut turned = rings.clone();
+        turned[0].points.reverse();
+        assert!(broken_near_rounding(&input, &Polygons::default(), &turned, true));
     }
 
     #[test]
