@@ -451,3 +451,28 @@ fn vatti_sliver_of_nearly_collinear_input_vertices_counter_clockwise() {
 fn readers_geo_fixture_with_a_position_of_one_number() {
     regression("readers", "geo-fixture-with-a-position-of-one-number");
 }
+
+/// A union near (5e5, 4e6) with one vertex at 5e-33: its snap fallback runs in pixel units up to
+/// 2^51, where crossings cannot be computed exactly. Snap rounding had noded two edges at a grid
+/// point, but the sweep's simplification dropped both straight-through vertices there, made the
+/// two edges cross again, and rounded the crossing off the grid. The fallback's sweep now keeps
+/// straight-through vertices (`simplify_ring_keeping`).
+#[test]
+fn vatti_snapped_crossing_at_a_dropped_straight_vertex_near_2e51_pixels() {
+    regression("vatti", "snapped-crossing-at-a-dropped-straight-vertex-near-2e51-pixels");
+}
+
+/// The same kind of input's xor, where a fallback ring crossed itself for the same reason.
+#[test]
+fn vatti_snapped_self_crossing_xor_near_4e6() {
+    regression("vatti", "snapped-self-crossing-xor-near-4e6");
+}
+
+/// A union at 1e149 whose small triangles have all three corners on other rings: vatti's form
+/// check placed each ring by a vertex off every other ring, found none, and counted the valid
+/// output as broken; the snap fallback's output there was not valid. Such a ring is now placed
+/// by an edge's midpoint.
+#[test]
+fn vatti_triangles_whose_corners_touch_other_rings_at_1e149() {
+    regression("vatti", "triangles-whose-corners-touch-other-rings-at-1e149");
+}

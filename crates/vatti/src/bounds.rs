@@ -3,7 +3,7 @@
 
 use clip_core::{Point, Polygons};
 
-use crate::simplify::simplify_ring_into;
+use crate::simplify::simplify_ring_keeping;
 use crate::small_sort::insertion_sorted_by;
 
 /// "No index" for the u32 links of the sweep's arenas.
@@ -43,9 +43,10 @@ pub(crate) struct Bounds {
 
 impl Bounds {
     /// Links every ring of both operands (repeated and collinear vertices removed, which leaves
-    /// the region unchanged) and lists their local minima by increasing y, in this value's
+    /// the region unchanged; with `noded`, straight-through vertices stay, see
+    /// [`simplify_ring_keeping`]) and lists their local minima by increasing y, in this value's
     /// buffers (whatever they held before is dropped).
-    pub(crate) fn rebuild(&mut self, subject: &Polygons, clip: &Polygons) {
+    pub(crate) fn rebuild(&mut self, subject: &Polygons, clip: &Polygons, noded: bool) {
         let total: usize = [subject, clip].iter().flat_map(|p| &p.rings).map(|r| r.points.len()).sum();
         self.vertices.clear();
         self.minima.clear();
@@ -53,7 +54,7 @@ impl Bounds {
         let mut simple = std::mem::take(&mut self.ring);
         for (kind, polygons) in [(SUBJECT, subject), (CLIP, clip)] {
             for ring in &polygons.rings {
-                simplify_ring_into(&ring.points, &mut simple);
+                simplify_ring_keeping(&ring.points, &mut simple, noded);
                 self.add_ring(&simple, kind);
             }
         }

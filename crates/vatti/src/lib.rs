@@ -269,7 +269,9 @@ impl Vatti {
         sweep: Sweep,
         strict: bool,
     ) -> (cleanup::CleanRings, bool) {
-        Vatti::sweep(sweep, subject, clip, op, fill, false, |rings, touches, turns, _| {
+        // Not strict: the snap fallback's operands, noded (their straight-through vertices stay).
+        let noded = !strict;
+        Vatti::sweep(sweep, subject, clip, op, fill, false, noded, |rings, touches, turns, _| {
             let clean = cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
                 form_check::raw_near_rounding(subject, clip, rings)
             });
@@ -283,7 +285,8 @@ impl Vatti {
     }
 
     /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings
-    /// and trapezoids to `finish`.
+    /// and trapezoids to `finish`. `noded`: the operands' edges meet only at vertices (snap
+    /// rounded), so their straight-through vertices are kept (`Bounds::rebuild`).
     #[allow(clippy::too_many_arguments)]
     fn sweep<T>(
         sweep: Sweep,
@@ -292,6 +295,7 @@ impl Vatti {
         op: BoolOp,
         fill: FillRule,
         trapezoids: bool,
+        noded: bool,
         finish: impl FnOnce(&RawRings, &mut Touches, &mut Turns, Vec<Trapezoid>) -> T,
     ) -> T {
         // The event sweep is taken for large operands, where a hash pass over the edges costs
@@ -301,7 +305,7 @@ impl Vatti {
             Sweep::Scanbeam => (Cow::Borrowed(subject), Cow::Borrowed(clip)),
         };
         Scratch::with(|scratch| {
-            scratch.bounds.rebuild(&subject, &clip);
+            scratch.bounds.rebuild(&subject, &clip, noded);
             let buffers = std::mem::take(&mut scratch.sweep);
             let mut line = SweepLine::new(sweep, &scratch.bounds, Rules::new(op, fill), trapezoids, buffers);
             line.run();
@@ -368,7 +372,7 @@ fn trapezoids_planned(
 ) -> Vec<Trapezoid> {
     let (a, b, op) = reduced(plan.route, subject, clip, prepared, op, fill);
     let sweep = plan.sweep_for(edge_count(&a) + edge_count(&b));
-    Vatti::sweep(sweep, &a, &b, op, fill, true, |_, _, _, traps| traps)
+    Vatti::sweep(sweep, &a, &b, op, fill, true, false, |_, _, _, traps| traps)
 }
 
 impl PolygonClipper for Vatti {

@@ -377,7 +377,7 @@ mod tests {
         check: &mut impl FnMut(&RawRings),
     ) {
         for sweep in [Sweep::Events, Sweep::Scanbeam] {
-            crate::Vatti::sweep(sweep, subject, clip, op, fill, false, |raw, _, _, _| check(raw));
+            crate::Vatti::sweep(sweep, subject, clip, op, fill, false, false, |raw, _, _, _| check(raw));
         }
     }
 
