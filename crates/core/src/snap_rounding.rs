@@ -47,9 +47,17 @@ pub fn snap_round(subject: &Polygons, clip: &Polygons, pixel: f64) -> Result<(Po
     for (operand, polygons) in [(Operand::Subject, subject), (Operand::Clip, clip)] {
         check_on_grid(operand, polygons, pixel)?;
     }
-    let rings: Vec<&Ring> = subject.rings.iter().chain(&clip.rings).collect();
-    let mut snapped = snap_rings(&rings, pixel).into_iter();
-    let mut take = |n: usize| Polygons::new(snapped.by_ref().take(n).flatten().map(Ring::new).collect());
+    // Decided in pixel units (dividing by a power of two is exact): there every coordinate is
+    // below 2^51, so the degree-three crossing predicates stay finite whatever the pixel (in
+    // world units they overflow for coordinates beyond about 1e100). Grid points times the pixel
+    // are exact again.
+    let in_pixels = |r: &Ring| Ring::new(r.points.iter().map(|p| Point::new(p.x / pixel, p.y / pixel)).collect());
+    let rings: Vec<Ring> = subject.rings.iter().chain(&clip.rings).map(in_pixels).collect();
+    let rings: Vec<&Ring> = rings.iter().collect();
+    let in_world =
+        |points: Vec<Point>| Ring::new(points.into_iter().map(|p| Point::new(p.x * pixel, p.y * pixel)).collect());
+    let mut snapped = snap_rings(&rings, 1.0).into_iter();
+    let mut take = |n: usize| Polygons::new(snapped.by_ref().take(n).flatten().map(in_world).collect());
     let a = take(subject.rings.len());
     let b = take(clip.rings.len());
     Ok((a, b))
@@ -326,6 +334,22 @@ mod tests {
         let (a, b) = snap_round(subject, clip, s).expect("valid input");
         assert_noded(&[&a, &b]);
         (a, b)
+    }
+
+    /// Found by the `vatti` fuzz target (unions at 1e114-1e141, whose snap fallback's output
+    /// crossed itself): in world units the crossing predicates' degree-three terms overflow
+    /// beyond about 1e100, and crossings went into the wrong pixels.
+    #[test]
+    fn rings_far_beyond_1e100_are_noded() {
+        for seed in 1..=20u64 {
+            let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+            let scale = 1e141;
+            let subject = Polygons::new(vec![random_ring(&mut rng, 12, scale)]);
+            let clip = Polygons::new(vec![random_ring(&mut rng, 12, scale)]);
+            let s = 2f64.powi(((scale.log2().ceil()) as i32) - 50);
+            let (a, b) = snap_round(&subject, &clip, s).expect("valid input");
+            assert_noded(&[&a, &b]);
+        }
     }
 
     #[test]

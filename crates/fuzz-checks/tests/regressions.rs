@@ -476,3 +476,24 @@ fn vatti_snapped_self_crossing_xor_near_4e6() {
 fn vatti_triangles_whose_corners_touch_other_rings_at_1e149() {
     regression("vatti", "triangles-whose-corners-touch-other-rings-at-1e149");
 }
+
+/// An intersection near 1e141 whose snap fallback's output crossed itself: `snap_round` decided
+/// which pixel holds a crossing with predicates whose degree-three terms overflow beyond about
+/// 1e100, so crossings went into the wrong pixels and the snapped operands still crossed.
+/// `snap_round` now decides in pixel units, where every coordinate is below 2^51.
+#[test]
+fn vatti_snapped_intersection_crossing_itself_at_1e141() {
+    regression("vatti", "snapped-intersection-crossing-itself-at-1e141");
+}
+
+/// The same fault in an xor: two of the fallback's rings crossed.
+#[test]
+fn vatti_snapped_xor_rings_crossing_beyond_1e100() {
+    regression("vatti", "snapped-xor-rings-crossing-beyond-1e100");
+}
+
+/// The same fault in a union: two of the fallback's rings overlapped along an edge.
+#[test]
+fn vatti_snapped_union_rings_overlapping_beyond_1e100() {
+    regression("vatti", "snapped-union-rings-overlapping-beyond-1e100");
+}
