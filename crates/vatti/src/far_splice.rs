@@ -16,8 +16,8 @@
 
 use std::collections::HashMap;
 
-use clip_core::predicates::{Orientation, orient};
-use clip_core::{BoolOp, FillRule, MIN_COORDINATE, Point, Polygons, Rect, Ring};
+use clip_core::predicates::{Orientation, on_segment, orient};
+use clip_core::{BoolOp, CellIndex, FillRule, MIN_COORDINATE, Point, Polygons, Rect, Ring, Segment};
 
 use crate::edge_blocks::EdgeBlocks;
 use crate::envelope::{Envelope, Stretch, grown, sunday};
@@ -397,7 +397,7 @@ fn join(
         return None;
     }
     let mut done = vec![false; chains.len()];
-    let (mut sources, mut far_sources) = (Vec::new(), Vec::new());
+    let (mut sources, mut far_sources, mut runs) = (Vec::new(), Vec::new(), Vec::new());
     for first in 0..chains.len() {
         if done[first] {
             continue;
@@ -405,6 +405,7 @@ fn join(
         let (mut ring, mut k) = (Vec::new(), first);
         sources.clear();
         far_sources.clear();
+        runs.clear();
         loop {
             if std::mem::replace(&mut done[k], true) {
                 return None;
@@ -415,6 +416,7 @@ fn join(
             ring.extend((0..ch.count).map(|d| pts[(ch.first + d) % n]));
             far_sources.push(ch.ring);
             let run = run_after[k]?;
+            runs.push((ring.len(), ring.len() + run.to - run.from));
             ring.extend_from_slice(&verts[run.from..run.to]);
             sources.push(run.source);
             k = run.next;
@@ -430,13 +432,36 @@ fn join(
             v.len() > 1
         };
         let (a, b) = (joined(&mut sources), joined(&mut far_sources));
-        if ring.len() < 3 || ((a || b) && visits_twice(&ring)) {
+        if ring.len() < 3 || ((a || b) && (visits_twice(&ring) || on_own_edge(&ring, &runs))) {
             return None;
         }
         out.push(Ring { points: ring });
     }
     out.extend(far_rings.iter().map(|&k| far.rings[k].clone()));
     Some(Polygons::new(out))
+}
+
+/// True when a vertex of the ring's `runs` (index ranges of the local sweep's vertices) lies inside
+/// one of the ring's edges at a run (the runs' own and the two joining each to its chains):
+/// swept rings may touch at a vertex of one inside an edge of the other, and joined into one
+/// ring they would visit that point twice. Only run edges can hold a run vertex: the chains lie
+/// outside the box. Pairs come from a cell index over those edges' boxes.
+fn on_own_edge(ring: &[Point], runs: &[(usize, usize)]) -> bool {
+    let n = ring.len();
+    let starts: Vec<usize> = runs.iter().flat_map(|&(from, to)| (from..=to).map(move |i| (i + n - 1) % n)).collect();
+    let edge = |i: usize| Segment::new(ring[i], ring[(i + 1) % n]);
+    let boxes: Vec<Rect> = starts.iter().map(|&i| edge(i).bounds()).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return false };
+    runs.iter().flat_map(|&(from, to)| from..to).any(|v| {
+        let p = ring[v];
+        let mut inside = false;
+        index.for_each_meeting(&boxes, &Rect::new(p.x, p.y, p.x, p.y), |k| {
+            let i = starts[k];
+            let e = edge(i);
+            inside |= i != v && (i + 1) % n != v && p != e.a && p != e.b && on_segment(p, e);
+        });
+        inside
+    })
 }
 
 /// True when the ring has a vertex twice.
@@ -453,6 +478,29 @@ mod tests {
     use clip_core::WindowKind;
     use clip_oracle::polygon::{REGION_TOLERANCE, same_region, tolerance};
     use clip_testkit::workload::polygon_case;
+
+    /// From `grid` case 13087 of seed 1 (20000 cases), union, even-odd: the local sweep's two
+    /// rings touch where a vertex of one lies inside an edge of the other, at (2, 2); the far
+    /// chains joined them into one ring that visited (2, 2) twice. Now the plain sweep runs.
+    #[test]
+    fn rings_touching_inside_an_edge_are_not_joined_into_one() {
+        let r = |p: &[(f64, f64)]| Ring::new(p.iter().map(|&(x, y)| Point::new(x, y)).collect());
+        let subject = Polygons::new(vec![r(&[(2., 0.), (3., 4.), (2., 4.)])]);
+        let clip = Polygons::new(vec![
+            r(&[(0., 2.), (5., 2.), (2., 4.), (2., 5.)]),
+            r(&[(2., 5.), (2., 4.), (1., 3.), (2., 2.), (6., 2.)]),
+        ]);
+        let fill = FillRule::EvenOdd;
+        let far = Vatti::prepare(&clip, fill).unwrap().resolved().rings.clone();
+        let sweep = |a: &Polygons, b: &Polygons, op| Vatti.clip_along(Route::Whole, None, a, b, op, fill).unwrap();
+        let far = Far { rings: &far, blocks: None };
+        assert!(splice(&subject, far, false, BoolOp::Union, fill, sweep).is_none());
+        let prepared = Vatti::prepare(&clip, fill).unwrap();
+        for op in [BoolOp::Union, BoolOp::Xor] {
+            let out = prepared.clip(&subject, op).unwrap();
+            clip_oracle::polygon::check_valid_output(&out).unwrap_or_else(|e| panic!("{op:?}: {e:?}"));
+        }
+    }
 
     #[test]
     fn many_subjects_unions_and_xors_splice_and_match_the_plain_sweep() {
