@@ -22,6 +22,7 @@ use serde::Serialize;
 use crate::checks::run_polygon;
 use crate::cli_error::CliError;
 use crate::console;
+use crate::partition::Partition;
 use crate::registry::{PolygonEntry, Registry};
 use crate::results_files::atlas::RefereeTally;
 use crate::write::write_file;
@@ -45,6 +46,12 @@ pub struct RefereeArgs {
     /// Worker threads, 1 to 1024 (default: one per core). The result does not depend on it.
     #[arg(long, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=crate::verify::MAX_THREADS as u64))]
     pub threads: Option<usize>,
+    /// Run only part K of N of the cases (case j of the run's list, workload by workload and
+    /// index by index from 0, is in part j mod N + 1), so that a long run can be split over
+    /// jobs or sessions; the report joins the parts' JSON files (all N in one folder) into the
+    /// tally of the whole run.
+    #[arg(long, value_name = "K/N")]
+    pub partition: Option<Partition>,
     /// Also write the summary and every case beyond rounding as JSON to this file.
     #[arg(long, value_name = "FILE")]
     pub json: Option<PathBuf>,
@@ -99,6 +106,8 @@ struct RefereeFile<'a> {
     referee: &'a str,
     seed: u64,
     cases_per_workload: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    partition: Option<Partition>,
     workloads: &'a [RefereeTally],
     beyond_rounding: Vec<&'a Comparison>,
     failures: &'a [(String, String)],
@@ -138,8 +147,13 @@ pub fn run(args: &RefereeArgs, registry: &Registry) -> Result<ExitCode, CliError
             })
             .collect::<Result<_, _>>()?
     };
-    let items: Vec<(&'static str, usize)> =
-        workloads.iter().flat_map(|&w| (0..args.cases).map(move |i| (w, i))).collect();
+    let items: Vec<(&'static str, usize)> = workloads
+        .iter()
+        .flat_map(|&w| (0..args.cases).map(move |i| (w, i)))
+        .enumerate()
+        .filter(|&(j, _)| args.partition.is_none_or(|p| p.keeps(j)))
+        .map(|(_, item)| item)
+        .collect();
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.threads.unwrap_or(0))
         .build()
@@ -204,6 +218,7 @@ pub fn run(args: &RefereeArgs, registry: &Registry) -> Result<ExitCode, CliError
             referee: &args.referee,
             seed: args.seed,
             cases_per_workload: args.cases,
+            partition: args.partition,
             workloads: &tallies,
             beyond_rounding: beyond.iter().collect(),
             failures: &failures,

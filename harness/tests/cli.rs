@@ -1209,6 +1209,25 @@ fn referee_sets_a_clippers_areas_against_the_oracle_within_rounding() {
     let star = &file["workloads"][0];
     assert_eq!((star["cases"].as_u64(), star["compared"].as_u64()), (Some(3), Some(48)), "{star}");
     assert!(star["largest_of_bound"].as_f64().unwrap() <= 1.0, "{star}");
+    // Part 2 of 2 runs cases 1 of star's three (positions 0, 1, 2: the odd ones).
+    let part = dir.join("referee.part-2.json");
+    let o = clipbench(&[
+        "referee",
+        "--referee",
+        "vatti",
+        "--workload",
+        "star",
+        "--cases",
+        "3",
+        "--partition",
+        "2/2",
+        "--json",
+        part.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}\n{}", stdout(&o), stderr(&o));
+    let file: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&part).unwrap()).unwrap();
+    assert_eq!(file["partition"], serde_json::json!({"k": 2, "n": 2}), "{file}");
+    assert_eq!(file["workloads"][0]["cases"].as_u64(), Some(1), "{file}");
     let unknown = clipbench(&["referee", "--referee", "no-such", "--cases", "1"]);
     assert_eq!(unknown.status.code(), Some(2));
     assert!(stderr(&unknown).contains("no-such"), "{}", stderr(&unknown));

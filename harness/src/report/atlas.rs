@@ -151,12 +151,36 @@ impl Atlas {
             (None, BTreeMap::new())
         };
         let mut referee: BTreeMap<String, (usize, String, RefereeTally)> = BTreeMap::new();
+        let mut keep = |n: usize, name: &str, t: RefereeTally| {
+            if referee.get(&t.workload).is_none_or(|kept| n > kept.0) {
+                referee.insert(t.workload.clone(), (n, name.to_owned(), t));
+            }
+        };
+        // Parts of one run (`referee --partition K/N`), joined once all N are there: by cases,
+        // referee, workload and N, the parts seen and the tally so far.
+        type PartKey = (usize, String, String, usize);
+        let mut parts: BTreeMap<PartKey, (Vec<usize>, RefereeTally)> = BTreeMap::new();
         for (n, path) in json_files(atlas, REFEREE_PREFIX)? {
             let results: RefereeResults = read_json(&path, "a referee summary")?;
             for t in results.workloads {
-                if referee.get(&t.workload).is_none_or(|kept| n > kept.0) {
-                    referee.insert(t.workload.clone(), (n, results.referee.clone(), t));
+                match results.partition {
+                    None => keep(n, &results.referee, t),
+                    Some(p) => {
+                        let key = (n, results.referee.clone(), t.workload.clone(), p.n);
+                        let (seen, joined) = parts.entry(key).or_insert_with(|| {
+                            (Vec::new(), RefereeTally { workload: t.workload.clone(), ..RefereeTally::default() })
+                        });
+                        if !seen.contains(&p.k) {
+                            seen.push(p.k);
+                            joined.join(&t);
+                        }
+                    }
                 }
+            }
+        }
+        for ((n, name, _, count), (seen, joined)) in parts {
+            if seen.len() == count {
+                keep(n, &name, joined);
             }
         }
         Ok(Atlas { described, verify, conformance, hostile, speed, speed_points, referee })
@@ -639,6 +663,41 @@ mod tests {
         }
         assert_eq!(atlas.notes("vatti"), "no failure found");
         assert_eq!(atlas.notes("clipper2"), "", "it ran nowhere: nothing to say");
+    }
+
+    /// `referee --partition K/N` parts: joined once all N are in the folder, and a run missing a
+    /// part counts for nothing.
+    #[test]
+    fn referee_parts_are_joined_only_when_all_are_there() {
+        let results = synthetic("parts");
+        let atlas_dir = results.join(FOLDER);
+        let part = |file: &str, k: usize, n: usize, cases: usize, largest: f64, beyond: usize| {
+            write(
+                &atlas_dir.join(file),
+                &format!(
+                    r#"{{"referee": "cgal", "seed": 1, "cases_per_workload": 80, "partition": {{"k": {k}, "n": {n}}},
+                       "workloads": [{{"workload": "WORKLOAD", "cases": {cases}, "compared": {}, "failed": 1,
+                       "largest_relative": {largest}, "largest_of_bound": 0.5, "beyond_rounding": {beyond}}}],
+                       "beyond_rounding": [], "failures": []}}"#,
+                    cases * 16
+                ),
+            )
+        };
+        // star: both parts of two; holes: one part of two only.
+        part("referee-80/star.part-1.json", 1, 2, 40, 1e-13, 0);
+        part("referee-80/star.part-2.json", 2, 2, 40, 3e-13, 1);
+        part("referee-80/holes.part-1.json", 1, 2, 40, 1e-13, 0);
+        for file in ["referee-80/star.part-1.json", "referee-80/star.part-2.json", "referee-80/holes.part-1.json"] {
+            let path = atlas_dir.join(file);
+            let text = std::fs::read_to_string(&path).unwrap();
+            let workload = if file.contains("star") { "star" } else { "holes" };
+            write(&path, &text.replace("WORKLOAD", workload));
+        }
+        let atlas = read_synthetic(&results);
+        let joined = &atlas.referee["star"].2;
+        assert_eq!((joined.cases, joined.compared, joined.failed, joined.beyond_rounding), (80, 1280, 2, 1));
+        assert_eq!(joined.largest_relative, 3e-13);
+        assert!(!atlas.referee.contains_key("holes"), "one part of two is not a run");
     }
 
     #[test]

@@ -138,6 +138,19 @@ pub struct RefereeTally {
     pub beyond_rounding: usize,
 }
 
+impl RefereeTally {
+    /// Adds another part's tally of the same workload (`referee --partition`): counts add up,
+    /// the largest differences are the larger of the two.
+    pub fn join(&mut self, part: &RefereeTally) {
+        self.cases += part.cases;
+        self.compared += part.compared;
+        self.failed += part.failed;
+        self.largest_relative = self.largest_relative.max(part.largest_relative);
+        self.largest_of_bound = self.largest_of_bound.max(part.largest_of_bound);
+        self.beyond_rounding += part.beyond_rounding;
+    }
+}
+
 /// The part of `referee --json` the report reads.
 #[derive(Clone, Debug, Deserialize)]
 pub struct RefereeResults {
@@ -145,6 +158,9 @@ pub struct RefereeResults {
     pub referee: String,
     /// Cases per workload asked for.
     pub cases_per_workload: usize,
+    /// The part of the cases run (`referee --partition K/N`), none for all of them.
+    #[serde(default)]
+    pub partition: Option<crate::partition::Partition>,
     /// One tally per workload.
     pub workloads: Vec<RefereeTally>,
 }
