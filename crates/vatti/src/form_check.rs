@@ -10,7 +10,10 @@
 //! faults, so that `snap_fallback` can replace them: in outputs of at most [`MAX_EDGES`] edges
 //! with a pair of near vertices or a near miss, and of at most [`MAX_SCANNED_EDGES`] with a short
 //! edge or thin ring (a scan of its own over every output edge, where the near-vertex test rides
-//! on the clean-up's order). Larger outputs are not checked (a known limit).
+//! on the clean-up's order). Larger outputs are not checked (a known limit), except near the
+//! sweep's near crossings (several edges through one point, their pairwise crossings rounded a
+//! few ulps apart: a ring can then cross itself with no vertex near another), where
+//! [`crossing_near`] tests the edges passing there in outputs of any size.
 
 use clip_core::{
     CellIndex, Point, Polygons, Rect, Ring, Segment, SegmentIntersection, ring_winding, segment_intersection,
@@ -18,6 +21,7 @@ use clip_core::{
 
 use crate::cleanup::cross_at_shared_points;
 use crate::raw_rings::RawRings;
+use crate::sweep::NEAR_CROSSINGS_ULPS;
 
 /// The most output edges checked: the pair test goes through a cell index, near linear on
 /// most outputs but quadratic where many long edges share cells.
@@ -160,31 +164,102 @@ fn reaches_rounding<'a>(subject: &Polygons, clip: &Polygons, rings: impl Iterato
 /// Two edges crossing, two edges overlapping (conventional output shares no stretch between
 /// rings: two outers would be one, a hole along its outer a notch), or a ring meeting itself away
 /// from its own vertices' neighbours (it may visit a point once). Rings may touch at points.
-/// Pairs come from a cell index over the edges' boxes: near linear unless many long edges
-/// share cells.
 fn crossing_or_overlapping(rings: &[Ring]) -> bool {
-    let edges: Vec<(usize, usize, Segment)> =
+    let edges =
         rings.iter().enumerate().flat_map(|(r, ring)| ring.edges().enumerate().map(move |(i, s)| (r, i, s))).collect();
-    let boxes: Vec<Rect> = edges.iter().map(|e| e.2.bounds()).collect();
-    let Some(index) = CellIndex::new(&boxes) else { return false };
+    pair_broken(rings, edges)
+}
+
+/// Whether output edges passing within [`NEAR_CROSSINGS_ULPS`] ulps of one of the sweep's
+/// `near_crossings` (crossings of several edges through one point, rounded a few ulps apart)
+/// cross, overlap or meet their own ring there, as [`crossing_or_overlapping`] tests every edge.
+/// Those points are where the output can break with no near vertices or short edge to show it,
+/// and only the edges passing near them are tested: one pass over the output's edges, each
+/// each edge's x range tested against the points' first.
+pub(crate) fn crossing_near(rings: &[Ring], near_crossings: &[Point]) -> bool {
+    if near_crossings.is_empty() {
+        return false;
+    }
+    let mut pts = near_crossings.to_vec();
+    pts.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    pts.dedup();
+    let largest = pts.iter().fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
+    let reach = NEAR_CROSSINGS_ULPS * f64::EPSILON * largest;
+    // The points' x ranges within reach, merged: the points come in clusters (several edges
+    // through one point), so there are few.
+    let mut spans: Vec<(f64, f64)> = Vec::new();
+    for q in &pts {
+        match spans.last_mut() {
+            Some(last) if q.x - reach <= last.1 => last.1 = q.x + reach,
+            _ => spans.push((q.x - reach, q.x + reach)),
+        }
+    }
+    let mut edges = Vec::new();
+    for (r, ring) in rings.iter().enumerate() {
+        let p = &ring.points;
+        let Some(&last) = p.last() else { continue };
+        // Edge `i - 1` runs from `a` to `b = p[i]`; the first is the ring's last (closing) edge.
+        let mut a = last;
+        for (i, &b) in p.iter().enumerate() {
+            let (ax, bx) = if a.x <= b.x { (a.x, b.x) } else { (b.x, a.x) };
+            // Most edges have no point within reach of their x range.
+            let hit = if spans.len() <= SMALL_PAIR_TEST {
+                spans.iter().any(|&(lo, hi)| lo <= bx && hi >= ax)
+            } else {
+                spans.get(spans.partition_point(|s| s.1 < ax)).is_some_and(|s| s.0 <= bx)
+            };
+            if hit && passes_near(a, b, &pts, reach) {
+                edges.push((r, if i == 0 { p.len() - 1 } else { i - 1 }, Segment::new(a, b)));
+            }
+            a = b;
+        }
+    }
+    edges.len() > 1 && pair_broken(rings, edges)
+}
+
+/// Whether one of `pts` (in x order) lies within `reach` of the edge from `a` to `b`: within its
+/// box, then within `reach` of its line (generously, in the max norm).
+fn passes_near(a: Point, b: Point, pts: &[Point], reach: f64) -> bool {
+    let (ax, bx) = (a.x.min(b.x), a.x.max(b.x));
+    let (ay, by) = (a.y.min(b.y), a.y.max(b.y));
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let length = dx.abs().max(dy.abs());
+    let first = pts.partition_point(|q| q.x < ax - reach);
+    pts[first..].iter().take_while(|q| q.x <= bx + reach).any(|q| {
+        q.y >= ay - reach && q.y <= by + reach && (dx * (q.y - a.y) - dy * (q.x - a.x)).abs() <= 2.0 * reach * length
+    })
+}
+
+/// [`crossing_or_overlapping`] over `edges` (ring, index in it, segment) of `rings`. Pairs come
+/// from a cell index over the edges' boxes: near linear unless many long edges share cells.
+fn pair_broken(rings: &[Ring], edges: Vec<(usize, usize, Segment)>) -> bool {
     let neighbours = |r: usize, i: usize, j: usize| {
         let n = rings[r].len();
         (i + 1) % n == j || (j + 1) % n == i
     };
-    index
-        .try_for_each_close_pair(&boxes, |a, b| {
-            let ((r, i, s), (q, j, t)) = (edges[a], edges[b]);
-            if r == q && neighbours(r, i, j) {
-                return Ok(());
-            }
-            match segment_intersection(s, t) {
-                SegmentIntersection::Crossing(_) | SegmentIntersection::Overlap(_) => Err(()),
-                SegmentIntersection::Touching(_) if r == q => Err(()),
-                _ => Ok(()),
-            }
-        })
-        .is_err()
+    let broken = |a: usize, b: usize| {
+        let ((r, i, s), (q, j, t)) = (edges[a], edges[b]);
+        if r == q && neighbours(r, i, j) {
+            return false;
+        }
+        match segment_intersection(s, t) {
+            SegmentIntersection::Crossing(_) | SegmentIntersection::Overlap(_) => true,
+            SegmentIntersection::Touching(_) => r == q,
+            _ => false,
+        }
+    };
+    // A few edges (those near rounded crossings): every pair, without building an index.
+    if edges.len() <= SMALL_PAIR_TEST {
+        let meet = |a: usize, b: usize| edges[a].2.bounds().intersects(&edges[b].2.bounds());
+        return (0..edges.len()).any(|a| (a + 1..edges.len()).any(|b| meet(a, b) && broken(a, b)));
+    }
+    let boxes: Vec<Rect> = edges.iter().map(|e| e.2.bounds()).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return false };
+    index.try_for_each_close_pair(&boxes, |a, b| if broken(a, b) { Err(()) } else { Ok(()) }).is_err()
 }
+
+/// Edge lists up to this long are tested pair by pair rather than through a cell index.
+const SMALL_PAIR_TEST: usize = 32;
 
 /// A ring whose orientation disagrees with the number of other rings around it (outers, at
 /// even depth, counter-clockwise; holes clockwise). Each ring is placed by its first vertex off
@@ -291,6 +366,36 @@ mod tests {
         let mut turned = rings.clone();
         turned[0].points.reverse();
         assert!(broken_near_rounding(&input, &Polygons::default(), &turned, true));
+    }
+
+    /// From `grid` case 449 of seed 1 (20000 cases), xor, non-zero: three edges pass through
+    /// (13⅓, 16⅚), and the ring's edge along one of them passes beside the rounded crossing of
+    /// the other two, which is its own vertex: it crosses itself, with no vertex near another.
+    #[test]
+    fn a_ring_crossing_itself_at_near_crossings_is_found_there() {
+        let ring = Ring::new(
+            [
+                (13.0, 18.0),
+                (13.084444444444445, 16.817777777777778),
+                (14.0, 16.875),
+                (14.0, 17.0),
+                (13.333333333333334, 16.833333333333332),
+            ]
+            .iter()
+            .map(|&(x, y)| Point::new(x, y))
+            .collect(),
+        );
+        let rings = [ring];
+        let near =
+            [Point::new(13.333333333333334, 16.833333333333332), Point::new(13.333333333333332, 16.833333333333332)];
+        assert!(crossing_near(&rings, &near));
+        // The same ring with the near crossings elsewhere is not looked at.
+        let elsewhere = [Point::new(3.0, 3.0), Point::new(3.0000000000000004, 3.0)];
+        assert!(!crossing_near(&rings, &elsewhere));
+        assert!(!crossing_near(&rings, &[]));
+        // A ring through the point without crossing itself passes.
+        let square = [square(13.0, 16.0, 1.0, true)];
+        assert!(!crossing_near(&square, &near));
     }
 
     #[test]

@@ -125,7 +125,9 @@
 //!   exactly); outputs near rounding also get a full exact check of their form (`form_check`:
 //!   up to 65,536 edges where two distinct vertices lie within 4096 ulps of the inputs' largest
 //!   coordinate of each other or the sweep met a near miss, up to 1024 where an edge or a ring is
-//!   that short or thin). Where the sweep
+//!   that short or thin), and every output, whatever its size, gets an exact check of the edges
+//!   passing near crossings taken one after another within 16 ulps of each other (several edges
+//!   through one point that f64 cannot hold: `form_check::crossing_near`). Where the sweep
 //!   left a point near an edge but off it (a near miss), the clean-up also splits slanted edges
 //!   at the vertices on them, so rounded edges through exact vertices cancel or are reported like
 //!   horizontal ones. A broken output is replaced once, by the sweep of both operands snap
@@ -135,8 +137,8 @@
 //!   taking no exact point for a rounded one) rounds nothing, and its output is valid by
 //!   construction; each of its vertices is within `s·√2/2` of the exact vertex or crossing.
 //!   Outputs not reported broken are returned as the first sweep made them. Known limit: an
-//!   output broken between rings that share no point, with no near vertices and over 1024 edges
-//!   (or over 65,536), is not found.
+//!   output broken between rings that share no point, away from near crossings, with no near
+//!   vertices and over 1024 edges (or over 65,536), is not found.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
@@ -272,9 +274,11 @@ impl Vatti {
         // Not strict: the snap fallback's operands, noded (their straight-through vertices stay).
         let noded = !strict;
         Vatti::sweep(sweep, subject, clip, op, fill, false, noded, |rings, touches, turns, _| {
-            let clean = cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
+            let mut clean = cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
                 form_check::raw_near_rounding(subject, clip, rings)
             });
+            clean.broken_form |=
+                strict && !clean.broken_form && form_check::crossing_near(&clean.rings, &rings.near_crossings);
             // Already broken: the fallback runs anyway, so the near test would be wasted.
             let near = strict
                 && !clean.broken_form

@@ -18,6 +18,8 @@ pub(crate) struct RawRings {
     /// The sweep's [`crate::output::OutputBuilder::near_miss`]: every edge is split at the
     /// points on it.
     pub near_miss: bool,
+    /// The sweep's [`crate::output::OutputBuilder::near_crossings`].
+    pub near_crossings: Vec<Point>,
 }
 
 impl RawRings {
@@ -28,6 +30,7 @@ impl RawRings {
         self.emitted.clear();
         self.stamps = 0;
         self.near_miss = false;
+        self.near_crossings.clear();
     }
 
     /// Number of rings.

@@ -19,6 +19,11 @@ use crate::output::OutputBuilder;
 use crate::scanbeam::{Scanbeams, height, height_key};
 use crate::small_sort::insertion_sorted_by;
 
+/// Crossings at computed points this many ulps of their magnitude apart or closer, taken one
+/// after another, go to `OutputBuilder::near_crossings`: the pairwise crossings of edges through
+/// one point round an ulp or two apart.
+pub(crate) const NEAR_CROSSINGS_ULPS: f64 = 16.0;
+
 /// How the sweep finds the edges that end on a scanline and the crossings between scanlines.
 /// Both give the same output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -110,6 +115,8 @@ pub(crate) struct SweepLine<'a> {
     /// join the chain of an edge it lies within rounding of; any other point is an exact input
     /// vertex.
     pub(crate) rounded_crossing: bool,
+    /// The last crossing taken, for `OutputBuilder::near_crossings`.
+    last_crossing: Point,
 }
 
 impl<'a> SweepLine<'a> {
@@ -170,6 +177,7 @@ impl<'a> SweepLine<'a> {
             settle,
             slides,
             rounded_crossing: false,
+            last_crossing: Point::new(f64::NAN, f64::NAN),
         }
     }
 
@@ -631,15 +639,37 @@ impl<'a> SweepLine<'a> {
 
     /// The crossing of `left` and its right neighbour at the computed point `p`, after the
     /// slab of trapezoids below it.
-    #[inline]
+    #[inline(always)]
     fn crossing(&mut self, left: u32, p: Point, y_prev: &mut f64) {
         if self.traps.is_some() && p.y > *y_prev {
             self.emit_slab(*y_prev, p.y);
             *y_prev = p.y;
         }
+        let (q, reach) = (self.last_crossing, NEAR_CROSSINGS_ULPS * f64::EPSILON * p.x.abs().max(p.y.abs()));
+        self.last_crossing = p;
+        if (p.x - q.x).abs() <= reach && (p.y - q.y).abs() <= reach {
+            self.near_crossing(left, p, q);
+        }
         self.rounded_crossing = true;
         self.cross(left, p);
         self.rounded_crossing = false;
+    }
+
+    /// Notes crossing `p` of `left` and its right neighbour, taken right after the crossing `q`
+    /// at or within `NEAR_CROSSINGS_ULPS` of it, in `OutputBuilder::near_crossings` unless `p`
+    /// lies exactly on both edges (one of their ends, or a crossing f64 holds: grids): then the
+    /// edges through it all meet at it.
+    #[cold]
+    #[inline(never)]
+    fn near_crossing(&mut self, left: u32, p: Point, q: Point) {
+        let right = self.ael.next(left);
+        let on = |id: u32| {
+            let e = self.ael.get(id);
+            p == e.bot || p == e.top || e.side_of(p) == Orientation::Collinear
+        };
+        if !(on(left) && on(right)) {
+            self.out.near_crossings.extend([q, p]);
+        }
     }
 
     /// Tests every pair of edges that became adjacent since the last test, queueing the
