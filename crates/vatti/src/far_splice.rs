@@ -16,8 +16,10 @@
 
 use std::collections::HashMap;
 
-use clip_core::predicates::{Orientation, on_segment, orient};
-use clip_core::{BoolOp, CellIndex, FillRule, MIN_COORDINATE, Point, Polygons, Rect, Ring, Segment};
+use clip_core::predicates::{Orientation, on_segment, orient, segment_intersection};
+use clip_core::{
+    BoolOp, CellIndex, FillRule, MIN_COORDINATE, Point, Polygons, Rect, Ring, Segment, SegmentIntersection,
+};
 
 use crate::edge_blocks::EdgeBlocks;
 use crate::envelope::{Envelope, Stretch, grown, sunday};
@@ -392,6 +394,7 @@ fn join(
             }
         }
     }
+    let inside = InsideEdges::of(swept, &b);
     let chain_winding: i32 = chains.iter().map(|ch| ch.crossings).sum();
     if chain_winding + far_winding != border_winding {
         return None;
@@ -435,10 +438,50 @@ fn join(
         if ring.len() < 3 || ((a || b) && (visits_twice(&ring) || on_own_edge(&ring, &runs))) {
             return None;
         }
+        if joins_cross(&ring, &runs, &inside) {
+            return None;
+        }
         out.push(Ring { points: ring });
     }
     out.extend(far_rings.iter().map(|&k| far.rings[k].clone()));
     Some(Polygons::new(out))
+}
+
+/// The swept rings' edges with neither end on the box's border, in a cell index: what stays of
+/// the local result inside the box.
+struct InsideEdges {
+    edges: Vec<Segment>,
+    boxes: Vec<Rect>,
+    index: Option<CellIndex>,
+}
+
+impl InsideEdges {
+    fn of(swept: &Polygons, b: &Rect) -> InsideEdges {
+        let edges: Vec<Segment> = swept.edges().filter(|e| on_sides(e.a, b) == 0 && on_sides(e.b, b) == 0).collect();
+        let boxes: Vec<Rect> = edges.iter().map(Segment::bounds).collect();
+        let index = CellIndex::new(&boxes);
+        InsideEdges { edges, boxes, index }
+    }
+}
+
+/// True when an edge joining a far chain to a run (it crosses the border: the far operand's own
+/// edge, restored) crosses or overlaps an edge the local sweep left inside the box. The sweep cut
+/// that far edge at a rounded point of the border, so crossings it computed along it can lie an
+/// ulp or so off the restored edge, on the wrong side of it.
+fn joins_cross(ring: &[Point], runs: &[(usize, usize)], inside: &InsideEdges) -> bool {
+    let Some(index) = &inside.index else { return false };
+    let n = ring.len();
+    runs.iter().flat_map(|&(from, to)| [(from + n - 1) % n, (to + n - 1) % n]).any(|i| {
+        let join = Segment::new(ring[i], ring[(i + 1) % n]);
+        let mut crossed = false;
+        index.for_each_meeting(&inside.boxes, &join.bounds(), |k| {
+            crossed |= matches!(
+                segment_intersection(join, inside.edges[k]),
+                SegmentIntersection::Crossing(_) | SegmentIntersection::Overlap(_)
+            );
+        });
+        crossed
+    })
 }
 
 /// True when a vertex of the ring's `runs` (index ranges of the local sweep's vertices) lies inside

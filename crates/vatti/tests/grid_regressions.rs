@@ -129,3 +129,15 @@ fn swept_rings_touching_inside_an_edge_stay_apart_through_the_splice() {
     ]);
     assert_passes_both(&subject, &clip);
 }
+
+/// `verify --cases 20000`, case 17339, union, even-odd (vatti-prepared), shrunk: the splice cut
+/// the clip's edge (1, 1)-(2, 4) at a rounded point of the box's border, the local sweep crossed
+/// that cut edge with the subject's y = 2 at (1.3333333333333335, 2), an ulp right of the restored
+/// edge, which then crossed the edge ending there. A joining edge crossing an edge left inside
+/// the box now sends the call to the plain sweep.
+#[test]
+fn a_crossing_computed_on_a_cut_edge_does_not_cross_the_restored_edge() {
+    let subject = polygons(&[&[(0.0, 2.0), (4.0, 0.0), (0.0, 3.0), (0.0, 0.0), (3.0, 2.0)]]);
+    let clip = polygons(&[&[(1.0, 1.0), (2.0, 4.0), (1.0, 0.0)]]);
+    assert_passes_both(&subject, &clip);
+}
