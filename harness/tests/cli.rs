@@ -1192,40 +1192,22 @@ fn hostile_sorts_every_call_of_each_clipper_into_one_outcome() {
 #[test]
 fn referee_sets_a_clippers_areas_against_the_oracle_within_rounding() {
     let dir = scratch("referee");
-    let json = dir.join("referee.json");
-    let o = clipbench(&[
-        "referee",
-        "--referee",
-        "vatti",
-        "--workload",
-        "star",
-        "--cases",
-        "3",
-        "--json",
-        json.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}\n{}", stdout(&o), stderr(&o));
-    let file: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    // vatti as the referee of star's first three cases, with `extra` options; the JSON it wrote.
+    let referee = |file: &str, extra: &[&str]| {
+        let json = dir.join(file);
+        let mut args = vec!["referee", "--referee", "vatti", "--workload", "star", "--cases", "3"];
+        args.extend_from_slice(extra);
+        args.extend(["--json", json.to_str().unwrap()]);
+        let o = clipbench(&args);
+        assert!(o.status.success(), "{}\n{}", stdout(&o), stderr(&o));
+        serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&json).unwrap()).unwrap()
+    };
+    let file = referee("referee.json", &[]);
     let star = &file["workloads"][0];
     assert_eq!((star["cases"].as_u64(), star["compared"].as_u64()), (Some(3), Some(48)), "{star}");
     assert!(star["largest_of_bound"].as_f64().unwrap() <= 1.0, "{star}");
-    // Part 2 of 2 runs cases 1 of star's three (positions 0, 1, 2: the odd ones).
-    let part = dir.join("referee.part-2.json");
-    let o = clipbench(&[
-        "referee",
-        "--referee",
-        "vatti",
-        "--workload",
-        "star",
-        "--cases",
-        "3",
-        "--partition",
-        "2/2",
-        "--json",
-        part.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}\n{}", stdout(&o), stderr(&o));
-    let file: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&part).unwrap()).unwrap();
+    // Part 2 of 2 runs case 1 of star's three (positions 0, 1, 2: the odd ones).
+    let file = referee("referee.part-2.json", &["--partition", "2/2"]);
     assert_eq!(file["partition"], serde_json::json!({"k": 2, "n": 2}), "{file}");
     assert_eq!(file["workloads"][0]["cases"].as_u64(), Some(1), "{file}");
     let unknown = clipbench(&["referee", "--referee", "no-such", "--cases", "1"]);
