@@ -11,8 +11,8 @@
 //! with a pair of near vertices or a near miss, and of at most [`MAX_SCANNED_EDGES`] with a short
 //! edge or thin ring (a scan of its own over every output edge, where the near-vertex test rides
 //! on the clean-up's order). Larger outputs are not checked (a known limit), except near the
-//! sweep's near crossings (several edges through one point, their pairwise crossings rounded a
-//! few ulps apart: a ring can then cross itself with no vertex near another), where
+//! sweep's near crossings (several edges through one point, their pairwise crossings rounded to
+//! one point or a few ulps apart: a ring can then cross itself with no vertex near another), where
 //! [`crossing_near`] tests the edges passing there in outputs of any size.
 
 use clip_core::{
@@ -171,11 +171,11 @@ fn crossing_or_overlapping(rings: &[Ring]) -> bool {
 }
 
 /// Whether output edges passing within [`NEAR_CROSSINGS_ULPS`] ulps of one of the sweep's
-/// `near_crossings` (crossings of several edges through one point, rounded a few ulps apart)
-/// cross, overlap or meet their own ring there, as [`crossing_or_overlapping`] tests every edge.
-/// Those points are where the output can break with no near vertices or short edge to show it,
-/// and only the edges passing near them are tested: one pass over the output's edges, each
-/// each edge's x range tested against the points' first.
+/// `near_crossings` (crossings of several edges through one point, rounded to one point or a few
+/// ulps apart) cross, overlap or meet their own ring there, as [`crossing_or_overlapping`] tests
+/// every edge. Those points are where the output can break with no near vertices or short edge
+/// to show it, and only the edges passing near them are tested: one pass over the output's
+/// edges, each edge's x range tested against the points' merged x spans first.
 pub(crate) fn crossing_near(rings: &[Ring], near_crossings: &[Point]) -> bool {
     if near_crossings.is_empty() {
         return false;
@@ -203,7 +203,7 @@ pub(crate) fn crossing_near(rings: &[Ring], near_crossings: &[Point]) -> bool {
         for (i, &b) in p.iter().enumerate() {
             let (ax, bx) = if a.x <= b.x { (a.x, b.x) } else { (b.x, a.x) };
             // Most edges have no point within reach of their x range.
-            let hit = if spans.len() <= SMALL_PAIR_TEST {
+            let hit = if spans.len() <= FEW_SPANS {
                 spans.iter().any(|&(lo, hi)| lo <= bx && hi >= ax)
             } else {
                 spans.get(spans.partition_point(|s| s.1 < ax)).is_some_and(|s| s.0 <= bx)
@@ -260,6 +260,10 @@ fn pair_broken(rings: &[Ring], edges: Vec<(usize, usize, Segment)>) -> bool {
 
 /// Edge lists up to this long are tested pair by pair rather than through a cell index.
 const SMALL_PAIR_TEST: usize = 32;
+
+/// Up to this many merged x spans of near crossings, an edge is tested against each in turn
+/// rather than by binary search.
+const FEW_SPANS: usize = 32;
 
 /// A ring whose orientation disagrees with the number of other rings around it (outers, at
 /// even depth, counter-clockwise; holes clockwise). Each ring is placed by its first vertex off
