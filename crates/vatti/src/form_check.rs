@@ -262,8 +262,8 @@ fn pair_broken(rings: &[Ring], edges: Vec<(usize, usize, Segment)>) -> bool {
 const SMALL_PAIR_TEST: usize = 32;
 
 /// Up to this many merged x spans of near crossings, an edge is tested against each in turn
-/// rather than by binary search.
-const FEW_SPANS: usize = 32;
+/// rather than by binary search (a few comparisons cost less than the search's branches).
+const FEW_SPANS: usize = 4;
 
 /// A ring whose orientation disagrees with the number of other rings around it (outers, at
 /// even depth, counter-clockwise; holes clockwise). Each ring is placed by its first vertex off
