@@ -21,6 +21,7 @@ use clip_core::predicates::{Orientation, orient};
 
 use crate::bounds::NONE;
 use crate::raw_rings::RawRings;
+use crate::scanbeam::height_key;
 use crate::small_sort::insertion_sorted_by;
 
 /// A horizontal edge (`ring`, `edge`: the edge from the ring's vertex `edge` to the next) with
@@ -183,7 +184,9 @@ impl Touches {
     #[inline(never)]
     fn take_long_run(&mut self, raw: &RawRings, ring: &[u32], run: &mut Vec<(f64, u32)>) {
         if !insertion_sorted_by(run, |a, b| a.0.total_cmp(&b.0).is_lt()) {
-            run.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+            // The run comes in emission order, ascending in x over long stretches: the stable
+            // sort merges those stretches, and integer keys compare cheaper than the floats.
+            run.sort_by_key(|a| height_key(a.0));
         }
         for equal in run.chunk_by(|a, b| a.0 == b.0) {
             self.name_point(raw, ring, equal.iter().map(|&(_, k)| k));
