@@ -15,7 +15,7 @@ use crate::raw_rings::RawRings;
 /// `touches.distinct` and as points (in the order of the edges they start from); returns whether two of their edges leave or arrive at
 /// one point in the same direction.
 pub(crate) fn rebuild(rings: &RawRings, touches: &Touches, emit: &mut impl FnMut(&[u32], &[Point])) -> SameWay {
-    let Touches { touched, splits, ids, distinct: pts, .. } = touches;
+    let Touches { touched, splits, split_points, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let inside: usize = splits.iter().map(|s| s.inside.len()).sum();
     let mut visits: Vec<u32> = Vec::with_capacity(rings.points.len() + inside);
@@ -27,7 +27,7 @@ pub(crate) fn rebuild(rings: &RawRings, touches: &Touches, emit: &mut impl FnMut
             visits.push(ids[start + i]);
             while next_split.next_if(|s| (s.ring, s.edge) < (ri, i)).is_some() {}
             if let Some(s) = next_split.next_if(|s| (s.ring, s.edge) == (ri, i)) {
-                visits.extend_from_slice(&s.inside);
+                visits.extend_from_slice(&split_points[s.inside.clone()]);
             }
         }
         ring_ends.push(visits.len());

@@ -25,12 +25,13 @@ use crate::scanbeam::height_key;
 use crate::small_sort::insertion_sorted_by;
 
 /// A horizontal edge (`ring`, `edge`: the edge from the ring's vertex `edge` to the next) with
-/// vertices strictly inside it: their point ids in the edge's direction.
+/// vertices strictly inside it: their point ids in the edge's direction, at `inside` in
+/// [`Touches::split_points`] (one buffer for all, not an allocation per edge).
 #[derive(Debug, PartialEq)]
 pub(crate) struct SplitEdge {
     pub ring: usize,
     pub edge: usize,
-    pub inside: Vec<u32>,
+    pub inside: std::ops::Range<usize>,
 }
 
 /// The rings to rebuild, the horizontal edges to split (in ring and edge order), and the
@@ -40,6 +41,8 @@ pub(crate) struct SplitEdge {
 pub(crate) struct Touches {
     pub touched: Vec<bool>,
     pub splits: Vec<SplitEdge>,
+    /// The split edges' inside points (see [`SplitEdge`]).
+    pub split_points: Vec<u32>,
     pub ids: Vec<u32>,
     pub distinct: Vec<Point>,
     /// The points visited more than once, each as a run of its visits (point indices) in
@@ -63,7 +66,8 @@ impl Touches {
             self.by_sorting(raw);
         }
         if raw.near_miss {
-            self.splits = split_edges(raw, &self.ring, &mut self.touched, &self.ids, true);
+            self.split_points.clear();
+            self.splits = split_edges(raw, &self.ring, &mut self.touched, &self.ids, true, &mut self.split_points);
         }
     }
 
@@ -72,6 +76,7 @@ impl Touches {
         self.touched.clear();
         self.touched.resize(raw.len(), false);
         self.splits.clear();
+        self.split_points.clear();
         self.ids.clear();
         self.ids.resize(raw.points.len(), 0);
         self.distinct.clear();
@@ -103,6 +108,7 @@ impl Touches {
         use std::mem::size_of;
         self.touched.capacity()
             + self.splits.capacity() * size_of::<SplitEdge>()
+            + 4 * self.split_points.capacity()
             + 4 * (self.ids.capacity() + self.slot.capacity() + self.ring.capacity())
             + 4 * (self.shared.capacity() + self.shared_ends.capacity())
             + self.distinct.capacity() * size_of::<Point>()
@@ -200,19 +206,22 @@ impl Touches {
             }
             let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
             let from = run.partition_point(|&(x, _)| x <= lo);
-            let mut inside = Vec::new();
+            let start = self.split_points.len();
             for &(_, j) in run[from..].iter().take_while(|&&(x, _)| x < hi) {
                 self.touched[ring[j as usize] as usize] = true;
-                inside.push(self.ids[j as usize]);
+                let id = self.ids[j as usize];
+                if self.split_points.len() == start || self.split_points.last() != Some(&id) {
+                    self.split_points.push(id);
+                }
             }
-            if inside.is_empty() {
+            if self.split_points.len() == start {
                 continue;
             }
             self.touched[r] = true;
-            inside.dedup();
             if a.x > b.x {
-                inside.reverse();
+                self.split_points[start..].reverse();
             }
+            let inside = start..self.split_points.len();
             self.splits.push(SplitEdge { ring: r, edge: k as usize - raw.start(r), inside });
         }
         run.clear();
@@ -258,7 +267,7 @@ impl Touches {
             t.name_point(raw, &ring, same.iter().map(|&(_, k)| k));
         }
         drop(keyed);
-        t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false);
+        t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false, &mut t.split_points);
         t.ring = ring;
     }
 }
@@ -284,9 +293,18 @@ fn slanted_scan_length(raw: &RawRings, by_y: &[(f64, f64, u32)]) -> usize {
 }
 
 /// Every horizontal edge (every edge, with `every_edge`) with vertices strictly inside it, in
-/// ring and edge order; its ring and the vertices' rings are marked touched. A vertex is inside a
-/// slanted edge when it lies on the edge's line (exact) between its ends.
-fn split_edges(raw: &RawRings, ring: &[u32], touched: &mut [bool], ids: &[u32], every_edge: bool) -> Vec<SplitEdge> {
+/// ring and edge order, their inside points appended to `points` (emptied first); its ring and
+/// the vertices' rings are marked touched. A vertex is inside a slanted edge when it lies on the
+/// edge's line (exact) between its ends.
+fn split_edges(
+    raw: &RawRings,
+    ring: &[u32],
+    touched: &mut [bool],
+    ids: &[u32],
+    every_edge: bool,
+    points: &mut Vec<u32>,
+) -> Vec<SplitEdge> {
+    points.clear();
     let has_horizontal = (0..raw.len()).any(|i| {
         let r = raw.ring(i);
         (0..r.len()).any(|k| r[k].y == r[(k + 1) % r.len()].y)
@@ -335,9 +353,14 @@ fn split_edges(raw: &RawRings, ring: &[u32], touched: &mut [bool], ids: &[u32], 
             for &k in &inside {
                 touched[ring[k as usize] as usize] = true;
             }
-            let mut points: Vec<u32> = inside.iter().map(|&k| ids[k as usize]).collect();
-            points.dedup();
-            splits.push(SplitEdge { ring: ri, edge: i, inside: points });
+            let start = points.len();
+            for &k in &inside {
+                let id = ids[k as usize];
+                if points.len() == start || points.last() != Some(&id) {
+                    points.push(id);
+                }
+            }
+            splits.push(SplitEdge { ring: ri, edge: i, inside: start..points.len() });
         }
     }
     splits
@@ -366,7 +389,9 @@ mod tests {
         let inside = |t: &Touches| -> Vec<(usize, usize, Vec<Point>)> {
             t.splits
                 .iter()
-                .map(|s| (s.ring, s.edge, s.inside.iter().map(|&i| t.distinct[i as usize]).collect()))
+                .map(|s| {
+                    (s.ring, s.edge, t.split_points[s.inside.clone()].iter().map(|&i| t.distinct[i as usize]).collect())
+                })
                 .collect()
         };
         assert_eq!(inside(&fast), inside(&sorted));
@@ -403,7 +428,9 @@ mod tests {
         let inside: Vec<(usize, usize, Vec<Point>)> = t
             .splits
             .iter()
-            .map(|s| (s.ring, s.edge, s.inside.iter().map(|&i| t.distinct[i as usize]).collect()))
+            .map(|s| {
+                (s.ring, s.edge, t.split_points[s.inside.clone()].iter().map(|&i| t.distinct[i as usize]).collect())
+            })
             .collect();
         assert_eq!(inside, vec![(0, 0, vec![Point::new(2.0, 2.0)])]);
     }
