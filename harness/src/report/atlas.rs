@@ -23,7 +23,7 @@ use crate::results_files::atlas::{
     HostileTally, REFEREE_PREFIX, RefereeResults, RefereeTally, VERIFY_PREFIX, conformance_file, read_json,
 };
 use crate::results_files::bench::{BASELINE, CSV, TEXT_GROUP, own_time_name, read_memory};
-use crate::results_files::verify::{VerifyResults, VerifyRow};
+use crate::results_files::verify::{CaseEntry, VerifyResults, VerifyRow};
 
 /// The clippers the atlas shows beside the external ones, for reference.
 const REFERENCE: [&str; 2] = ["vatti", BASELINE];
@@ -57,6 +57,8 @@ struct Atlas {
     described: Vec<ExternalSpec>,
     /// Per workload: the largest case count run and its polygon rows.
     verify: BTreeMap<String, (usize, Vec<VerifyRow>)>,
+    /// Per clipper: its shrunk oracle failures recorded by those runs, counted by kind.
+    recorded: BTreeMap<String, BTreeMap<&'static str, usize>>,
     /// Per conformance suite: each clipper's tally, `None` when the suite has no file.
     conformance: Vec<(&'static str, Option<Vec<ConformanceTally>>)>,
     /// The hostile tallies, `None` without the file.
@@ -94,6 +96,24 @@ fn json_files(atlas: &Path, prefix: &str) -> Result<Vec<(usize, PathBuf)>, CliEr
     Ok(files)
 }
 
+/// What a shrunk oracle failure of `clipper` is, from its message (clip-oracle's
+/// `PolygonFailure` and the external clipper's own words): a result that is not a valid polygon
+/// (the region may still be right), a wrong region, an error the clipper answered with, or no
+/// answer in time.
+fn failure_kind(message: &str, clipper: &str) -> &'static str {
+    if message.starts_with("invalid output") {
+        "invalid output"
+    } else if message.starts_with("point (") || message.starts_with("result differs from the exact region") {
+        "wrong region"
+    } else if message.contains("no answer within") {
+        "no answer"
+    } else if message.starts_with(&format!("{clipper} failed")) {
+        "error"
+    } else {
+        "other"
+    }
+}
+
 /// The order workloads are shown in: clip-testkit's, then any other by name.
 fn workload_rank(workload: &str) -> (usize, String) {
     (POLYGON_WORKLOADS.iter().position(|w| *w == workload).unwrap_or(usize::MAX), workload.to_owned())
@@ -102,8 +122,12 @@ fn workload_rank(workload: &str) -> (usize, String) {
 impl Atlas {
     fn read(atlas: &Path, described: Vec<ExternalSpec>) -> Result<Atlas, CliError> {
         let mut verify: BTreeMap<String, (usize, Vec<VerifyRow>)> = BTreeMap::new();
+        let mut cases: Vec<(usize, CaseEntry)> = Vec::new();
         for (n, path) in json_files(atlas, VERIFY_PREFIX)? {
             let results: VerifyResults = read_json(&path, "a verify summary")?;
+            cases.extend(
+                results.cases.into_iter().filter(|c| c.kind == "polygon" && c.check == "oracle").map(|c| (n, c)),
+            );
             for row in results.rows.into_iter().filter(|r| r.kind == "polygon") {
                 let kept = verify.entry(row.workload.clone()).or_insert((n, Vec::new()));
                 if n > kept.0 {
@@ -112,6 +136,13 @@ impl Atlas {
                 if n == kept.0 {
                     kept.1.push(row);
                 }
+            }
+        }
+        let mut recorded: BTreeMap<String, BTreeMap<&'static str, usize>> = BTreeMap::new();
+        for (n, case) in cases {
+            if verify.get(&case.workload).is_some_and(|(kept, _)| *kept == n) {
+                let kind = failure_kind(&case.shrunk, &case.clipper);
+                *recorded.entry(case.clipper).or_default().entry(kind).or_default() += 1;
             }
         }
         let mut conformance = Vec::new();
@@ -183,7 +214,7 @@ impl Atlas {
                 keep(n, &name, joined);
             }
         }
-        Ok(Atlas { described, verify, conformance, hostile, speed, speed_points, referee })
+        Ok(Atlas { described, verify, recorded, conformance, hostile, speed, speed_points, referee })
     }
 
     /// Vatti and Clipper2, then the external clippers in adapters/clippers.toml's order, then
@@ -252,7 +283,14 @@ impl Atlas {
         let mut notes = Vec::new();
         if let Some((failures, hung, runs)) = self.verified(clipper) {
             if failures > 0 {
-                notes.push(format!("fails the oracle on {failures} of {runs} verify results"));
+                let kinds = self.recorded.get(clipper).map(|kinds| {
+                    let counts: Vec<String> = kinds.iter().map(|(kind, n)| format!("{n} {kind}")).collect();
+                    format!(" (its shrunk cases: {})", counts.join(", "))
+                });
+                notes.push(format!(
+                    "fails the oracle on {failures} of {runs} verify results{}",
+                    kinds.unwrap_or_default()
+                ));
             }
             if hung > 0 {
                 notes.push(format!("gave no answer in time on {hung} of {runs} verify results"));
@@ -528,8 +566,14 @@ mod tests {
         std::fs::write(path, text).unwrap();
     }
 
-    /// Rows of (clipper, workload, oracle failures, hung, runs).
-    fn verify_file(path: &Path, cases: usize, rows: &[(&str, &str, usize, usize, usize)]) {
+    /// Rows of (clipper, workload, oracle failures, hung, runs), and recorded oracle failures
+    /// (clipper, workload, message).
+    fn verify_file(
+        path: &Path,
+        cases: usize,
+        rows: &[(&str, &str, usize, usize, usize)],
+        shrunk: &[(&str, &str, &str)],
+    ) {
         let results = VerifyResults {
             seed: 1,
             cases_per_workload: cases,
@@ -550,7 +594,23 @@ mod tests {
             failures_recorded: 0,
             failures_not_recorded: 0,
             ours_failed: false,
-            cases: Vec::new(),
+            cases: shrunk
+                .iter()
+                .map(|&(clipper, workload, message)| CaseEntry {
+                    folder: format!("{workload}-{clipper}"),
+                    seed: 1,
+                    index: 0,
+                    kind: "polygon".into(),
+                    clipper: clipper.into(),
+                    workload: workload.into(),
+                    check: "oracle".into(),
+                    other: None,
+                    op: Some("union".into()),
+                    fill: Some("even-odd".into()),
+                    shrunk_vertices: [3, 3],
+                    shrunk: message.into(),
+                })
+                .collect(),
             partition: None,
         };
         write(path, &serde_json::to_string(&results).unwrap());
@@ -573,11 +633,18 @@ mod tests {
         );
         // A smaller run of `star` is superseded by the larger one; `holes` ran only small.
         let star_20 = [("vatti", "star", 0, 0, 320), ("ext", "star", 9, 0, 80)];
-        verify_file(&atlas.join("verify-20/star.json"), 20, &star_20);
+        // The smaller run's shrunk cases count for nothing either.
+        let stale = [("ext", "star", "result differs from the exact region by area 1e0 (tolerance 1e-6)")];
+        verify_file(&atlas.join("verify-20/star.json"), 20, &star_20, &stale);
         let star_200 = [("vatti", "star", 0, 0, 3200), ("ext", "star", 7, 3, 800)];
-        verify_file(&atlas.join("verify-200/star.json"), 200, &star_200);
+        let star_cases = [
+            ("ext", "star", "invalid output: ring 0 visits (2, -2) twice (at vertex 1 and vertex 4)"),
+            ("ext", "star", "ext failed: it answered with an error: TypeError"),
+        ];
+        verify_file(&atlas.join("verify-200/star.json"), 200, &star_200, &star_cases);
         let holes_20 = [("vatti", "holes", 0, 0, 320), ("ext", "holes", 2, 0, 80)];
-        verify_file(&atlas.join("verify-20/holes.json"), 20, &holes_20);
+        let holes_cases = [("ext", "holes", "point (1, 2) should be inside the result but is outside")];
+        verify_file(&atlas.join("verify-20/holes.json"), 20, &holes_20, &holes_cases);
         write(
             &atlas.join(HOSTILE_JSON),
             r#"{"tallies": [{"clipper": "ext", "runs": 10, "right": 5, "wrong": 2, "refused": 1, "crashed": 1, "hung": 1,
@@ -651,7 +718,7 @@ mod tests {
         assert_eq!(atlas.verified("ext"), Some((7 + 2, 3, 800 + 80)), "the largest run of each workload, summed");
         let notes = atlas.notes("ext");
         for part in [
-            "fails the oracle on 9 of 880 verify results",
+            "fails the oracle on 9 of 880 verify results (its shrunk cases: 1 error, 1 invalid output, 1 wrong region)",
             "gave no answer in time on 3 of 880 verify results",
             "fails 1 of 5 Clipper2's Polygons.txt",
             "wrong or invalid output on 2 of 10 hostile calls",
@@ -663,6 +730,20 @@ mod tests {
         }
         assert_eq!(atlas.notes("vatti"), "no failure found");
         assert_eq!(atlas.notes("clipper2"), "", "it ran nowhere: nothing to say");
+    }
+
+    #[test]
+    fn a_shrunk_failure_is_classed_by_what_its_message_says() {
+        for (message, kind) in [
+            ("invalid output: ring 0 has zero area (all its vertices are collinear)", "invalid output"),
+            ("point (8.25, 15.25) should be outside the result but is inside", "wrong region"),
+            ("result differs from the exact region by area 1.5e-1 (tolerance 2.8e-4)", "wrong region"),
+            ("jsts failed: it answered with an error: TopologyException: found non-noded intersection", "error"),
+            ("jsts failed: no answer within 20.0 s (killed)", "no answer"),
+            ("something else", "other"),
+        ] {
+            assert_eq!(failure_kind(message, "jsts"), kind, "{message}");
+        }
     }
 
     /// `referee --partition K/N` parts: joined once all N are in the folder, and a run missing a
