@@ -394,11 +394,11 @@ fn join(
             }
         }
     }
-    let inside = InsideEdges::of(swept, &b);
     let chain_winding: i32 = chains.iter().map(|ch| ch.crossings).sum();
     if chain_winding + far_winding != border_winding {
         return None;
     }
+    let inside = InsideEdges::of(swept, &b);
     let mut done = vec![false; chains.len()];
     let (mut sources, mut far_sources, mut runs) = (Vec::new(), Vec::new(), Vec::new());
     for first in 0..chains.len() {

@@ -66,7 +66,6 @@ impl Touches {
             self.by_sorting(raw);
         }
         if raw.near_miss {
-            self.split_points.clear();
             self.splits = split_edges(raw, &self.ring, &mut self.touched, &self.ids, true, &mut self.split_points);
         }
     }
