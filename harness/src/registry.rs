@@ -26,6 +26,7 @@ use clip_virtual_box::VirtualBox;
 
 use crate::cli_error::CliError;
 use crate::measure::own_time::OwnTime;
+use crate::measure::peak_memory::OwnProcessMemory;
 
 /// Tolerance of our exact line clippers on the parameter `t` of piece end points.
 pub const LINE_TOLERANCE: f64 = 1e-9;
@@ -99,6 +100,9 @@ pub struct PolygonEntry {
     /// For an external clipper, the times it reports for itself (bench shows them beside the
     /// round trip).
     pub own_time: Option<Arc<OwnTime>>,
+    /// For an external clipper, its peak memory for one call, measured in its own process (bench
+    /// reads it for the large groups).
+    pub own_memory: Option<Arc<dyn OwnProcessMemory>>,
     /// For an external clipper, the command-line options that register it again (a replay
     /// command needs them).
     pub external: Option<String>,
@@ -147,6 +151,7 @@ impl Registry {
             origin,
             tolerance,
             own_time: None,
+            own_memory: None,
             external: None,
             handshake: None,
         });

@@ -158,8 +158,9 @@ pub fn run(args: &BenchArgs, registry: Registry) -> Result<PathBuf, CliError> {
     if registry.polygon.iter().any(|e| e.own_time.is_some()) {
         provenance.notes.push(
             "External clippers (docs/PROTOCOL.md) are timed by round trip through their pipe and JSON under their own \
-             name, and by the time they report for themselves as `NAME (own time)`; their peak memory is their \
-             process's and is not measured."
+             name, and by the time they report for themselves as `NAME (own time)`; their peak memory is their own \
+             process's, one call in a process started for it, and includes reading the request, writing the answer \
+             and what their runtime (a JavaScript or Java heap) takes on its own."
                 .to_owned(),
         );
     }

@@ -253,11 +253,8 @@ pub fn run(
                 }
                 measure_point(group, size, op, &cases, &timed_here, settings, &mut measured.rows);
                 if group.measures_memory(size, op) {
-                    // An external clipper's memory is its own process's, not this one's.
-                    for Timed { entry: c, fill, single, warm_up, .. } in
-                        timed_here.iter().filter(|t| t.entry.own_time.is_none())
-                    {
-                        if warm_up.is_some() {
+                    for Timed { entry: c, fill, single, .. } in &timed_here {
+                        if single.as_secs_f64() > PREDICTED_CAP_FACTOR * settings.cap_seconds {
                             measured.notes.push(format!(
                                 "{}: {}: peak memory not measured at {size} edges, {}: one call took {single:.2?}, \
                                  over {PREDICTED_CAP_FACTOR}x the {} s cap, and the probe would repeat it.",
@@ -268,18 +265,25 @@ pub fn run(
                             ));
                             continue;
                         }
-                        for index in &group.indices {
-                            let probe = Probe {
-                                workload: group.workload.to_owned(),
-                                window: group.window,
-                                index: *index,
-                                size,
-                                clipper: c.clipper.name().to_owned(),
-                                op,
-                                fill: *fill,
+                        for (case, index) in cases.iter().zip(&group.indices) {
+                            // An external clipper's memory is its own process's; ours is read in a
+                            // fresh child of this one.
+                            let peak = match &c.own_memory {
+                                Some(own) => own.peak_of_call(&case.subject, &case.clip, op, *fill).map_err(Some),
+                                None => Probe {
+                                    workload: group.workload.to_owned(),
+                                    window: group.window,
+                                    index: *index,
+                                    size,
+                                    clipper: c.clipper.name().to_owned(),
+                                    op,
+                                    fill: *fill,
+                                }
+                                .run_in_child(settings.seed)
+                                .ok_or(None),
                             };
-                            match probe.run_in_child(settings.seed) {
-                                Some((rss_before_kib, peak_extra_kib)) => measured.memory.push(MemoryRecord {
+                            match peak {
+                                Ok((rss_before_kib, peak_extra_kib)) => measured.memory.push(MemoryRecord {
                                     workload: group.label.to_owned(),
                                     case: index.to_string(),
                                     clipper: c.clipper.name().to_owned(),
@@ -288,7 +292,13 @@ pub fn run(
                                     rss_before_kib,
                                     peak_extra_kib,
                                 }),
-                                None => group_memory_available = false,
+                                Err(Some(why)) => measured.notes.push(format!(
+                                    "{}: {}: peak memory not measured at {size} edges, {}, case {index}: {why}",
+                                    group.label,
+                                    c.clipper.name(),
+                                    op.name()
+                                )),
+                                Err(None) => group_memory_available = false,
                             }
                         }
                     }

@@ -19,6 +19,7 @@ use super::protocol::{
 };
 use super::spec::ExternalSpec;
 use crate::measure::own_time::OwnTime;
+use crate::measure::peak_memory::{OwnProcessMemory, PeakMemory};
 
 /// The processes of one external clipper.
 pub struct Pool {
@@ -120,6 +121,30 @@ impl Pool {
         started
     }
 
+    /// [`Pool::call`] in a process started for it and ended after it, with that process's
+    /// resident size before the call and peak above it, in KiB: a fresh process, so that memory
+    /// kept from earlier calls does not hide the peak. A failure leaves the pool as it was.
+    fn call_in_fresh_process(
+        &self,
+        make: impl FnOnce(u64) -> Result<String, serde_json::Error>,
+    ) -> Result<(Reply, (u64, u64)), ClipError> {
+        let id = self.next_id.fetch_add(1, Ordering::Relaxed);
+        let request = make(id).map_err(|e| {
+            self.failed(FailureKind::Internal, format!("the request could not be written as JSON: {e}"))
+        })?;
+        let mut worker = self.start()?;
+        let unavailable = || self.failed(FailureKind::Internal, "its peak memory cannot be read here".into());
+        let peak = PeakMemory::of_process(worker.pid()).ok_or_else(unavailable)?;
+        let sent = Instant::now();
+        let text = worker.exchange(&request, self.timeout).map_err(|(kind, why)| self.failed(kind, why))?;
+        let round_trip = sent.elapsed();
+        // Read before the process is let go: its counters go with it.
+        let extra = peak.extra_kib().ok_or_else(unavailable)?;
+        let reply =
+            checked_reply(&text, id, round_trip).map_err(|v| self.failed(FailureKind::Garbled, v.to_string()))?;
+        Ok((reply, (peak.rss_before_kib(), extra)))
+    }
+
     fn lock(&self) -> std::sync::MutexGuard<'_, Workers> {
         self.workers.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
     }
@@ -198,6 +223,7 @@ fn checked_reply(text: &str, id: u64, round_trip: Duration) -> Result<Reply, Vio
 }
 
 /// An external polygon clipper.
+#[derive(Clone)]
 pub struct ExternalPolygon {
     /// Its processes.
     pub pool: Arc<Pool>,
@@ -215,6 +241,16 @@ impl PolygonClipper for ExternalPolygon {
     }
 
     fn clip(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<Polygons, ClipError> {
+        self.admit(subject, clip, op, fill)?;
+        let reply = self.pool.call(|id| polygon_request(id, subject, clip, op, fill))?;
+        self.rings(reply)
+    }
+}
+
+impl ExternalPolygon {
+    /// The checks every call passes before it is sent: what the handshake declared, and valid
+    /// operands.
+    fn admit(&self, subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule) -> Result<(), ClipError> {
         self.capabilities.check(self.pool.name, op, fill)?;
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
@@ -224,15 +260,11 @@ impl PolygonClipper for ExternalPolygon {
                 what: format!("this clip operand (it takes {:?} windows only)", self.capabilities.window),
             });
         }
-        let reply = self.pool.call(|id| {
-            serde_json::to_string(&PolygonRequest {
-                id,
-                op: op.name(),
-                fill: fill.name(),
-                subject: to_wire(subject),
-                clip: to_wire(clip),
-            })
-        })?;
+        Ok(())
+    }
+
+    /// The result a reply carries, or the failure it says.
+    fn rings(&self, reply: Reply) -> Result<Polygons, ClipError> {
         match (reply.rings, reply.error, reply.pieces) {
             (Some(rings), _, _) => Ok(from_wire(&rings)),
             (_, Some(error), _) => {
@@ -240,6 +272,43 @@ impl PolygonClipper for ExternalPolygon {
             }
             _ => Err(self.pool.failed(FailureKind::Garbled, format!("reply {} carries pieces, not rings", reply.id))),
         }
+    }
+}
+
+/// A polygon request as its JSON line.
+fn polygon_request(
+    id: u64,
+    subject: &Polygons,
+    clip: &Polygons,
+    op: BoolOp,
+    fill: FillRule,
+) -> Result<String, serde_json::Error> {
+    serde_json::to_string(&PolygonRequest {
+        id,
+        op: op.name(),
+        fill: fill.name(),
+        subject: to_wire(subject),
+        clip: to_wire(clip),
+    })
+}
+
+/// The process's peak includes reading the request and writing the answer, and whatever its
+/// runtime (a JavaScript or Java heap) takes on its own: an upper bound on the library's need.
+impl OwnProcessMemory for ExternalPolygon {
+    fn peak_of_call(
+        &self,
+        subject: &Polygons,
+        clip: &Polygons,
+        op: BoolOp,
+        fill: FillRule,
+    ) -> Result<(u64, u64), String> {
+        self.admit(subject, clip, op, fill).map_err(|e| e.to_string())?;
+        let (reply, peak) = self
+            .pool
+            .call_in_fresh_process(|id| polygon_request(id, subject, clip, op, fill))
+            .map_err(|e| e.to_string())?;
+        self.rings(reply).map_err(|e| e.to_string())?;
+        Ok(peak)
     }
 }
 
@@ -362,6 +431,28 @@ mod tests {
         assert!(reason.contains("time_ns -5"), "{reason}");
         assert_eq!(pool.settled_idle(), 1);
         assert!(pool.call(request).is_ok());
+    }
+
+    /// The peak memory of a call is read in a process started for it, which then goes: the
+    /// pool's own process is neither used nor replaced.
+    #[test]
+    fn a_call_in_a_fresh_process_reads_that_process_memory_and_leaves_the_pool_alone() {
+        let spec = broken("memory", "0 0 0 0");
+        let timeout = Duration::from_secs(20);
+        let (first, handshake) = Worker::start(&spec, timeout).unwrap();
+        let pool = Arc::new(Pool::new("broken", spec, first, handshake, timeout));
+        let clipper = ExternalPolygon {
+            pool: Arc::clone(&pool),
+            capabilities: PolygonCapabilities::window_clipper(clip_core::WindowKind::Rectangle),
+        };
+        let square = Polygons::from(Rect::new(0.0, 0.0, 2.0, 2.0));
+        match clipper.peak_of_call(&square, &square, BoolOp::Intersection, FillRule::EvenOdd) {
+            // A Python process holds megabytes before the call.
+            Ok((before, _extra)) => assert!(before > 1024, "{before} KiB"),
+            Err(why) => assert!(why.contains("cannot be read here"), "{why}"),
+        }
+        assert_eq!(pool.settled_idle(), 1);
+        assert_eq!(pool.next_id.load(Ordering::Relaxed), 2);
     }
 
     #[test]

@@ -80,11 +80,13 @@ pub fn add_external(mut registry: Registry, args: &ExternalArgs) -> Result<Regis
         let name: &'static str = spec.name.clone().leak();
         let pool = Arc::new(Pool::new(name, spec, worker, handshake, timeout));
         if let Some(capabilities) = polygon {
+            let clipper = ExternalPolygon { pool: Arc::clone(&pool), capabilities };
             registry.polygon.push(PolygonEntry {
-                clipper: Box::new(ExternalPolygon { pool: Arc::clone(&pool), capabilities }),
+                clipper: Box::new(clipper.clone()),
                 origin,
                 tolerance: GEO_TOLERANCE,
                 own_time: Some(Arc::clone(&pool.own_time)),
+                own_memory: Some(Arc::new(clipper)),
                 external: Some(option.clone()),
                 handshake: Some(handshake_name.clone()),
             });

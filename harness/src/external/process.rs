@@ -94,6 +94,11 @@ impl Worker {
         }
     }
 
+    /// Its process id.
+    pub fn pid(&self) -> u32 {
+        self.child.id()
+    }
+
     /// Ends the process now, without the grace a well-behaved one gets at the end of a run: it
     /// failed, and its replacement is wanted.
     pub fn kill(mut self) {

@@ -468,7 +468,8 @@ impl Atlas {
                     Some(name) => Sides::of_time_ratios(&self.speed_points[&name]).sentence("points"),
                     None => ABSENT.to_owned(),
                 };
-                let memory = match row {
+                // Memory is recorded under the clipper's name, not its own time's.
+                let memory = match self.speed.as_ref().and_then(|rows| rows.iter().find(|r| r.clipper == *c)) {
                     None => ABSENT.to_owned(),
                     Some(r) => r.memory.map_or("not measured".to_owned(), |m| num(m, 2)),
                 };
@@ -485,8 +486,10 @@ impl Atlas {
             "Speed (`clipbench bench`): time per call relative to `{BASELINE}`, external clippers by the time they \
              report for themselves (no process, pipe or JSON), as the geometric mean of the bench's ratios below and \
              from {LARGE_FROM} edges, with the geometric means of the points' 95% interval ends in brackets (the \
-             summary's figures, from the same points). Peak memory is not measured for external clippers: an \
-             adapter's memory is its own process's.\n\n{}\n",
+             summary's figures, from the same points). Peak memory is the geometric mean, over the large groups, \
+             of the peak resident memory of one call above that before it, over `{BASELINE}`'s; an external \
+             clipper's is its own process's, in a process started for the call, and includes reading the request, \
+             writing the answer and its runtime's own heap.\n\n{}\n",
             table(&head, &body)
         )
     }
