@@ -119,23 +119,74 @@ fn workload_rank(workload: &str) -> (usize, String) {
     (POLYGON_WORKLOADS.iter().position(|w| *w == workload).unwrap_or(usize::MAX), workload.to_owned())
 }
 
+/// The parts of one verify run on one workload, as they are read.
+#[derive(Default)]
+struct VerifyParts {
+    /// The parts' K.
+    seen: Vec<usize>,
+    /// One row per clipper, the parts' counts added up.
+    rows: Vec<VerifyRow>,
+    /// The oracle failures the parts recorded.
+    cases: Vec<CaseEntry>,
+}
+
+impl VerifyParts {
+    /// Adds part `k`, unless it was read already.
+    fn join(&mut self, k: usize, rows: Vec<VerifyRow>, cases: Vec<CaseEntry>) {
+        if self.seen.contains(&k) {
+            return;
+        }
+        self.seen.push(k);
+        for row in rows {
+            match self.rows.iter_mut().find(|r| r.clipper == row.clipper) {
+                Some(r) => r.add(&row),
+                None => self.rows.push(row),
+            }
+        }
+        self.cases.extend(cases);
+    }
+}
+
 impl Atlas {
     fn read(atlas: &Path, described: Vec<ExternalSpec>) -> Result<Atlas, CliError> {
-        let mut verify: BTreeMap<String, (usize, Vec<VerifyRow>)> = BTreeMap::new();
+        // Rows and recorded oracle failures by the run's case count: whole runs as read, and the
+        // parts of one (`verify --partition K/N`) joined per workload once all N are there.
+        let mut rows: Vec<(usize, VerifyRow)> = Vec::new();
         let mut cases: Vec<(usize, CaseEntry)> = Vec::new();
+        let mut parts: BTreeMap<(usize, String, usize), VerifyParts> = BTreeMap::new();
         for (n, path) in json_files(atlas, VERIFY_PREFIX)? {
             let results: VerifyResults = read_json(&path, "a verify summary")?;
-            cases.extend(
-                results.cases.into_iter().filter(|c| c.kind == "polygon" && c.check == "oracle").map(|c| (n, c)),
-            );
-            for row in results.rows.into_iter().filter(|r| r.kind == "polygon") {
-                let kept = verify.entry(row.workload.clone()).or_insert((n, Vec::new()));
-                if n > kept.0 {
-                    *kept = (n, Vec::new());
-                }
-                if n == kept.0 {
-                    kept.1.push(row);
-                }
+            let polygon_rows = results.rows.into_iter().filter(|r| r.kind == "polygon");
+            let failures = results.cases.into_iter().filter(|c| c.kind == "polygon" && c.check == "oracle");
+            let Some(p) = results.partition else {
+                rows.extend(polygon_rows.map(|r| (n, r)));
+                cases.extend(failures.map(|c| (n, c)));
+                continue;
+            };
+            let failures: Vec<CaseEntry> = failures.collect();
+            let mut by_workload: BTreeMap<String, Vec<VerifyRow>> = BTreeMap::new();
+            for row in polygon_rows {
+                by_workload.entry(row.workload.clone()).or_default().push(row);
+            }
+            for (workload, workload_rows) in by_workload {
+                let recorded: Vec<CaseEntry> = failures.iter().filter(|c| c.workload == workload).cloned().collect();
+                parts.entry((n, workload, p.n)).or_default().join(p.k, workload_rows, recorded);
+            }
+        }
+        for ((n, _, count), joined) in parts {
+            if joined.seen.len() == count {
+                rows.extend(joined.rows.into_iter().map(|r| (n, r)));
+                cases.extend(joined.cases.into_iter().map(|c| (n, c)));
+            }
+        }
+        let mut verify: BTreeMap<String, (usize, Vec<VerifyRow>)> = BTreeMap::new();
+        for (n, row) in rows {
+            let kept = verify.entry(row.workload.clone()).or_insert((n, Vec::new()));
+            if n > kept.0 {
+                *kept = (n, Vec::new());
+            }
+            if n == kept.0 {
+                kept.1.push(row);
             }
         }
         let mut recorded: BTreeMap<String, BTreeMap<&'static str, usize>> = BTreeMap::new();
@@ -747,6 +798,48 @@ mod tests {
         ] {
             assert_eq!(failure_kind(message, "jsts"), kind, "{message}");
         }
+    }
+
+    /// `verify --partition K/N` parts: a workload's rows and recorded failures are joined once all
+    /// N parts are in the folder, a part read twice counts once, and a run missing a part counts
+    /// for nothing.
+    #[test]
+    fn verify_parts_are_joined_only_when_all_are_there() {
+        let results = synthetic("verify-parts");
+        let atlas_dir = results.join(FOLDER);
+        let part = |file: &str, k: usize, n: usize, rows: &[(&str, &str, usize, usize, usize)], shrunk| {
+            let path = atlas_dir.join(file);
+            verify_file(&path, 80, rows, shrunk);
+            let mut parsed: VerifyResults = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+            parsed.partition = Some(crate::partition::Partition { k, n });
+            write(&path, &serde_json::to_string(&parsed).unwrap());
+        };
+        let wrong = [("ext", "scribble", "point (1, 2) should be inside the result but is outside")];
+        part(
+            "verify-80/scribble.part-1.json",
+            1,
+            2,
+            &[("ext", "scribble", 2, 1, 640), ("vatti", "scribble", 0, 0, 640)],
+            &wrong,
+        );
+        part(
+            "verify-80/scribble.part-2.json",
+            2,
+            2,
+            &[("ext", "scribble", 3, 0, 640), ("vatti", "scribble", 0, 0, 640)],
+            &[],
+        );
+        // The same part again, under another name: read once.
+        part("verify-80/scribble.part-2-again.json", 2, 2, &[("ext", "scribble", 3, 0, 640)], &[]);
+        part("verify-80/large.part-1.json", 1, 3, &[("ext", "large", 5, 0, 640)], &[]);
+        let atlas = read_synthetic(&results);
+        let scribble = &atlas.verify["scribble"];
+        assert_eq!(scribble.0, 80);
+        let ext = scribble.1.iter().find(|r| r.clipper == "ext").unwrap();
+        assert_eq!((ext.oracle_failures, ext.hung, ext.runs), (5, 1, 1280));
+        let before = read_synthetic(&synthetic("verify-parts-none")).recorded["ext"]["wrong region"];
+        assert_eq!(atlas.recorded["ext"]["wrong region"], before + 1, "the parts' recorded failure, once");
+        assert!(!atlas.verify.contains_key("large"), "one part of three is not a run");
     }
 
     /// `referee --partition K/N` parts: joined once all N are in the folder, and a run missing a
