@@ -10,7 +10,7 @@
 //! | paper | here |
 //! | --- | --- |
 //! | bounds, local minima table (LMT) | `bounds::Bounds`, `bounds::LocalMinimum` |
-//! | scanbeam table (SBT), MarkSBT | `scanbeam::Scanbeams` (every vertex height, sorted once), or `edge_tops` (the active edges' tops in a heap) |
+//! | scanbeam table (SBT), MarkSBT | `scanbeam::Scanbeams` (every vertex height, sorted once), or `edge_tops` (the active edges' tops in a heap, those that start together in sorted runs) |
 //! | active edge table (AET), edge record (Table 1) | `active::ActiveEdges` (a linked list with a search tree, `order_index`), `active::Edge` |
 //! | sorted edge table (ST), intersection table (IT) | `intersections`, or `crossing_queue` |
 //! | contributing edge, left/right side, rules 1-6 | `contribution` (derived from winding counts) |

@@ -261,7 +261,7 @@ impl<'a> SweepLine<'a> {
         let (bot, top) = (self.bounds.pt(from), self.bounds.pt(to));
         let id = self.ael.create(bot, top, kind, forward, to);
         if self.kind == Sweep::Events {
-            self.tops.push(top.y, id);
+            self.tops.push_starting(top.y, id);
         }
         id
     }

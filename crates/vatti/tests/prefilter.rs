@@ -43,6 +43,22 @@ fn big_star() -> impl Strategy<Value = Polygons> {
     })
 }
 
+/// A comb on the integer grid: a spine below y = 0 and 17-60 unit-wide teeth of random heights
+/// above it, shifted by `shift`. Every gap between two teeth is a local minimum at y = 0, so more
+/// than 32 edges start at one height (the event sweep sorts their tops into a run), and two combs
+/// share edges along the spine and wherever teeth line up.
+fn comb() -> impl Strategy<Value = Polygons> {
+    (prop::collection::vec(1i32..40, 17..60), 0i32..3).prop_map(|(heights, shift)| {
+        let n = heights.len() as i32;
+        let mut pts = vec![(shift, -1), (shift + 2 * n, -1), (shift + 2 * n, 0)];
+        for (i, &h) in heights.iter().enumerate().rev() {
+            let x = shift + 2 * i as i32;
+            pts.extend([(x + 1, 0), (x + 1, h), (x, h), (x, 0)]);
+        }
+        Polygons::from(Ring::new(pts.into_iter().map(|(x, y)| Point::new(f64::from(x), f64::from(y))).collect()))
+    })
+}
+
 /// A big subject and a smaller operand somewhere over it, beside it or inside it.
 fn operands() -> impl Strategy<Value = (Polygons, Polygons)> {
     prop_oneof![
@@ -51,6 +67,7 @@ fn operands() -> impl Strategy<Value = (Polygons, Polygons)> {
         (rings_in(0.0, 0.0, 100.0), (-20.0f64..100.0, -20.0f64..100.0, 1.0f64..40.0))
             .prop_flat_map(|(s, (x, y, k))| (Just(s), rings_in(x, y, k))),
         (grid_rings(), grid_rings()),
+        (comb(), comb()),
         // One rectangle, either way round.
         (rings_in(0.0, 0.0, 100.0), (-10i32..12, -10i32..12, 1i32..12), any::<bool>()).prop_map(
             |(s, (x, y, k), cw)| {
