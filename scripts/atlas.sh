@@ -3,20 +3,29 @@
 # clipbench, into results/atlas/ (one file per stage and workload, each with the command that made
 # it in results/atlas/COMMANDS.md). Run scripts/setup-peers.sh first.
 #
-#   scripts/atlas.sh verify [CASES]     oracle failures per workload (default 200 cases; the atlas wants 2000)
-#   scripts/atlas.sh conformance        Clipper2's Polygons.txt and geo's boolean-op fixtures
-#   scripts/atlas.sh hostile            crashes, hangs and refusals on the fixed hostile set (testdata/hostile)
-#   scripts/atlas.sh bench              speed against Clipper2 by own time, small and large sizes
-#   scripts/atlas.sh referee [CASES]    CGAL's exact result areas against the oracle's (default 2000 cases)
+#   scripts/atlas.sh [--out DIR] verify [CASES]   oracle failures per workload (default 200 cases; the atlas wants 2000)
+#   scripts/atlas.sh [--out DIR] conformance      Clipper2's Polygons.txt and geo's boolean-op fixtures
+#   scripts/atlas.sh [--out DIR] hostile          crashes, hangs and refusals on the fixed hostile set (testdata/hostile)
+#   scripts/atlas.sh [--out DIR] bench            speed and peak memory against Clipper2, small and large sizes
+#   scripts/atlas.sh [--out DIR] referee [CASES]  CGAL's exact result areas against the oracle's (default 2000 cases)
+#   scripts/atlas.sh [--out DIR] all [VERIFY_CASES [REFEREE_CASES]]
+#                                                 every stage, quickest first (scripts/reference-run.sh
+#                                                 --with-peers runs it into its results folder)
 #
+# --out DIR: the atlas folder (default results/atlas; `clipbench report --out R` reads R/atlas).
 # A stage run by workload gives the same rows as one run over all of them; the split keeps each
 # workload's file even when a later one is stopped. Verify runs vatti and Clipper2 beside the
 # external clippers, for reference.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=results/atlas
+if [ "${1:-}" = --out ]; then
+  [ $# -ge 2 ] || { echo "atlas.sh: --out needs a folder" >&2; exit 2; }
+  out="$2"
+  shift 2
+fi
 mkdir -p "$out"
-clipbench=target/release/clipbench
+clipbench="${CARGO_TARGET_DIR:-target}/release/clipbench"
 cargo build --release -p clipbench --quiet
 clippers=(--clippers adapters/clippers.toml)
 # Every polygon workload (clip-testkit's POLYGON_WORKLOADS; a test in harness/tests/reference_run.rs checks it).
@@ -66,8 +75,16 @@ case "$stage" in
         --json "$out/referee-$cases/$w.json"
     done
     ;;
+  all)
+    self=(bash "$0" --out "$out")
+    "${self[@]}" conformance
+    "${self[@]}" hostile
+    "${self[@]}" bench
+    "${self[@]}" referee "${3:-2000}"
+    "${self[@]}" verify "${2:-200}"
+    ;;
   *)
-    sed -n '2,14p' "$0" >&2
+    sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2
     exit 2
     ;;
 esac

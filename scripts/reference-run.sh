@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # One reference run of everything clipbench measures, at one git revision, into one results
 # folder: `clipbench reproduce all --full`, the full `clipbench bench`, `clipbench verify` of every
-# registered clipper of every kind (polygon, line, curve, text), then `clipbench report`. It takes
-# hours. Every .meta.json it leaves names the revision it prints, and REPORT.md states it.
+# registered clipper of every kind (polygon, line, curve, text), with --with-peers the atlas
+# (scripts/atlas.sh all), then `clipbench report`. It takes hours, with the atlas days. Every .meta.json it leaves names the revision it prints, and REPORT.md states it.
 #
 #   scripts/reference-run.sh [--out DIR] [--with-peers] [--quick]
 #
 #   --out DIR     the results folder (default: results)
-#   --with-peers  also run the external clippers of adapters/clippers.toml in bench and verify;
-#                 this script installs nothing: scripts/setup-peers.sh installs and builds them
+#   --with-peers  also run the external clippers of adapters/clippers.toml in bench and verify,
+#                 and the atlas into DIR/atlas; this script installs nothing:
+#                 scripts/setup-peers.sh installs and builds them
 #   --quick       a smoke run in minutes, to try the script: reproduce with 3 repetitions per
-#                 point, bench --quick, verify on 3 cases per workload
+#                 point, bench --quick, verify on 3 cases per workload (the atlas's verify and
+#                 referee too)
 #
 # It refuses a work tree with changes (tracked or untracked files outside DIR): the revision must
 # name the code that measured. It stops at the first step that fails, except for verify finding
@@ -93,6 +95,15 @@ verify_status=0
 "$clipbench" verify "${verify[@]}" "${peers[@]}" --results "$out" || verify_status=$?
 [ "$verify_status" -le 1 ] || fail "verify stopped (exit $verify_status)"
 [ -f "$out/verify.meta.json" ] && [ "$out/verify.meta.json" -nt "$started" ] || fail "verify wrote no results"
+if [ ${#peers[@]} -gt 0 ]; then
+  # The atlas: every external clipper judged and timed stage by stage into $out/atlas, which the
+  # report reads. Days at the atlas's case counts (the JavaScript libraries are slow on the
+  # large workloads); a stage left unfinished is missing from the atlas, and its command in
+  # $out/atlas/COMMANDS.md finishes it.
+  if $quick; then atlas_cases=(3 3); else atlas_cases=(200 2000); fi
+  say "scripts/atlas.sh --out $out/atlas all ${atlas_cases[*]}"
+  CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-target}" scripts/atlas.sh --out "$out/atlas" all "${atlas_cases[@]}"
+fi
 say "clipbench report"
 "$clipbench" report --out "$out"
 
