@@ -7,6 +7,11 @@
 //! predicate says, at the point where an edge enters, whether an active edge lies before it
 //! (exact, see `active`). Every other change is positional: removal by node, two neighbours
 //! swapped by exchanging the ids their nodes hold.
+//!
+//! A removal only marks the edge's node dead; the dead nodes are taken out of the tree when a
+//! search next needs it. Inserting next to a known edge and swapping neighbours are positional and
+//! work around dead nodes, so edges that end after the last edge that starts by a search (a
+//! sweep's last local minimum) never cost a rotation, and the others cost what they did.
 
 use crate::bounds::NONE;
 
@@ -26,6 +31,8 @@ pub(crate) struct OrderIndex {
     /// Node of every edge id (`NONE` when the edge is not in the tree).
     node_of: Vec<u32>,
     free: Vec<u32>,
+    /// Nodes of removed edges still in the tree, taken out before the next search.
+    dead: Vec<u32>,
     root: u32,
     /// State of the priorities' generator (xorshift), the same at every reset so a clip's tree
     /// shape, and the place it gives an edge where rounding leaves the order unsorted, repeat.
@@ -38,19 +45,25 @@ impl OrderIndex {
         self.nodes.clear();
         self.node_of.clear();
         self.free.clear();
+        self.dead.clear();
         self.root = NONE;
         self.seed = 0x9e37_79b9;
     }
 
     /// Bytes of capacity held.
     pub(crate) fn held_bytes(&self) -> usize {
-        self.nodes.capacity() * size_of::<Node>() + 4 * (self.node_of.capacity() + self.free.capacity())
+        self.nodes.capacity() * size_of::<Node>()
+            + 4 * (self.node_of.capacity() + self.free.capacity() + self.dead.capacity())
     }
 
     /// Inserts `edge` where `before` turns false: every edge for which `before` holds is to its
     /// left, as long as `before` holds on a prefix of the order. Returns the edges that are now
     /// its left and right neighbours (`NONE` at either end).
     pub(crate) fn insert_by(&mut self, edge: u32, mut before: impl FnMut(u32) -> bool) -> (u32, u32) {
+        // The search reads every node on its path: none may be dead.
+        while let Some(x) = self.dead.pop() {
+            self.take_out(x);
+        }
         let (mut left, mut right) = (NONE, NONE);
         let (mut parent, mut went_right) = (NONE, false);
         let mut n = self.root;
@@ -82,9 +95,16 @@ impl OrderIndex {
         self.attach(edge, parent, as_right);
     }
 
-    /// Removes `edge`.
+    /// Removes `edge`: its node stays in the tree, dead, until a search takes it out.
+    #[inline]
     pub(crate) fn remove(&mut self, edge: u32) {
         let x = self.node_of[edge as usize];
+        self.node_of[edge as usize] = NONE;
+        self.dead.push(x);
+    }
+
+    /// Takes dead node `x` out of the tree.
+    fn take_out(&mut self, x: u32) {
         // Rotate the node down below its higher-priority child until it is a leaf.
         loop {
             let Node { left, right, .. } = self.nodes[x as usize];
@@ -103,7 +123,6 @@ impl OrderIndex {
         }
         let p = self.nodes[x as usize].parent;
         self.replace_child(p, x, NONE);
-        self.node_of[edge as usize] = NONE;
         self.free.push(x);
     }
 
@@ -215,7 +234,10 @@ impl OrderIndex {
         let mut out = Vec::new();
         let mut n = self.extreme(self.root, false);
         while n != NONE {
-            out.push(self.nodes[n as usize].edge);
+            let edge = self.nodes[n as usize].edge;
+            if self.node_of.get(edge as usize) == Some(&n) {
+                out.push(edge);
+            }
             // In-order successor.
             let r = self.nodes[n as usize].right;
             if r != NONE {
@@ -274,6 +296,15 @@ mod tests {
             t.remove(e);
             assert_eq!(t.in_order(), expect);
         }
+        // A search after removals: the dead nodes are taken out first, and it finds its place
+        // among the live edges only.
+        assert!(!t.dead.is_empty());
+        let at = expect.partition_point(|&k| keys[k as usize] < 100);
+        let (l, r) = t.insert_by(600, |e| keys[e as usize] < 100);
+        assert!(t.dead.is_empty());
+        assert_eq!((l, r), (expect[at - 1], expect[at]));
+        expect.insert(at, 600);
+        assert_eq!(t.in_order(), expect);
         let (a, b) = (expect[5], expect[6]);
         t.swap(a, b);
         expect.swap(5, 6);
@@ -286,6 +317,9 @@ mod tests {
         for e in expect.drain(..) {
             t.remove(e);
         }
-        assert_eq!(t.root, NONE);
+        assert!(t.in_order().is_empty());
+        // The next search empties the tree of them: the new edge is then alone in it.
+        assert_eq!(t.insert_by(700, |_| true), (NONE, NONE));
+        assert_eq!((t.in_order(), t.depth(t.root)), (vec![700], 1));
     }
 }
