@@ -389,6 +389,12 @@ mod tests {
         ExternalSpec { name: "broken".into(), command, dir: None, file: None, library: None, language: None }
     }
 
+    /// A pool of the clipper `spec` with its first process started.
+    fn started(spec: ExternalSpec, timeout: Duration) -> Arc<Pool> {
+        let (first, handshake) = Worker::start(&spec, timeout).unwrap();
+        Arc::new(Pool::new("broken", spec, first, handshake, timeout))
+    }
+
     fn request(id: u64) -> Result<String, serde_json::Error> {
         let square = to_wire(&Polygons::from(Rect::new(0.0, 0.0, 2.0, 2.0)));
         serde_json::to_string(&PolygonRequest {
@@ -405,11 +411,8 @@ mod tests {
     /// another thread, while the run goes on; only that process is replaced.
     #[test]
     fn a_hung_process_is_replaced_before_the_next_call_asks_for_one() {
-        let spec = broken("hang", "0 1 0 0");
         // Long enough for Python to start and shake hands on a loaded machine.
-        let timeout = Duration::from_secs(5);
-        let (first, handshake) = Worker::start(&spec, timeout).unwrap();
-        let pool = Arc::new(Pool::new("broken", spec, first, handshake, timeout));
+        let pool = started(broken("hang", "0 1 0 0"), Duration::from_secs(5));
         let Err(ClipError::Failed { kind, reason, .. }) = pool.call(request) else { panic!("request 1 hangs") };
         assert_eq!(kind, FailureKind::Hung, "{reason}");
         // No call has asked for a process since; one is ready all the same, and only one.
@@ -422,10 +425,7 @@ mod tests {
     /// An answer with an error keeps its process, as does an impossible time: the stream is in step.
     #[test]
     fn an_impossible_time_fails_the_call_and_keeps_the_process() {
-        let spec = broken("time", "0 0 0 0 1");
-        let timeout = Duration::from_secs(20);
-        let (first, handshake) = Worker::start(&spec, timeout).unwrap();
-        let pool = Arc::new(Pool::new("broken", spec, first, handshake, timeout));
+        let pool = started(broken("time", "0 0 0 0 1"), Duration::from_secs(20));
         let Err(ClipError::Failed { kind, reason, .. }) = pool.call(request) else { panic!("request 1 lies") };
         assert_eq!(kind, FailureKind::Garbled);
         assert!(reason.contains("time_ns -5"), "{reason}");
@@ -437,10 +437,7 @@ mod tests {
     /// pool's own process is neither used nor replaced.
     #[test]
     fn a_call_in_a_fresh_process_reads_that_process_memory_and_leaves_the_pool_alone() {
-        let spec = broken("memory", "0 0 0 0");
-        let timeout = Duration::from_secs(20);
-        let (first, handshake) = Worker::start(&spec, timeout).unwrap();
-        let pool = Arc::new(Pool::new("broken", spec, first, handshake, timeout));
+        let pool = started(broken("memory", "0 0 0 0"), Duration::from_secs(20));
         let clipper = ExternalPolygon {
             pool: Arc::clone(&pool),
             capabilities: PolygonCapabilities::window_clipper(clip_core::WindowKind::Rectangle),
