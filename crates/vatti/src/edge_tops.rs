@@ -3,12 +3,12 @@
 //! priority queue of edges rather than a sorted list of heights).
 //!
 //! Edges that start at local minima between two reads of the queue start at one scanline.
-//! Where many start at once (the local minima of a comb, a grid, map tiles: many edges
-//! beginning at one height), those past the first few are sorted together into a run and read
-//! from it in order, and only the run's head waits in a heap. A heap as large as the table would be sifted at random
-//! places in memory at every pop; a run is read sequentially. Tops pushed a few at a time go into
-//! the heap one by one. Either way the queue yields (height, edge) in increasing order, ties by
-//! edge id, so the sweep sees the same order as from one heap.
+//! Where many start at once (the local minima of a comb, a grid, map tiles: many edges beginning
+//! at one height), those past the first few are sorted together into a run and read from it in
+//! order, and only the run's head waits in a heap. A heap as large as the table would be sifted
+//! at random places in memory at every pop; a run is read sequentially. Tops pushed a few at a
+//! time go into the heap one by one. Either way the queue yields (height, edge) in increasing
+//! order, ties by edge id, so the sweep sees the same order as from one heap.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
@@ -95,9 +95,9 @@ impl EdgeTops {
         }
     }
 
-    /// Moves every edge ending at height `y` into `out`, by increasing edge id. Tops pushed since
-    /// [`EdgeTops::lowest`] are not looked at: they belong to edges starting at or above that
-    /// height, which end above it.
+    /// Moves every edge ending at height `y` into `out`, by increasing edge id. Tops still waiting
+    /// to be sorted into a run since [`EdgeTops::lowest`] are not looked at: they belong to edges
+    /// that start at or above that height, and so end above it.
     #[inline]
     pub(crate) fn take_at(&mut self, y: f64, out: &mut Vec<u32>) {
         let k = height_key(y);

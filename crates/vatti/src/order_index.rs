@@ -10,8 +10,8 @@
 //!
 //! A removal only marks the edge's node dead; the dead nodes are taken out of the tree when a
 //! search next needs it. Inserting next to a known edge and swapping neighbours are positional and
-//! work around dead nodes, so edges that end after the last edge that starts by a search (a
-//! sweep's last local minimum) never cost a rotation, and the others cost what they did.
+//! work around dead nodes. So an edge that ends after the sweep's last search (its last local
+//! minimum) never costs a rotation, and the others cost what they did.
 
 use crate::bounds::NONE;
 
