@@ -67,7 +67,7 @@ pub fn check(case: &VattiCase) -> Result<Outcome, String> {
             (Ok(()), Err(e)) => return Err(format!("{op:?}: refused valid input: {e}")),
             (Ok(()), Ok(out)) => {
                 check_polygon_result(subject, clip, op, *fill, &out, &rules).map_err(|f| format!("{op:?}: {f}"))?;
-                events_sweep_agrees(case, op, &out)?;
+                events_sweep_agrees(case, op, &out, &rules)?;
                 outputs.push((op, out));
             }
         }
@@ -86,13 +86,12 @@ pub fn check(case: &VattiCase) -> Result<Outcome, String> {
 
 /// The event sweep on the same operation: accepted by the oracle, and the same region as `out`
 /// (`Vatti`'s result) within both results' rounding.
-fn events_sweep_agrees(case: &VattiCase, op: BoolOp, out: &Polygons) -> Result<(), String> {
+fn events_sweep_agrees(case: &VattiCase, op: BoolOp, out: &Polygons, rules: &OutputRules) -> Result<(), String> {
     let VattiCase { subject, clip, fill } = case;
     let events = FixedSweep(Sweep::Events)
         .clip(subject, clip, op, *fill)
         .map_err(|e| format!("{op:?}: the event sweep refused valid input: {e}"))?;
-    let rules = OutputRules::conventional(REGION_TOLERANCE);
-    check_polygon_result(subject, clip, op, *fill, &events, &rules).map_err(|f| format!("{op:?}, event sweep: {f}"))?;
+    check_polygon_result(subject, clip, op, *fill, &events, rules).map_err(|f| format!("{op:?}, event sweep: {f}"))?;
     let allowed = 2.0 * tolerance(subject, clip, REGION_TOLERANCE);
     same_region((&events, FillRule::NonZero), (out, FillRule::NonZero), allowed)
         .map_err(|area| format!("{op:?}: the event sweep's region differs from vatti's by area {area:e}"))

@@ -66,10 +66,7 @@ impl Pool {
     /// reports a possible time. A process that fails is killed and a replacement started in the
     /// background, so the run goes on meanwhile; the error says how it failed.
     fn call(self: &Arc<Self>, make: impl FnOnce(u64) -> Result<String, serde_json::Error>) -> Result<Reply, ClipError> {
-        let id = self.next_id.fetch_add(1, Ordering::Relaxed);
-        let request = make(id).map_err(|e| {
-            self.failed(FailureKind::Internal, format!("the request could not be written as JSON: {e}"))
-        })?;
+        let (id, request) = self.numbered(make)?;
         let mut worker = self.take()?;
         let sent = Instant::now();
         let text = match worker.exchange(&request, self.timeout) {
@@ -121,6 +118,18 @@ impl Pool {
         started
     }
 
+    /// The next request id and the request `make` writes for it.
+    fn numbered(
+        &self,
+        make: impl FnOnce(u64) -> Result<String, serde_json::Error>,
+    ) -> Result<(u64, String), ClipError> {
+        let id = self.next_id.fetch_add(1, Ordering::Relaxed);
+        let request = make(id).map_err(|e| {
+            self.failed(FailureKind::Internal, format!("the request could not be written as JSON: {e}"))
+        })?;
+        Ok((id, request))
+    }
+
     /// [`Pool::call`] in a process started for it and ended after it, with that process's
     /// resident size before the call and peak above it, in KiB: a fresh process, so that memory
     /// kept from earlier calls does not hide the peak. A failure leaves the pool as it was.
@@ -128,10 +137,7 @@ impl Pool {
         &self,
         make: impl FnOnce(u64) -> Result<String, serde_json::Error>,
     ) -> Result<(Reply, (u64, u64)), ClipError> {
-        let id = self.next_id.fetch_add(1, Ordering::Relaxed);
-        let request = make(id).map_err(|e| {
-            self.failed(FailureKind::Internal, format!("the request could not be written as JSON: {e}"))
-        })?;
+        let (id, request) = self.numbered(make)?;
         let mut worker = self.start()?;
         let unavailable = || self.failed(FailureKind::Internal, "its peak memory cannot be read here".into());
         let peak = PeakMemory::of_process(worker.pid()).ok_or_else(unavailable)?;
