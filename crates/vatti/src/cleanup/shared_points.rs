@@ -4,7 +4,8 @@
 
 use std::cmp::Ordering;
 
-use clip_core::Point;
+use clip_core::predicates::on_segment;
+use clip_core::{Point, Segment};
 
 use super::directions::counter_clockwise_from_east;
 
@@ -15,8 +16,13 @@ use super::directions::counter_clockwise_from_east;
 /// round `v`, the ways out of it alternate between a ring's next vertex (the region on its
 /// counter-clockwise side) and a ring's previous vertex (the region on its clockwise side), no
 /// two point one way (edges overlapping), and no two passes interleave (their rings cross).
-/// Alternation alone is not enough: three rings can alternate and still cross. Linear in the
-/// passes, but for sorting the ways out of each shared point.
+/// Alternation alone is not enough: three rings can alternate and still cross. A ring whose
+/// edge passes through `v` without a vertex there (a hole touching its outer's edge from
+/// inside while another outer touches it from outside: simplification drops the outer's
+/// straight-through vertex) passes `v` too: where the rings' own passes do not meet cleanly,
+/// such edges' ways are added before the point is judged. Linear in the passes, but for sorting
+/// the ways out of each shared point and, only where passes alone do not meet cleanly, one pass
+/// over the edges.
 pub(crate) fn cross_at_shared_points(pts: &[Point], ids: &[u32], ends: &[usize]) -> bool {
     // Passes by point (compressed rows, in ring order): `at[row[v]..row[v + 1]]`.
     let mut row = vec![0u32; pts.len() + 1];
@@ -36,52 +42,129 @@ pub(crate) fn cross_at_shared_points(pts: &[Point], ids: &[u32], ends: &[usize])
         fill[v as usize] += 1;
     }
     drop(fill);
-    // Ring `r` is `ids[start[r]..ends[r]]`; `ring_of[k]` the ring of pass `k`.
-    let start = |r: usize| if r == 0 { 0 } else { ends[r - 1] };
-    let mut ring_of = vec![0u32; ids.len()];
-    for r in 0..ends.len() {
-        ring_of[start(r)..ends[r]].fill(r as u32);
-    }
-    // The ways out of one point: far end, pass, and whether it leaves along the ring.
-    let mut ways: Vec<(Point, u32, bool)> = Vec::new();
-    let mut open: Vec<u32> = Vec::new();
+    let rings = Rings::new(ids, ends);
+    // Points whose passes do not meet cleanly, unless an edge through them mends it.
+    let mut suspects: Vec<u32> = Vec::new();
+    let mut meeting = Meeting::default();
     for v in 0..pts.len() {
         let passes = &at[row[v] as usize..row[v + 1] as usize];
         if passes.len() < 2 {
             continue;
         }
         // Passes are in ring order: one ring passing twice has two in a row.
-        if passes.windows(2).any(|w| ring_of[w[0] as usize] == ring_of[w[1] as usize]) {
+        if passes.windows(2).any(|w| rings.ring_of[w[0] as usize] == rings.ring_of[w[1] as usize]) {
             return true;
         }
-        let pv = pts[v];
-        ways.clear();
+        meeting.clear();
         for &k in passes {
-            let (k, r) = (k as usize, ring_of[k as usize] as usize);
-            let next = if k + 1 == ends[r] { start(r) } else { k + 1 };
-            let prev = if k == start(r) { ends[r] - 1 } else { k - 1 };
-            ways.push((pts[ids[next] as usize], k as u32, true));
-            ways.push((pts[ids[prev] as usize], k as u32, false));
+            let (prev, next) = rings.around(k as usize);
+            meeting.add(pts[ids[next] as usize], pts[ids[prev] as usize]);
         }
-        ways.sort_unstable_by(|a, b| counter_clockwise_from_east(pv, a.0, b.0));
-        let one_way = |w: &[(Point, u32, bool)]| counter_clockwise_from_east(pv, w[0].0, w[1].0) == Ordering::Equal;
-        if ways.windows(2).any(|w| one_way(w) || w[0].2 == w[1].2) {
-            return true;
-        }
-        // A pass's two ways close it; another pass opened between them and not closed crosses it.
-        open.clear();
-        for &(_, pass, _) in &ways {
-            if open.last() == Some(&pass) {
-                open.pop();
-            } else {
-                open.push(pass);
-            }
-        }
-        if !open.is_empty() {
-            return true;
+        if !meeting.clean(pts[v]) {
+            suspects.push(v as u32);
         }
     }
-    false
+    if suspects.is_empty() {
+        return false;
+    }
+    // Each suspect again, with the edges passing through it (their two ends as ways).
+    let mut through: Vec<(u32, Point, Point)> = Vec::new();
+    suspects.sort_unstable_by(|&a, &b| pts[a as usize].x.total_cmp(&pts[b as usize].x));
+    for k in 0..ids.len() {
+        let (_, next) = rings.around(k);
+        let (a, b) = (pts[ids[k] as usize], pts[ids[next] as usize]);
+        let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+        let first = suspects.partition_point(|&v| pts[v as usize].x < lo);
+        for &v in suspects[first..].iter().take_while(|&&v| pts[v as usize].x <= hi) {
+            let p = pts[v as usize];
+            if p != a && p != b && on_segment(p, Segment::new(a, b)) {
+                through.push((v, b, a));
+            }
+        }
+    }
+    through.sort_unstable_by_key(|t| t.0);
+    suspects.iter().any(|&v| {
+        let passes = &at[row[v as usize] as usize..row[v as usize + 1] as usize];
+        meeting.clear();
+        for &k in passes {
+            let (prev, next) = rings.around(k as usize);
+            meeting.add(pts[ids[next] as usize], pts[ids[prev] as usize]);
+        }
+        let first = through.partition_point(|t| t.0 < v);
+        for &(_, next, prev) in through[first..].iter().take_while(|t| t.0 == v) {
+            meeting.add(next, prev);
+        }
+        !meeting.clean(pts[v as usize])
+    })
+}
+
+/// The rings of [`cross_at_shared_points`]: ring `r` is `ids[start(r)..ends[r]]`, `ring_of[k]`
+/// the ring of pass `k`.
+struct Rings<'a> {
+    ends: &'a [usize],
+    ring_of: Vec<u32>,
+}
+
+impl<'a> Rings<'a> {
+    fn new(ids: &[u32], ends: &'a [usize]) -> Rings<'a> {
+        let mut ring_of = vec![0u32; ids.len()];
+        let mut start = 0;
+        for (r, &end) in ends.iter().enumerate() {
+            ring_of[start..end].fill(r as u32);
+            start = end;
+        }
+        Rings { ends, ring_of }
+    }
+
+    fn start(&self, r: usize) -> usize {
+        if r == 0 { 0 } else { self.ends[r - 1] }
+    }
+
+    /// The passes before and after pass `k` in its ring.
+    fn around(&self, k: usize) -> (usize, usize) {
+        let r = self.ring_of[k] as usize;
+        let (start, end) = (self.start(r), self.ends[r]);
+        (if k == start { end - 1 } else { k - 1 }, if k + 1 == end { start } else { k + 1 })
+    }
+}
+
+/// The ways out of one point, each pass's two: far end, pass, and whether it leaves along the
+/// ring (towards the next vertex).
+#[derive(Default)]
+struct Meeting {
+    ways: Vec<(Point, u32, bool)>,
+    open: Vec<u32>,
+}
+
+impl Meeting {
+    fn clear(&mut self) {
+        self.ways.clear();
+    }
+
+    /// A pass arriving from `prev` and leaving towards `next`.
+    fn add(&mut self, next: Point, prev: Point) {
+        let pass = (self.ways.len() / 2) as u32;
+        self.ways.extend([(next, pass, true), (prev, pass, false)]);
+    }
+
+    /// True when the passes meet cleanly at `v` (see [`cross_at_shared_points`]).
+    fn clean(&mut self, v: Point) -> bool {
+        self.ways.sort_unstable_by(|a, b| counter_clockwise_from_east(v, a.0, b.0));
+        let one_way = |w: &[(Point, u32, bool)]| counter_clockwise_from_east(v, w[0].0, w[1].0) == Ordering::Equal;
+        if self.ways.windows(2).any(|w| one_way(w) || w[0].2 == w[1].2) {
+            return false;
+        }
+        // A pass's two ways close it; another pass opened between them and not closed crosses it.
+        self.open.clear();
+        for &(_, pass, _) in &self.ways {
+            if self.open.last() == Some(&pass) {
+                self.open.pop();
+            } else {
+                self.open.push(pass);
+            }
+        }
+        self.open.is_empty()
+    }
 }
 
 #[cfg(test)]
@@ -140,6 +223,25 @@ mod tests {
         assert!(cross(&[wide, along]));
         // One ring passing a point twice (a figure eight).
         assert!(cross(&[&[(0.0, 0.0), (1.0, 1.0), (-1.0, 1.0), (0.0, 0.0), (-1.0, -1.0), (1.0, -1.0)]]));
+    }
+
+    #[test]
+    fn an_edge_through_the_point_counts_as_a_pass() {
+        // The outer's bottom edge passes straight through (2, 0), a vertex of neither: a hole
+        // touches it there from inside, another outer from outside. Clean (the grid union case
+        // that made the snap fallback run for nothing).
+        let outer: &[(f64, f64)] = &[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)];
+        let hole: &[(f64, f64)] = &[(2.0, 0.0), (1.0, 1.0), (3.0, 1.0)];
+        let below: &[(f64, f64)] = &[(2.0, 0.0), (1.0, -1.0), (3.0, -1.0)];
+        assert!(!cross(&[outer, hole, below]));
+        // The rings at the point alone would not meet cleanly.
+        assert!(cross(&[hole, below]));
+        // The same edge running the other way (the outer clockwise) does not mend it.
+        let turned: &[(f64, f64)] = &[(0.0, 0.0), (0.0, 4.0), (4.0, 4.0), (4.0, 0.0)];
+        assert!(cross(&[turned, hole, below]));
+        // An edge that ends short of the point does not pass through it.
+        let short: &[(f64, f64)] = &[(0.0, 0.0), (1.5, 0.0), (4.0, 4.0), (0.0, 4.0)];
+        assert!(cross(&[short, hole, below]));
     }
 
     #[test]
