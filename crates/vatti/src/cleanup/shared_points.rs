@@ -56,10 +56,7 @@ pub(crate) fn cross_at_shared_points(pts: &[Point], ids: &[u32], ends: &[usize])
             return true;
         }
         meeting.clear();
-        for &k in passes {
-            let (prev, next) = rings.around(k as usize);
-            meeting.add(pts[ids[next] as usize], pts[ids[prev] as usize]);
-        }
+        meeting.add_passes(&rings, passes, pts, ids);
         if !meeting.clean(pts[v]) {
             suspects.push(v as u32);
         }
@@ -67,8 +64,9 @@ pub(crate) fn cross_at_shared_points(pts: &[Point], ids: &[u32], ends: &[usize])
     if suspects.is_empty() {
         return false;
     }
-    // Each suspect again, with the edges passing through it (their two ends as ways).
-    let mut through: Vec<(u32, Point, Point)> = Vec::new();
+    // Each suspect again, with the edges passing through it: their ends as ways, their ring
+    // (which must not pass the point otherwise: it would meet itself there).
+    let mut through: Vec<(u32, Point, Point, u32)> = Vec::new();
     suspects.sort_unstable_by(|&a, &b| pts[a as usize].x.total_cmp(&pts[b as usize].x));
     for k in 0..ids.len() {
         let (_, next) = rings.around(k);
@@ -78,20 +76,25 @@ pub(crate) fn cross_at_shared_points(pts: &[Point], ids: &[u32], ends: &[usize])
         for &v in suspects[first..].iter().take_while(|&&v| pts[v as usize].x <= hi) {
             let p = pts[v as usize];
             if p != a && p != b && on_segment(p, Segment::new(a, b)) {
-                through.push((v, b, a));
+                through.push((v, b, a, rings.ring_of[k]));
             }
         }
     }
     through.sort_unstable_by_key(|t| t.0);
+    let mut passing: Vec<u32> = Vec::new();
     suspects.iter().any(|&v| {
         let passes = &at[row[v as usize] as usize..row[v as usize + 1] as usize];
-        meeting.clear();
-        for &k in passes {
-            let (prev, next) = rings.around(k as usize);
-            meeting.add(pts[ids[next] as usize], pts[ids[prev] as usize]);
-        }
         let first = through.partition_point(|t| t.0 < v);
-        for &(_, next, prev) in through[first..].iter().take_while(|t| t.0 == v) {
+        let edges = through[first..].iter().take_while(|t| t.0 == v);
+        passing.clear();
+        passing.extend(passes.iter().map(|&k| rings.ring_of[k as usize]).chain(edges.clone().map(|t| t.3)));
+        passing.sort_unstable();
+        if passing.windows(2).any(|w| w[0] == w[1]) {
+            return true;
+        }
+        meeting.clear();
+        meeting.add_passes(&rings, passes, pts, ids);
+        for &(_, next, prev, _) in edges {
             meeting.add(next, prev);
         }
         !meeting.clean(pts[v as usize])
@@ -139,6 +142,14 @@ struct Meeting {
 impl Meeting {
     fn clear(&mut self) {
         self.ways.clear();
+    }
+
+    /// The passes `passes` of `rings` (indices into `ids`, ids of `pts`).
+    fn add_passes(&mut self, rings: &Rings, passes: &[u32], pts: &[Point], ids: &[u32]) {
+        for &k in passes {
+            let (prev, next) = rings.around(k as usize);
+            self.add(pts[ids[next] as usize], pts[ids[prev] as usize]);
+        }
     }
 
     /// A pass arriving from `prev` and leaving towards `next`.
@@ -239,6 +250,10 @@ mod tests {
         // The same edge running the other way (the outer clockwise) does not mend it.
         let turned: &[(f64, f64)] = &[(0.0, 0.0), (0.0, 4.0), (4.0, 4.0), (4.0, 0.0)];
         assert!(cross(&[turned, hole, below]));
+        // A ring pinched onto its own edge there meets itself, whatever the ways say.
+        let pinched: &[(f64, f64)] =
+            &[(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (3.0, 4.0), (2.0, 0.0), (1.0, 4.0), (0.0, 4.0)];
+        assert!(cross(&[pinched, below]));
         // An edge that ends short of the point does not pass through it.
         let short: &[(f64, f64)] = &[(0.0, 0.0), (1.5, 0.0), (4.0, 4.0), (0.0, 4.0)];
         assert!(cross(&[short, hole, below]));
