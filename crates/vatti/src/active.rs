@@ -307,12 +307,19 @@ pub(crate) struct ActiveEdges {
 }
 
 impl ActiveEdges {
-    /// Empties the table, keeping its buffers; `track` records the edges whose neighbours change.
-    pub(crate) fn reset(&mut self, track: bool) {
+    /// Empties the table, keeping its buffers, with room for `records` edges (every record the
+    /// sweep can make: two per local minimum); `track` records the edges whose neighbours change.
+    ///
+    /// Reserved, not grown: growing a vector of over-aligned records is an allocation, a copy
+    /// and a free, into fresh pages each time, and with many edges active at once those copies
+    /// and page faults (the allocator's heap churned with them) were a large part of the clip
+    /// (PERFORMANCE.md). Reserved pages that are never written hold no memory.
+    pub(crate) fn reset(&mut self, track: bool, records: usize) {
         self.edges.clear();
+        self.edges.reserve(records);
         self.first = NONE;
         self.len = 0;
-        self.index.reset();
+        self.index.reset(records);
         self.indexed = false;
         self.free.clear();
         self.ended.clear();
@@ -331,7 +338,8 @@ impl ActiveEdges {
 
     /// Bytes of capacity the table holds.
     pub(crate) fn held_bytes(&self) -> usize {
-        self.edges.capacity() * std::mem::size_of::<Edge>()
+        // Records written, not reserved: the reserve's untouched pages hold no memory.
+        self.edges.len() * std::mem::size_of::<Edge>()
             + self.index.held_bytes()
             + 4 * (self.free.capacity() + self.ended.capacity() + self.new_pairs.capacity())
     }

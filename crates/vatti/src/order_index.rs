@@ -40,10 +40,13 @@ pub(crate) struct OrderIndex {
 }
 
 impl OrderIndex {
-    /// Empties the tree, keeping its buffers.
-    pub(crate) fn reset(&mut self) {
+    /// Empties the tree, keeping its buffers, with room for `records` edges (reserved with the
+    /// table they index, `ActiveEdges::reset`).
+    pub(crate) fn reset(&mut self, records: usize) {
         self.nodes.clear();
+        self.nodes.reserve(records);
         self.node_of.clear();
+        self.node_of.reserve(records);
         self.free.clear();
         self.dead.clear();
         self.root = NONE;
@@ -52,8 +55,8 @@ impl OrderIndex {
 
     /// Bytes of capacity held.
     pub(crate) fn held_bytes(&self) -> usize {
-        self.nodes.capacity() * size_of::<Node>()
-            + 4 * (self.node_of.capacity() + self.free.capacity() + self.dead.capacity())
+        // Nodes written, not reserved (see `reset`).
+        self.nodes.len() * size_of::<Node>() + 4 * (self.node_of.len() + self.free.capacity() + self.dead.capacity())
     }
 
     /// Inserts `edge` where `before` turns false: every edge for which `before` holds is to its
@@ -277,7 +280,7 @@ mod tests {
     #[test]
     fn inserts_removes_and_swaps_keep_the_order_and_the_neighbours() {
         let mut t = OrderIndex::default();
-        t.reset();
+        t.reset(0);
         // Keys by edge id, inserted in a scrambled order.
         let keys: Vec<i64> = (0..200).map(|i| (i * 7919) % 200).collect();
         let mut expect: Vec<u32> = Vec::new();

@@ -143,7 +143,7 @@ impl<'a> SweepLine<'a> {
             mut settle,
             mut slides,
         } = buffers;
-        ael.reset(kind == Sweep::Events);
+        ael.reset(kind == Sweep::Events, 2 * bounds.minima.len());
         if kind == Sweep::Scanbeam {
             beams.rebuild(&bounds.vertices);
         }
