@@ -3,8 +3,8 @@
 
 use clip_core::Point;
 
-/// Rings as ranges of one point array, without consecutive repeated points (the seam included)
-/// and without rings of fewer than three points.
+/// Rings as ranges of one point array, without consecutive repeated points or horizontal spikes
+/// (the seam included) and without rings of fewer than three points.
 #[derive(Debug, Default)]
 pub(crate) struct RawRings {
     pub points: Vec<Point>,
@@ -63,20 +63,63 @@ impl RawRings {
     }
 
     /// Adds `p` to the ring that began at point index `start` (see [`RawRings::end_ring`]),
-    /// unless it repeats the ring's last point.
+    /// unless it repeats the ring's last point. A last point that `p` makes the tip of a
+    /// horizontal spike (the ring ran out along the scanline and comes straight back) goes first,
+    /// as often as that holds.
     #[inline]
     pub(crate) fn push_point(&mut self, start: usize, p: Point, stamp: u32) {
-        if self.points.len() > start && self.points[self.points.len() - 1] == p {
-            return;
+        let n = self.points.len();
+        // One scanline test for both the repeat and the spike.
+        if n > start && self.points[n - 1].y == p.y {
+            if self.points[n - 1].x == p.x {
+                return;
+            }
+            if n >= start + 2 && self.points[n - 2].y == p.y && self.drop_spike_tips(start, p) {
+                return;
+            }
         }
         self.points.push(p);
         self.emitted.push(stamp);
     }
 
-    /// Closes the ring whose points begin at index `start`: the seam's repeats go, and a ring of
-    /// fewer than three points is dropped.
+    /// Drops the ring's last points while `p` makes them spike tips (see
+    /// [`RawRings::push_point`]); true when `p` then repeats the last point left.
+    #[inline(never)]
+    fn drop_spike_tips(&mut self, start: usize, p: Point) -> bool {
+        while self.points.len() >= start + 2 {
+            let n = self.points.len();
+            if !is_spike(self.points[n - 2], self.points[n - 1], p) {
+                break;
+            }
+            self.points.pop();
+            self.emitted.pop();
+        }
+        self.points.len() > start && self.points[self.points.len() - 1] == p
+    }
+
+    /// Closes the ring whose points begin at index `start`: the seam's repeats and spikes go,
+    /// and a ring of fewer than three points is dropped.
     #[inline]
     pub(crate) fn end_ring(&mut self, start: usize) {
+        // The first kept point: spikes at the seam's start are dropped in one move at the end.
+        let mut first = start;
+        while self.points.len() >= first + 3 {
+            let n = self.points.len();
+            let (a, b) = (self.points[first], self.points[first + 1]);
+            let (y, z) = (self.points[n - 2], self.points[n - 1]);
+            if z == a || is_spike(y, z, a) {
+                self.points.pop();
+                self.emitted.pop();
+            } else if is_spike(z, a, b) {
+                first += 1;
+            } else {
+                break;
+            }
+        }
+        if first > start {
+            self.points.drain(start..first);
+            self.emitted.drain(start..first);
+        }
         while self.points.len() > start + 1 && self.points[start] == self.points[self.points.len() - 1] {
             self.points.pop();
             self.emitted.pop();
@@ -103,5 +146,61 @@ impl RawRings {
         }
         raw.stamps = by_y.len();
         raw
+    }
+}
+
+/// True when `b` is the tip of a horizontal spike between `a` and `c`: the three on one scanline
+/// and the ring turning straight back at `b` (exact). The sweep's slides along a scanline emit
+/// these where both operands have horizontal edges on it; dropping `b` changes no winding number
+/// off the ring, and the tip no longer reads as a touch. Spikes along other lines are left to the
+/// clean-up, which cancels opposite edges.
+#[inline]
+fn is_spike(a: Point, b: Point, c: Point) -> bool {
+    a.y == b.y && b.y == c.y && (b.x - a.x) * (c.x - b.x) < 0.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(points: &[(f64, f64)]) -> RawRings {
+        let mut raw = RawRings::default();
+        raw.push_ring(points.iter().enumerate().map(|(i, &(x, y))| (Point::new(x, y), i as u32)));
+        raw
+    }
+
+    fn points(raw: &RawRings, i: usize) -> Vec<(f64, f64)> {
+        raw.ring(i).iter().map(|p| (p.x, p.y)).collect()
+    }
+
+    #[test]
+    fn horizontal_spike_tips_go_with_their_stamps() {
+        // Out to x = 6 along y = 0 and back to 5: the tip goes, the straight-through 4 stays.
+        let raw = ring(&[(0.0, 0.0), (4.0, 0.0), (6.0, 0.0), (5.0, 0.0), (5.0, 3.0), (0.0, 3.0)]);
+        assert_eq!(points(&raw, 0), [(0.0, 0.0), (4.0, 0.0), (5.0, 0.0), (5.0, 3.0), (0.0, 3.0)]);
+        assert_eq!(raw.emitted, [0, 1, 3, 4, 5]);
+        // Back past the previous point too: both tips go, the straight-through 3 stays.
+        let raw = ring(&[(0.0, 0.0), (4.0, 0.0), (6.0, 0.0), (3.0, 0.0), (5.0, 0.0), (5.0, 3.0), (0.0, 3.0)]);
+        assert_eq!(points(&raw, 0), [(0.0, 0.0), (3.0, 0.0), (5.0, 0.0), (5.0, 3.0), (0.0, 3.0)]);
+        assert_eq!(raw.emitted, [0, 3, 4, 5, 6]);
+    }
+
+    #[test]
+    fn spikes_at_the_seam_go_and_a_ring_of_spikes_is_dropped() {
+        let raw = ring(&[(6.0, 0.0), (5.0, 0.0), (5.0, 3.0), (0.0, 3.0), (0.0, 0.0), (4.0, 0.0)]);
+        assert_eq!(points(&raw, 0), [(5.0, 0.0), (5.0, 3.0), (0.0, 3.0), (0.0, 0.0), (4.0, 0.0)]);
+        assert_eq!(raw.emitted, [1, 2, 3, 4, 5]);
+        let raw = ring(&[(5.0, 3.0), (0.0, 3.0), (0.0, 0.0), (7.0, 0.0), (5.0, 0.0)]);
+        assert_eq!(points(&raw, 0), [(5.0, 3.0), (0.0, 3.0), (0.0, 0.0), (5.0, 0.0)]);
+        assert_eq!(ring(&[(0.0, 0.0), (2.0, 0.0), (1.0, 0.0)]).len(), 0);
+    }
+
+    #[test]
+    fn other_spikes_and_straight_runs_stay() {
+        // A slanted spike is the clean-up's (it cancels opposite edges); a straight run is not a spike.
+        let slanted = [(0.0, 0.0), (2.0, 2.0), (1.0, 1.0), (1.0, 3.0)];
+        assert_eq!(points(&ring(&slanted), 0), slanted);
+        let straight = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 1.0)];
+        assert_eq!(points(&ring(&straight), 0), straight);
     }
 }
