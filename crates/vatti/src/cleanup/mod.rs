@@ -36,6 +36,8 @@ mod simple_loops;
 mod touches;
 mod turns;
 
+use std::borrow::Cow;
+
 use clip_core::{Point, Ring};
 
 use self::held::HeldTest;
@@ -66,6 +68,11 @@ pub(crate) fn conventional_rings(raw: &RawRings, touches: &mut Touches) -> Clean
     conventional_rings_checked(raw, touches, &mut Turns::default(), true, || true)
 }
 
+/// Touched rings from which, when some edge needs a split, the rings meeting none are walked
+/// along the turns apart from the rebuilt ones: below it, finding them costs more than
+/// rebuilding them.
+const SPLIT_WALK_FROM: usize = 64;
+
 /// Clockwise rings times rings up to which the held test runs whatever `near_rounding` says.
 const HELD_TEST_BUDGET: usize = 1 << 16;
 
@@ -84,21 +91,57 @@ pub(crate) fn conventional_rings_checked(
     near_rounding: impl FnOnce() -> bool,
 ) -> CleanRings {
     touches.find(raw);
-    let touches = &*touches;
-    let walk = if touches.touched.contains(&true) && touches.splits.is_empty() && turns.plan(raw, touches) {
-        Walk::Planned(turns)
-    } else {
-        Walk::Rebuilt
-    };
+    let walk = chosen_walk(raw, touches, turns, SPLIT_WALK_FROM);
     walked(raw, touches, walk, strict, near_rounding)
 }
 
-/// How the touched rings are walked again: the same rings in the same order either way.
-enum Walk<'a> {
-    /// Along the turns [`Turns::plan`] chose at the shared points (it succeeded).
-    Planned(&'a mut Turns),
-    /// Through the directed edges ([`rebuild`]), which also reports edges running the same way.
-    Rebuilt,
+/// How the touched rings of `raw` are walked: along the turns where they can be planned, else
+/// rebuilt; when some edge needs a split and at least `split_from` rings are touched, the rings
+/// that meet no edge to split are walked along the turns apart from the rebuilt ones.
+fn chosen_walk<'a>(raw: &RawRings, touches: &'a Touches, turns: &'a mut Turns, split_from: usize) -> Walk<'a> {
+    if !touches.touched.contains(&true) {
+        return Walk::rebuilt(touches);
+    }
+    if touches.splits.is_empty() {
+        return if turns.plan(raw, touches, &touches.touched) {
+            Walk::planned(turns, touches)
+        } else {
+            Walk::rebuilt(touches)
+        };
+    }
+    if touches.touched.iter().filter(|&&t| t).count() < split_from {
+        return Walk::rebuilt(touches);
+    }
+    let rebuilt = touches.rings_to_split(raw);
+    let planned: Vec<bool> = touches.touched.iter().zip(&rebuilt).map(|(&t, &r)| t && !r).collect();
+    if planned.contains(&true) && turns.plan(raw, touches, &planned) {
+        Walk { turns: Some(turns), planned: Cow::Owned(planned), rebuilt: Cow::Owned(rebuilt) }
+    } else {
+        Walk::rebuilt(touches)
+    }
+}
+
+/// How the touched rings are walked again: those of `planned` along the turns [`Turns::plan`]
+/// chose at their shared points (it succeeded), those of `rebuilt` through the directed edges
+/// ([`rebuild`]), which also reports edges running the same way. The two sets meet nowhere, so
+/// each walk gives the rings and verdict it would give walking every touched ring, and where the
+/// turns can be planned for every touched ring they give the rebuild's rings in its order.
+struct Walk<'a> {
+    turns: Option<&'a mut Turns>,
+    planned: Cow<'a, [bool]>,
+    rebuilt: Cow<'a, [bool]>,
+}
+
+impl<'a> Walk<'a> {
+    /// Every touched ring along the planned turns.
+    fn planned(turns: &'a mut Turns, touches: &'a Touches) -> Walk<'a> {
+        Walk { turns: Some(turns), planned: Cow::Borrowed(&touches.touched), rebuilt: Cow::Owned(Vec::new()) }
+    }
+
+    /// Every touched ring rebuilt.
+    fn rebuilt(touches: &'a Touches) -> Walk<'a> {
+        Walk { turns: None, planned: Cow::Owned(Vec::new()), rebuilt: Cow::Borrowed(&touches.touched) }
+    }
 }
 
 /// The untouched rings of `raw` simplified, then the touched ones walked again by `walk`, and
@@ -125,16 +168,19 @@ fn walked(
     let mut clockwise: Vec<usize> = Vec::new();
     // The rebuilt rings as point ids, for the check where they share a point.
     let (mut ring_ids, mut ring_ends) = (Vec::new(), Vec::new());
-    let same_way = match walk {
-        Walk::Planned(turns) => {
-            turns.walk(raw, touches, &mut |points: &[Point]| push_simplified(points, &mut out, &mut clockwise));
-            SameWay::None
-        }
-        Walk::Rebuilt => rebuild(raw, touches, &mut |ids: &[u32], points: &[Point]| {
+    if let Some(turns) = walk.turns {
+        turns.walk(raw, touches, &walk.planned, &mut |points: &[Point]| {
+            push_simplified(points, &mut out, &mut clockwise)
+        });
+    }
+    let same_way = if walk.rebuilt.contains(&true) {
+        rebuild(raw, touches, &walk.rebuilt, &mut |ids: &[u32], points: &[Point]| {
             ring_ids.extend_from_slice(ids);
             ring_ends.push(ring_ids.len());
             push_simplified(points, &mut out, &mut clockwise);
-        }),
+        })
+    } else {
+        SameWay::None
     };
     // Asked once at most: it scans the inputs.
     let (mut near_rounding, mut near) = (Some(near_rounding), None);
@@ -176,7 +222,7 @@ fn any_unheld(out: &[Ring], clockwise: &[usize], near_rounding: impl FnOnce() ->
 #[cfg(test)]
 mod tests {
     use clip_core::{BoolOp, FillRule, Operand, Polygons, WindowKind, validate_polygons};
-    use clip_testkit::workload::polygon_case;
+    use clip_testkit::workload::{polygon_case, polygon_case_sized};
     use proptest::prelude::*;
 
     use super::held::assert_batched_agrees;
@@ -326,12 +372,15 @@ mod tests {
     fn assert_walks_agree(raw: &RawRings) -> bool {
         let (mut touches, mut turns) = (Touches::default(), Turns::default());
         touches.find(raw);
-        if !(touches.touched.contains(&true) && touches.splits.is_empty() && turns.plan(raw, &touches)) {
+        if !(touches.touched.contains(&true)
+            && touches.splits.is_empty()
+            && turns.plan(raw, &touches, &touches.touched))
+        {
             return false;
         }
         for (strict, near) in [(true, true), (true, false), (false, true), (false, false)] {
-            let planned = walked(raw, &touches, Walk::Planned(&mut turns), strict, || near);
-            let rebuilt = walked(raw, &touches, Walk::Rebuilt, strict, || near);
+            let planned = walked(raw, &touches, Walk::planned(&mut turns, &touches), strict, || near);
+            let rebuilt = walked(raw, &touches, Walk::rebuilt(&touches), strict, || near);
             assert_eq!(
                 (&planned.rings, planned.broken_form),
                 (&rebuilt.rings, rebuilt.broken_form),
@@ -339,6 +388,81 @@ mod tests {
             );
         }
         true
+    }
+
+    /// Rings as sorted lists of points, each from its least point: the same rings in any order.
+    fn ring_set(rings: &[Ring]) -> Vec<Vec<(f64, f64)>> {
+        let mut set: Vec<Vec<(f64, f64)>> = rings
+            .iter()
+            .map(|r| {
+                let p: Vec<(f64, f64)> = r.points.iter().map(|q| (q.x, q.y)).collect();
+                let least = (0..p.len()).min_by(|&a, &b| p[a].partial_cmp(&p[b]).unwrap()).unwrap_or(0);
+                p[least..].iter().chain(&p[..least]).copied().collect()
+            })
+            .collect();
+        set.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        set
+    }
+
+    /// Where some edge needs a split and the rings meeting none can be walked along the turns,
+    /// asserts that walking them apart gives the rebuild's rings (in another order) and verdict.
+    /// False when the walk cannot be split.
+    fn assert_split_walk_agrees(raw: &RawRings) -> bool {
+        let (mut touches, mut turns) = (Touches::default(), Turns::default());
+        touches.find(raw);
+        let walk = chosen_walk(raw, &touches, &mut turns, 0);
+        if walk.turns.is_none() || !walk.rebuilt.contains(&true) {
+            return false;
+        }
+        let (planned, rebuilt) = (walk.planned.into_owned(), walk.rebuilt.into_owned());
+        for (strict, near) in [(true, true), (true, false), (false, true), (false, false)] {
+            let mut turns = Turns::default();
+            assert!(turns.plan(raw, &touches, &planned));
+            let walk =
+                Walk { turns: Some(&mut turns), planned: Cow::Borrowed(&planned), rebuilt: Cow::Borrowed(&rebuilt) };
+            let split = walked(raw, &touches, walk, strict, || near);
+            let whole = walked(raw, &touches, Walk::rebuilt(&touches), strict, || near);
+            assert_eq!(
+                (ring_set(&split.rings), split.broken_form),
+                (ring_set(&whole.rings), whole.broken_form),
+                "the split walk differs from the rebuild (strict {strict}, near rounding {near}) on {raw:?}"
+            );
+        }
+        true
+    }
+
+    #[test]
+    fn rings_meeting_no_split_are_walked_apart_with_the_rebuilds_result() {
+        // A comb xor's raw rings: pieces touching at corners, and one ring whose spine runs out
+        // and back along y = -2 (a horizontal edge holding a vertex: it splits), with the two
+        // pieces it touches. {2, 5} meet no split and are walked along the turns.
+        let rings = vec![
+            ring(&[
+                (9.0, 8.0),
+                (9.0, 7.0),
+                (10.0, 7.0),
+                (10.0, -2.0),
+                (1.0, -2.0),
+                (1.0, 6.0),
+                (0.0, 6.0),
+                (0.0, -2.0),
+                (10.0, -2.0),
+                (11.0, -2.0),
+                (11.0, 8.0),
+            ]),
+            ring(&[(6.0, 6.0), (6.0, 0.0), (7.0, 0.0), (7.0, 6.0)]),
+            ring(&[(1.0, 7.0), (1.0, 6.0), (2.0, 6.0), (2.0, 0.0), (3.0, 0.0), (3.0, 7.0)]),
+            ring(&[(8.0, 7.0), (8.0, 0.0), (9.0, 0.0), (9.0, 7.0)]),
+            ring(&[(4.0, 8.0), (4.0, 0.0), (5.0, 0.0), (5.0, 6.0), (6.0, 6.0), (6.0, 8.0)]),
+        ];
+        let raw = RawRings::from_rings(rings);
+        let mut touches = Touches::default();
+        touches.find(&raw);
+        assert_eq!(touches.rings_to_split(&raw), [true, false, true, true, false]);
+        assert!(assert_split_walk_agrees(&raw));
+        let out = super::conventional_rings(&raw, &mut Touches::default());
+        assert_eq!(out.rings.len(), 6);
+        assert!(!out.broken_form);
     }
 
     #[test]
@@ -383,9 +507,10 @@ mod tests {
 
     #[test]
     fn on_the_sweeps_rings_the_walks_agree_and_so_do_the_held_tests() {
-        let (mut planned, mut holes) = (0, 0);
+        let (mut planned, mut split, mut holes) = (0, 0, 0);
         let mut check = |raw: &RawRings| {
             planned += usize::from(assert_walks_agree(raw));
+            split += usize::from(assert_split_walk_agrees(raw));
             let clean = super::conventional_rings(raw, &mut Touches::default());
             holes += assert_batched_agrees(&clean.rings);
         };
@@ -399,8 +524,17 @@ mod tests {
                 }
             }
         }
-        // Both paths were taken often enough to mean something.
-        assert!(planned >= 300 && holes >= 3000, "{planned} planned walks, {holes} clockwise rings");
+        for index in 0..4 {
+            let case = polygon_case_sized("comb", 1, index, 200, WindowKind::Any).expect("a polygon workload");
+            for op in BoolOp::ALL {
+                on_swept_rings(&case.subject, &case.clip, op, FillRule::EvenOdd, &mut check);
+            }
+        }
+        // Every path was taken often enough to mean something.
+        assert!(
+            planned >= 300 && split >= 8 && holes >= 3000,
+            "{planned} planned walks, {split} split walks, {holes} clockwise rings"
+        );
     }
 
     /// Rings on a 6 x 6 integer grid: many shared points, pinches, shared edges and holes.
@@ -424,6 +558,7 @@ mod tests {
             prop_assume!(validate_polygons(&clip, Operand::Clip).is_ok());
             on_swept_rings(&subject, &clip, op, fill, &mut |raw: &RawRings| {
                 assert_walks_agree(raw);
+                assert_split_walk_agrees(raw);
                 assert_batched_agrees(&super::conventional_rings(raw, &mut Touches::default()).rings);
             });
         }

@@ -11,17 +11,23 @@ use super::simple_loops::split_repeats;
 use super::touches::Touches;
 use crate::raw_rings::RawRings;
 
-/// Rebuilds the touched rings of `rings` into simple rings, handed to `emit` as ids of
-/// `touches.distinct` and as points (in the order of the edges they start from); returns whether two of their edges leave or arrive at
-/// one point in the same direction.
-pub(crate) fn rebuild(rings: &RawRings, touches: &Touches, emit: &mut impl FnMut(&[u32], &[Point])) -> SameWay {
-    let Touches { touched, splits, split_points, ids, distinct: pts, .. } = touches;
+/// Rebuilds the rings of `rings` marked in `walked` (touched rings, every one with an edge to
+/// split among them, sharing no point with the others) into simple rings, handed to `emit` as
+/// ids of `touches.distinct` and as points (in the order of the edges they start from); returns
+/// whether two of their edges leave or arrive at one point in the same direction.
+pub(crate) fn rebuild(
+    rings: &RawRings,
+    touches: &Touches,
+    walked: &[bool],
+    emit: &mut impl FnMut(&[u32], &[Point]),
+) -> SameWay {
+    let Touches { splits, split_points, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let inside: usize = splits.iter().map(|s| s.inside.len()).sum();
     let mut visits: Vec<u32> = Vec::with_capacity(rings.points.len() + inside);
     let mut ring_ends: Vec<usize> = Vec::with_capacity(rings.len());
     let mut next_split = splits.iter().peekable();
-    for ri in (0..rings.len()).filter(|&ri| touched[ri]) {
+    for ri in (0..rings.len()).filter(|&ri| walked[ri]) {
         let start = rings.start(ri);
         for i in 0..rings.ring(ri).len() {
             visits.push(ids[start + i]);

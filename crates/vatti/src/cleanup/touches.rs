@@ -43,6 +43,8 @@ pub(crate) struct Touches {
     pub splits: Vec<SplitEdge>,
     /// The split edges' inside points (see [`SplitEdge`]).
     pub split_points: Vec<u32>,
+    /// The rings of the vertices inside split edges, once per vertex.
+    inside_rings: Vec<u32>,
     pub ids: Vec<u32>,
     pub distinct: Vec<Point>,
     /// The points visited more than once, each as a run of its visits (point indices) in
@@ -66,7 +68,15 @@ impl Touches {
             self.by_sorting(raw);
         }
         if raw.near_miss {
-            self.splits = split_edges(raw, &self.ring, &mut self.touched, &self.ids, true, &mut self.split_points);
+            self.splits = split_edges(
+                raw,
+                &self.ring,
+                &mut self.touched,
+                &self.ids,
+                true,
+                &mut self.split_points,
+                &mut self.inside_rings,
+            );
         }
     }
 
@@ -76,6 +86,7 @@ impl Touches {
         self.touched.resize(raw.len(), false);
         self.splits.clear();
         self.split_points.clear();
+        self.inside_rings.clear();
         self.ids.clear();
         self.ids.resize(raw.points.len(), 0);
         self.distinct.clear();
@@ -94,6 +105,12 @@ impl Touches {
         std::borrow::Cow::Owned(sorted)
     }
 
+    /// The ring of point `k` (after [`Touches::find`]).
+    #[inline]
+    pub(crate) fn ring_of(&self, k: usize) -> usize {
+        self.ring[k] as usize
+    }
+
     /// The indices of the points before and after point `k` in its ring (after [`Touches::find`]).
     #[inline]
     pub(crate) fn around(&self, raw: &RawRings, k: usize) -> (usize, usize) {
@@ -102,12 +119,42 @@ impl Touches {
         (if k == start { end - 1 } else { k - 1 }, if k + 1 == end { start } else { k + 1 })
     }
 
+    /// The touched rings that share a point, directly or through other rings, with a ring that
+    /// has an edge to split or a vertex inside another's edge: the rings the rebuild must walk.
+    /// The other touched rings meet them nowhere, so they can be walked apart.
+    pub(crate) fn rings_to_split(&self, raw: &RawRings) -> Vec<bool> {
+        // Rings joined by their shared points (union-find, halving the paths).
+        let mut root: Vec<u32> = (0..raw.len() as u32).collect();
+        fn find(root: &mut [u32], mut r: u32) -> u32 {
+            while root[r as usize] != r {
+                root[r as usize] = root[root[r as usize] as usize];
+                r = root[r as usize];
+            }
+            r
+        }
+        let mut from = 0;
+        for &end in &self.shared_ends {
+            let visits = &self.shared[from..end as usize];
+            from = end as usize;
+            let first = find(&mut root, self.ring[visits[0] as usize]);
+            for &k in &visits[1..] {
+                let other = find(&mut root, self.ring[k as usize]);
+                root[other as usize] = first;
+            }
+        }
+        let mut split = vec![false; raw.len()];
+        for r in self.splits.iter().map(|s| s.ring as u32).chain(self.inside_rings.iter().copied()) {
+            split[find(&mut root, r) as usize] = true;
+        }
+        (0..raw.len()).map(|r| self.touched[r] && split[find(&mut root, r as u32) as usize]).collect()
+    }
+
     /// Bytes the buffers hold (their capacity; split lists not counted).
     pub(crate) fn held_bytes(&self) -> usize {
         use std::mem::size_of;
         self.touched.capacity()
             + self.splits.capacity() * size_of::<SplitEdge>()
-            + 4 * self.split_points.capacity()
+            + 4 * (self.split_points.capacity() + self.inside_rings.capacity())
             + 4 * (self.ids.capacity() + self.slot.capacity() + self.ring.capacity())
             + 4 * (self.shared.capacity() + self.shared_ends.capacity())
             + self.distinct.capacity() * size_of::<Point>()
@@ -208,6 +255,7 @@ impl Touches {
             let start = self.split_points.len();
             for &(_, j) in run[from..].iter().take_while(|&&(x, _)| x < hi) {
                 self.touched[ring[j as usize] as usize] = true;
+                self.inside_rings.push(ring[j as usize]);
                 let id = self.ids[j as usize];
                 if self.split_points.len() == start || self.split_points.last() != Some(&id) {
                     self.split_points.push(id);
@@ -266,7 +314,7 @@ impl Touches {
             t.name_point(raw, &ring, same.iter().map(|&(_, k)| k));
         }
         drop(keyed);
-        t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false, &mut t.split_points);
+        t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false, &mut t.split_points, &mut t.inside_rings);
         t.ring = ring;
     }
 }
@@ -302,8 +350,10 @@ fn split_edges(
     ids: &[u32],
     every_edge: bool,
     points: &mut Vec<u32>,
+    inside_rings: &mut Vec<u32>,
 ) -> Vec<SplitEdge> {
     points.clear();
+    inside_rings.clear();
     let has_horizontal = (0..raw.len()).any(|i| {
         let r = raw.ring(i);
         (0..r.len()).any(|k| r[k].y == r[(k + 1) % r.len()].y)
@@ -351,6 +401,7 @@ fn split_edges(
             touched[ri] = true;
             for &k in &inside {
                 touched[ring[k as usize] as usize] = true;
+                inside_rings.push(ring[k as usize]);
             }
             let start = points.len();
             for &k in &inside {

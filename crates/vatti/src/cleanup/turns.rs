@@ -67,9 +67,10 @@ fn sorted_apart(ways: &mut [Way], v: Point) -> bool {
 }
 
 impl Turns {
-    /// Chooses the turns at the shared points of `raw`'s touched rings (whose horizontal edges
-    /// need no split). False, with nothing chosen, when the rebuild must run instead.
-    pub(crate) fn plan(&mut self, raw: &RawRings, touches: &Touches) -> bool {
+    /// Chooses the turns at the shared points of the rings marked in `rings` (touched rings whose
+    /// horizontal edges need no split, sharing no point with the others). False, with nothing
+    /// chosen, when the rebuild must run instead.
+    pub(crate) fn plan(&mut self, raw: &RawRings, touches: &Touches, rings: &[bool]) -> bool {
         let Touches { ids, distinct: pts, shared, shared_ends, .. } = touches;
         self.pick.clear();
         self.pick.extend(0..raw.points.len() as u32);
@@ -78,6 +79,10 @@ impl Turns {
         for &end in shared_ends {
             let visits = &shared[from..end as usize];
             from = end as usize;
+            // A point's visits are all of marked rings or none.
+            if !rings[touches.ring_of(visits[0] as usize)] {
+                continue;
+            }
             let pv = pts[ids[visits[0] as usize] as usize];
             // The ways in and out of every visit of the point, counter-clockwise by direction.
             ways.clear();
@@ -112,17 +117,17 @@ impl Turns {
         true
     }
 
-    /// The closed walks through the touched rings along the planned turns, in the rebuild's
-    /// order (each from the first edge not yet walked), each split at the points it visits twice
-    /// and handed to `emit` as points.
-    pub(crate) fn walk(&mut self, raw: &RawRings, touches: &Touches, emit: &mut impl FnMut(&[Point])) {
-        let Touches { touched, ids, distinct: pts, .. } = touches;
+    /// The closed walks through the rings marked in `rings` (those [`Turns::plan`] planned) along
+    /// the planned turns, in the rebuild's order (each from the first edge not yet walked), each
+    /// split at the points it visits twice and handed to `emit` as points.
+    pub(crate) fn walk(&mut self, raw: &RawRings, touches: &Touches, rings: &[bool], emit: &mut impl FnMut(&[Point])) {
+        let Touches { ids, distinct: pts, .. } = touches;
         self.used.clear();
         self.used.resize(raw.points.len(), false);
         self.slot.clear();
         self.slot.resize(pts.len(), usize::MAX);
         let points = &mut self.points;
-        for ri in (0..raw.len()).filter(|&ri| touched[ri]) {
+        for ri in (0..raw.len()).filter(|&ri| rings[ri]) {
             for start in raw.start(ri)..raw.ends[ri] {
                 if self.used[start] {
                     continue;
