@@ -105,7 +105,10 @@
 //!   vertices inside horizontal output edges split them, and rings are re-walked corner by
 //!   corner, then split where they still visit a vertex twice. Where nothing cancels or splits
 //!   (most touches: holes on their outers, pinches), the walk turns only at the shared points
-//!   (`turns`), with the same result.
+//!   (`turns`), with the same result; where something splits, the rings sharing no point with
+//!   it are walked that way apart from the rest. Horizontal spikes (a ring running out along a
+//!   scanline and straight back, which slides emit where both operands have horizontals on it)
+//!   are dropped as the sweep's rings are read out.
 //! - Output follows the workspace's conventions (`docs/DESIGN.md`): simple rings, outers
 //!   counter-clockwise, holes clockwise, no repeated or collinear vertices, no zero-area rings.
 //!   Where the result pinches at a point the rings are split there (two rings touching at a
