@@ -1,10 +1,13 @@
 //! Output polygons built from both ends as the sweep goes (the paper's polygon nodes with their
 //! L and R ends): AddLocalMin, AddLeft, AddRight, AddLocalMax and AppendPolygon.
 //!
-//! Each open polygon is a circular doubly linked list of points whose `next` order has the
-//! result on its left (counter-clockwise outers, clockwise holes). Its *left* end (fed by the
-//! edge that has the result on its right) and its *right* end are adjacent in the circle, so
-//! both grow by inserting between them.
+//! Each open polygon is a list of points from its *left* end (fed by the edge that has the result
+//! on its right) to its *right* end, in the order that has the result on its left
+//! (counter-clockwise outers, clockwise holes). Each point links only to the next: a point added
+//! at the left end links to the old left end, one added at the right end is linked from the old
+//! right end. So an addition writes only the end it grows from, which the repeat test has just
+//! read, and the other end's point, often cold where the two ends are fed far apart, is not
+//! touched. A closed ring runs from its left end to its right end and back.
 
 use clip_core::Point;
 
@@ -14,8 +17,8 @@ use crate::raw_rings::RawRings;
 #[derive(Clone, Copy, Debug)]
 struct OutPt {
     pt: Point,
+    /// The point after this one towards the right end, `NONE` at the right end.
     next: u32,
-    prev: u32,
 }
 
 /// An output polygon (the paper's polygon node).
@@ -67,7 +70,7 @@ impl OutputBuilder {
     /// AddLocalMin: a new polygon holding `p`, fed by `left_edge` and `right_edge`.
     pub(crate) fn add_local_min(&mut self, left_edge: u32, right_edge: u32, p: Point) -> u32 {
         let pt = self.pts.len() as u32;
-        self.pts.push(OutPt { pt: p, next: pt, prev: pt });
+        self.pts.push(OutPt { pt: p, next: NONE });
         let rec = self.recs.len() as u32;
         self.recs.push(OutRec { left: pt, right: pt, left_edge, right_edge, closed: false });
         rec
@@ -95,12 +98,12 @@ impl OutputBuilder {
         let id = self.pts.len() as u32;
         if at_left {
             r.left = id;
+            self.pts.push(OutPt { pt: p, next: left });
         } else {
             r.right = id;
+            self.pts[right as usize].next = id;
+            self.pts.push(OutPt { pt: p, next: NONE });
         }
-        self.pts[right as usize].next = id;
-        self.pts[left as usize].prev = id;
-        self.pts.push(OutPt { pt: p, next: left, prev: right });
     }
 
     /// The two ends of one polygon met: it is a closed ring.
@@ -117,9 +120,6 @@ impl OutputBuilder {
     pub(crate) fn append(&mut self, x: u32, y: u32) {
         let (rx, ry) = (self.recs[x as usize], self.recs[y as usize]);
         self.pts[rx.right as usize].next = ry.left;
-        self.pts[ry.left as usize].prev = rx.right;
-        self.pts[ry.right as usize].next = rx.left;
-        self.pts[rx.left as usize].prev = ry.right;
         let r = &mut self.recs[x as usize];
         r.right = ry.right;
         r.right_edge = ry.right_edge;
@@ -149,10 +149,10 @@ impl OutputBuilder {
             for _ in 0..self.pts.len() {
                 let here = &self.pts[p as usize];
                 raw.push_point(start, here.pt, p);
-                p = here.next;
-                if p == r.left {
+                if p == r.right || here.next == NONE {
                     break;
                 }
+                p = here.next;
             }
             raw.end_ring(start);
         }
