@@ -47,6 +47,15 @@ impl Polygons {
         Rect::bounding(self.points())
     }
 
+    /// The region mirrored across the line y = x (every point's x and y exchanged), each ring
+    /// walked the other way. A mirror alone reverses orientation; the walk undoes that, so every
+    /// point of the mirrored region has the winding number of its original, and the same fill
+    /// rule reads both alike. Exact (no arithmetic), and its own inverse.
+    pub fn transposed(&self) -> Polygons {
+        let ring = |r: &Ring| Ring { points: r.points.iter().rev().map(|p| Point::new(p.y, p.x)).collect() };
+        Polygons { rings: self.rings.iter().map(ring).collect() }
+    }
+
     /// Sum of the rings' signed areas. For output that follows the convention (outers
     /// counter-clockwise, holes clockwise, no overlaps) this is the area of the region.
     pub fn signed_area(&self) -> f64 {

@@ -174,6 +174,20 @@ fn winding_numbers_of_nested_rings() {
 }
 
 #[test]
+fn transposed_keeps_every_winding_number_at_the_mirrored_point() {
+    let polys = nested_squares();
+    // The squares and a bow-tie, so both ways round and a crossing are mirrored.
+    let mut both = polys.clone();
+    both.rings.push(ring(&[(40.0, 0.0), (44.0, 4.0), (44.0, 0.0), (40.0, 4.0)]));
+    let t = both.transposed();
+    for q in [p(-1.0, 5.0), p(8.0, 8.0), p(3.0, 3.0), p(25.0, 5.0), p(41.0, 2.0), p(43.0, 2.0), p(10.0, 5.0)] {
+        assert_eq!(winding_number(Point::new(q.y, q.x), &t), winding_number(q, &both), "at {q:?}");
+    }
+    assert_eq!(t.signed_area(), both.signed_area());
+    assert_eq!(t.transposed(), both, "its own inverse");
+}
+
+#[test]
 fn locate_under_each_fill_rule() {
     use Location::*;
     let polys = nested_squares();

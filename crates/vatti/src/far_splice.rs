@@ -535,7 +535,8 @@ mod tests {
         ]);
         let fill = FillRule::EvenOdd;
         let far = Vatti::prepare(&clip, fill).unwrap().resolved().rings.clone();
-        let sweep = |a: &Polygons, b: &Polygons, op| Vatti.clip_along(Route::Whole, None, a, b, op, fill).unwrap();
+        let sweep =
+            |a: &Polygons, b: &Polygons, op| Vatti.clip_along(Route::Whole, None, None, a, b, op, fill).unwrap();
         let far = Far { rings: &far, blocks: None };
         assert!(splice(&subject, far, false, BoolOp::Union, fill, sweep).is_none());
         let prepared = Vatti::prepare(&clip, fill).unwrap();
@@ -555,13 +556,15 @@ mod tests {
                 let blocks: Vec<EdgeBlocks> = far.rings.iter().map(|r| EdgeBlocks::new(&r.points)).collect();
                 for op in [BoolOp::Union, BoolOp::Xor] {
                     let far = Far { rings: &far, blocks: Some(&blocks) };
-                    let sweep =
-                        |a: &Polygons, b: &Polygons, op| Vatti.clip_along(Route::Whole, None, a, b, op, fill).unwrap();
+                    let sweep = |a: &Polygons, b: &Polygons, op| {
+                        Vatti.clip_along(Route::Whole, None, None, a, b, op, fill).unwrap()
+                    };
                     let Some(out) = splice(&case.subject, far, false, op, fill, sweep) else {
                         continue;
                     };
                     spliced += 1;
-                    let plain = Vatti.clip_along(Route::Whole, None, &case.subject, &case.clip, op, fill).unwrap();
+                    let plain =
+                        Vatti.clip_along(Route::Whole, None, None, &case.subject, &case.clip, op, fill).unwrap();
                     let tol = tolerance(&case.subject, &case.clip, REGION_TOLERANCE);
                     let same = same_region((&out, FillRule::NonZero), (&plain, FillRule::NonZero), tol);
                     assert!(same.is_ok(), "case {index} {op:?} {fill:?}: {:?}", same.unwrap_err());

@@ -50,6 +50,14 @@
 //! event sweep above; [`FixedSweep`] fixes either (`vatti-scanbeam` in the harness reproduces
 //! the paper's cost at every size).
 //!
+//! Either sweep runs along y, as the paper's does, or along x ([`SweepAxis`]): the operands
+//! are then mirrored across y = x, exactly and with every winding number kept
+//! (`Polygons::transposed`), swept, and the output mirrored back. [`Vatti`] sweeps along x
+//! when a vertical line spans, on average, fewer than half the edges a horizontal one does
+//! (`Σ|Δx| / width` against `Σ|Δy| / height`): the cost of each event grows with the edges
+//! spanning the line, so a comb's upright teeth, swept upwards, keep half its edges in the
+//! table at once, and swept rightwards a handful. [`FixedSweep`] sweeps along y.
+//!
 //! # Routes: the paper's Extensions and a pre-filter
 //!
 //! The paper's Extensions name two optimisations they do not describe: "clipping several
@@ -79,7 +87,7 @@
 //!   the others. [`VattiPrepared`] puts it behind [`PolygonClipper`] (`vatti-prepared` in the
 //!   harness), keeping each thread's last prepared clip.
 //!
-//! [`Vatti::clip_along`] and [`PreparedClip::clip_along`] take any route and sweep; the tests
+//! [`Vatti::clip_along`] and [`PreparedClip::clip_along`] take any route, sweep and axis; the tests
 //! run every one on the same inputs against each other and the exact oracle.
 //!
 //! # Exactness and limits
@@ -204,7 +212,7 @@ use clip_core::{
 
 pub use crate::prepared::PreparedClip;
 pub use crate::prepared_reuse::VattiPrepared;
-pub use crate::route::Route;
+pub use crate::route::{Route, SweepAxis};
 pub use crate::sweep::Sweep;
 
 use crate::cleanup::{Touches, Turns};
@@ -221,19 +229,22 @@ use crate::sweep::SweepLine;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Vatti;
 
-/// [`Vatti`] with its sweep fixed: `vatti-scanbeam` (the paper's sweep, whatever the input) and
-/// `vatti-events` in the harness. The same output as [`Vatti`].
+/// [`Vatti`] with its sweep fixed, along y as the paper sweeps: `vatti-scanbeam` (the paper's
+/// sweep, whatever the input) and `vatti-events` in the harness. The same region as [`Vatti`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FixedSweep(pub Sweep);
 
 impl Vatti {
-    /// `subject op clip` along the given route, by the given sweep (chosen by size when
-    /// `None`): for comparing the paths, which give the same region. A [`Route::Splice`] needs
-    /// a prepared clip ([`PreparedClip::clip_along`]); here it is [`Route::Envelope`].
+    /// `subject op clip` along the given route, by the given sweep and axis (each chosen on the
+    /// operands when `None`): for comparing the paths, which give the same region. A
+    /// [`Route::Splice`] needs a prepared clip ([`PreparedClip::clip_along`]); here it is
+    /// [`Route::Envelope`].
+    #[allow(clippy::too_many_arguments)]
     pub fn clip_along(
         &self,
         route: Route,
         sweep: Option<Sweep>,
+        axis: Option<SweepAxis>,
         subject: &Polygons,
         clip: &Polygons,
         op: BoolOp,
@@ -241,7 +252,7 @@ impl Vatti {
     ) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
         validate_polygons(clip, Operand::Clip)?;
-        Ok(clip_planned(subject, clip, None, op, fill, Plan { route, sweep }))
+        Ok(clip_planned(subject, clip, None, op, fill, Plan { route, sweep, axis }))
     }
 
     /// The sweep's conventional rings of valid operands. Where rounding broke their form (the
@@ -363,9 +374,14 @@ fn clip_planned(
     swept(&a, &b, op, fill, plan)
 }
 
-/// The sweep's clean output for `a op b` (valid operands), by the plan's sweep.
+/// The sweep's clean output for `a op b` (valid operands), by the plan's sweep along its axis.
 fn swept(a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, plan: Plan) -> Polygons {
-    Vatti::sweep_polygons(a, b, op, fill, plan.sweep_for(edge_count(a) + edge_count(b)))
+    let edges = edge_count(a) + edge_count(b);
+    let sweep = plan.sweep_for(edges);
+    match plan.axis_for(a, b, edges) {
+        SweepAxis::Y => Vatti::sweep_polygons(a, b, op, fill, sweep),
+        SweepAxis::X => Vatti::sweep_polygons(&a.transposed(), &b.transposed(), op, fill, sweep).transposed(),
+    }
 }
 
 /// `subject op clip` as trapezoids along `plan`.
@@ -408,13 +424,16 @@ impl PolygonClipper for Vatti {
     }
 }
 
-/// Both operands checked, then the plan for them; `sweep` fixes the sweep instead of the rule's
-/// choice.
+/// Both operands checked, then the plan for them; `sweep` fixes the sweep, along y, instead of
+/// the rules' choice.
 fn validated_plan(subject: &Polygons, clip: &Polygons, op: BoolOp, sweep: Option<Sweep>) -> Result<Plan, ClipError> {
     validate_polygons(subject, Operand::Subject)?;
     validate_polygons(clip, Operand::Clip)?;
     let plan = Plan::of(subject, clip, op, false);
-    Ok(Plan { sweep: sweep.or(plan.sweep), ..plan })
+    match sweep {
+        Some(sweep) => Ok(Plan { sweep: Some(sweep), axis: Some(SweepAxis::Y), ..plan }),
+        None => Ok(plan),
+    }
 }
 
 impl PolygonClipper for FixedSweep {

@@ -8,7 +8,7 @@ use clip_core::{BoolOp, ClipError, FillRule, Operand, Polygons, Rect, Trapezoid,
 
 use crate::edge_blocks::EdgeBlocks;
 use crate::far_splice::{Far, splice};
-use crate::route::{Plan, Route};
+use crate::route::{Plan, Route, SweepAxis};
 use crate::sweep::Sweep;
 use crate::{Vatti, clip_planned, trapezoids_planned};
 
@@ -65,20 +65,21 @@ impl PreparedClip {
 
     /// `subject op clip`, as [`Vatti`]'s `clip` gives it.
     pub fn clip(&self, subject: &Polygons, op: BoolOp) -> Result<Polygons, ClipError> {
-        self.clip_along(Plan::of(subject, &self.clip, op, true).route, None, subject, op)
+        self.clip_along(Plan::of(subject, &self.clip, op, true).route, None, None, subject, op)
     }
 
-    /// `subject op clip` along the given route and sweep (chosen by size when `None`), for
-    /// comparing the paths: the same region.
+    /// `subject op clip` along the given route, sweep and axis (each chosen on the operands
+    /// when `None`), for comparing the paths: the same region.
     pub fn clip_along(
         &self,
         route: Route,
         sweep: Option<Sweep>,
+        axis: Option<SweepAxis>,
         subject: &Polygons,
         op: BoolOp,
     ) -> Result<Polygons, ClipError> {
         validate_polygons(subject, Operand::Subject)?;
-        Ok(clip_planned(subject, &self.clip, Some(self), op, self.fill, Plan { route, sweep }))
+        Ok(clip_planned(subject, &self.clip, Some(self), op, self.fill, Plan { route, sweep, axis }))
     }
 
     /// `subject op clip` as trapezoids, as [`Vatti`]'s `clip_trapezoids` gives them.

@@ -6,7 +6,7 @@ mod common;
 use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Rect, Ring};
 use clip_oracle::polygon::{OutputRules, REGION_TOLERANCE, check_polygon_result, same_region, tolerance};
 use clip_testkit::workload::polygon_case_sized;
-use clip_vatti::{Route, Sweep, Vatti};
+use clip_vatti::{Route, Sweep, SweepAxis, Vatti};
 use proptest::prelude::*;
 
 /// Rings of random float vertices in a box placed at `(ox, oy)` of side `size` (self-crossing).
@@ -88,16 +88,18 @@ fn fill() -> impl Strategy<Value = FillRule> {
     prop::sample::select(FillRule::ALL.to_vec())
 }
 
-/// Every route by both sweeps, `clip` and the prepared clip's routes: oracle-exact, valid,
+/// Every route by both sweeps along both axes, `clip` and the prepared clip's routes: oracle-exact, valid,
 /// and the region of the whole sweep by the paper's scanbeam sweep.
 fn check_all_paths(s: &Polygons, c: &Polygons, op: BoolOp, fill: FillRule) -> Result<(), TestCaseError> {
-    let plain = Vatti.clip_along(Route::Whole, Some(Sweep::Scanbeam), s, c, op, fill).unwrap();
+    let plain = Vatti.clip_along(Route::Whole, Some(Sweep::Scanbeam), Some(SweepAxis::Y), s, c, op, fill).unwrap();
     let prepared = Vatti::prepare(c, fill).unwrap();
     let mut outs = vec![("clip", Vatti.clip(s, c, op, fill).unwrap()), ("prepared", prepared.clip(s, op).unwrap())];
     for route in [Route::Whole, Route::Envelope, Route::Splice] {
         for sweep in [Sweep::Scanbeam, Sweep::Events] {
-            outs.push(("route", Vatti.clip_along(route, Some(sweep), s, c, op, fill).unwrap()));
-            outs.push(("prepared route", prepared.clip_along(route, Some(sweep), s, op).unwrap()));
+            for axis in [SweepAxis::Y, SweepAxis::X] {
+                outs.push(("route", Vatti.clip_along(route, Some(sweep), Some(axis), s, c, op, fill).unwrap()));
+                outs.push(("prepared route", prepared.clip_along(route, Some(sweep), Some(axis), s, op).unwrap()));
+            }
         }
     }
     let tol = tolerance(s, c, REGION_TOLERANCE);
