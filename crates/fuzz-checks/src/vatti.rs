@@ -1,14 +1,15 @@
 //! The `vatti` target: two operands from the bytes, all four operations under one fill rule,
 //! each result through the exact oracle, then the area and region identities. `Vatti` sweeps
-//! inputs this small with the paper's scanbeam sweep, so each operation also runs the event
-//! sweep (`FixedSweep(Sweep::Events)`), judged by the oracle and against `Vatti`'s region.
+//! inputs this small with the paper's scanbeam sweep along y, so each operation also runs the
+//! event sweep along y and along x (`Vatti::clip_along`), judged by the oracle and against
+//! `Vatti`'s region.
 
 use arbitrary::{Arbitrary, Unstructured};
 use clip_core::{BoolOp, FillRule, Operand, PolygonClipper, Polygons, Rect, Ring, validate_polygons};
 use clip_oracle::polygon::{
     OutputRules, REGION_TOLERANCE, check_area_identities, check_polygon_result, same_region, tolerance,
 };
-use clip_vatti::{FixedSweep, Sweep, Vatti};
+use clip_vatti::{Route, Sweep, SweepAxis, Vatti};
 
 use crate::shape::{Builder, Frame, ShapeSpec};
 use crate::{Fill, Outcome};
@@ -84,17 +85,22 @@ pub fn check(case: &VattiCase) -> Result<Outcome, String> {
     Ok(Outcome::Polygons(vec![("intersection", inter), ("union", union), ("difference", diff), ("xor", xor)]))
 }
 
-/// The event sweep on the same operation: accepted by the oracle, and the same region as `out`
-/// (`Vatti`'s result) within both results' rounding.
+/// The event sweep on the same operation, along y and along x: each accepted by the oracle, and
+/// the same region as `out` (`Vatti`'s result) within both results' rounding.
 fn events_sweep_agrees(case: &VattiCase, op: BoolOp, out: &Polygons, rules: &OutputRules) -> Result<(), String> {
     let VattiCase { subject, clip, fill } = case;
-    let events = FixedSweep(Sweep::Events)
-        .clip(subject, clip, op, *fill)
-        .map_err(|e| format!("{op:?}: the event sweep refused valid input: {e}"))?;
-    check_polygon_result(subject, clip, op, *fill, &events, rules).map_err(|f| format!("{op:?}, event sweep: {f}"))?;
-    let allowed = 2.0 * tolerance(subject, clip, REGION_TOLERANCE);
-    same_region((&events, FillRule::NonZero), (out, FillRule::NonZero), allowed)
-        .map_err(|area| format!("{op:?}: the event sweep's region differs from vatti's by area {area:e}"))
+    for axis in [SweepAxis::Y, SweepAxis::X] {
+        let events = Vatti
+            .clip_along(Route::Whole, Some(Sweep::Events), Some(axis), subject, clip, op, *fill)
+            .map_err(|e| format!("{op:?}: the event sweep along {axis:?} refused valid input: {e}"))?;
+        check_polygon_result(subject, clip, op, *fill, &events, rules)
+            .map_err(|f| format!("{op:?}, event sweep along {axis:?}: {f}"))?;
+        let allowed = 2.0 * tolerance(subject, clip, REGION_TOLERANCE);
+        same_region((&events, FillRule::NonZero), (out, FillRule::NonZero), allowed).map_err(|area| {
+            format!("{op:?}: the event sweep's region along {axis:?} differs from vatti's by area {area:e}")
+        })?;
+    }
+    Ok(())
 }
 
 /// Whether vatti's outputs (or shapes built from them) can be fed back in: a crossing of edges
