@@ -120,10 +120,7 @@ impl RawRings {
             self.points.drain(start..first);
             self.emitted.drain(start..first);
         }
-        while self.points.len() > start + 1 && self.points[start] == self.points[self.points.len() - 1] {
-            self.points.pop();
-            self.emitted.pop();
-        }
+        // The loop ends with the last point unlike the first, or with fewer than three left.
         if self.points.len() - start < 3 {
             self.points.truncate(start);
             self.emitted.truncate(start);
