@@ -97,12 +97,15 @@ impl Edges {
             by_start.insert(self.hashes[e], e, e);
         }
         let mut rings = Vec::new();
+        // One walk buffer for every ring, each ring then copied out at its length: a vector per
+        // ring grown point by point is reallocated about log2(length) times.
+        let mut points = Vec::with_capacity(n);
         for first in 0..n {
             if used[first] {
                 continue;
             }
             let start = self.keys[first];
-            let mut points = Vec::new();
+            points.clear();
             let mut at = first;
             loop {
                 used[at] = true;
@@ -118,7 +121,7 @@ impl Edges {
                     end
                 };
             }
-            rings.push(Ring::new(points));
+            rings.push(Ring::new(points.as_slice().to_vec()));
         }
         Some(rings)
     }
