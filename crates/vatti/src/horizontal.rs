@@ -21,8 +21,17 @@ impl SweepLine<'_> {
         let top = self.ael.get(s.edge).top;
         for _ in 0..self.ael.len() {
             let k = if rightwards { self.ael.next(s.edge) } else { self.ael.prev(s.edge) };
-            if k == NONE || !self.passes(k, end, top, rightwards) {
+            if k == NONE {
                 break;
+            }
+            match self.passes(k, end, top, rightwards) {
+                Passing::Passes => {}
+                Passing::Stops => break,
+                Passing::Along => {
+                    let (l, r) = if rightwards { (s.edge, k) } else { (k, s.edge) };
+                    self.order_coincident(l, r, end);
+                    break;
+                }
             }
             let xk = self.ael.x_on(k, y);
             // k's x on the scanline is computed unless the crossing is exact (see `passed_at`):
@@ -47,30 +56,46 @@ impl SweepLine<'_> {
         e.curr_y = y;
     }
 
-    /// True when an edge sliding towards `end` (and heading to `top` from there) must pass `k`.
+    /// Whether an edge sliding towards `end` (and heading to `top` from there) must pass `k`.
     /// k's x on the scanline is computed, off by up to a few ulps of its ends' magnitude, which
     /// far from `end` can be a long way: within that of `end` its side is decided exactly, as
     /// the edges entering the table are placed (a fuzz input's edge from x = -2.9 came out 9e-17
     /// right of a horizontal's end it passes 3e-16 left of, and the crossing was missed). The x
     /// of an edge ending here or sliding is an exact input coordinate.
-    fn passes(&mut self, k: u32, end: Point, top: Point, rightwards: bool) -> bool {
+    fn passes(&mut self, k: u32, end: Point, top: Point, rightwards: bool) -> Passing {
         let x = self.ael.x_on(k, end.y);
         let e = self.ael.get(k);
         let exact_x = e.ends_by(end.y) || e.moving;
         if x != end.x && (exact_x || e.clearly_off(x, end)) {
-            return (x < end.x) == rightwards;
+            return Passing::when((x < end.x) == rightwards);
         }
         if exact_x {
-            return false;
+            return Passing::Stops;
         }
         match e.side_of(end) {
             // `end` right of k: k is left of the end point.
-            Orientation::Clockwise => rightwards,
-            Orientation::CounterClockwise => !rightwards,
-            Orientation::Collinear => {
-                let turn = orient(end, top, e.top);
-                if rightwards { turn == Orientation::CounterClockwise } else { turn == Orientation::Clockwise }
-            }
+            Orientation::Clockwise => Passing::when(rightwards),
+            Orientation::CounterClockwise => Passing::when(!rightwards),
+            Orientation::Collinear => match orient(end, top, e.top) {
+                Orientation::Collinear => Passing::Along,
+                turn => Passing::when(
+                    turn == if rightwards { Orientation::CounterClockwise } else { Orientation::Clockwise },
+                ),
+            },
         }
+    }
+}
+
+/// What a sliding edge does at an active edge it meets.
+enum Passing {
+    Passes,
+    Stops,
+    /// It stops: the edge goes on from the slide's end along the line the sliding edge takes.
+    Along,
+}
+
+impl Passing {
+    fn when(passes: bool) -> Passing {
+        if passes { Passing::Passes } else { Passing::Stops }
     }
 }
