@@ -34,6 +34,10 @@ const MAX_SCANNED_EDGES: usize = 1024;
 /// make the output worth checking: features that small are where rounding misplaces edges.
 const ULPS_NEAR_ROUNDING: f64 = 4096.0;
 
+/// Rings at most this many ulps of their largest coordinate wide are slivers that rounded
+/// crossings can turn inside out: the snap fallback's pixel, which would collapse them.
+const SLIVER_ULPS: f64 = 4.0;
+
 /// True when `rings` cross, overlap, meet uncleanly at a shared point or nest against their
 /// orientation, where they are checked: with `near_vertices` (the sweep's near miss or
 /// [`vertices_near_rounding`]) and at most [`MAX_EDGES`] edges, or with an edge or a ring's
@@ -137,20 +141,12 @@ pub(crate) fn raw_near_rounding(subject: &Polygons, clip: &Polygons, raw: &RawRi
 fn reaches_rounding<'a>(subject: &Polygons, clip: &Polygons, rings: impl Iterator<Item = &'a [Point]>) -> bool {
     let (mut shortest2, mut thinnest) = (f64::INFINITY, f64::INFINITY);
     for p in rings.filter(|p| !p.is_empty()) {
-        // Twice the area (about the first vertex, so that far coordinates cancel) over the L1
-        // perimeter: at most the ring's width. A sliver of long edges (nearly collinear input
-        // vertices) is as near rounding as a short edge.
-        let o = p[0];
-        let (mut a, mut twice_area, mut perimeter) = (p[p.len() - 1], 0.0, 0.0);
-        for &b in p {
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            shortest2 = shortest2.min(dx * dx + dy * dy);
-            perimeter += dx.abs() + dy.abs();
-            twice_area += (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-            a = b;
-        }
+        // A sliver of long edges (nearly collinear input vertices) is as near rounding as a
+        // short edge.
+        let (twice_area, perimeter, s2) = ring_measures(p);
+        shortest2 = shortest2.min(s2);
         if perimeter > 0.0 {
-            thinnest = thinnest.min(twice_area.abs() / perimeter);
+            thinnest = thinnest.min(twice_area / perimeter);
         }
     }
     // The largest coordinate that leaves the shortest edge and the thinnest ring above the limit.
@@ -159,6 +155,54 @@ fn reaches_rounding<'a>(subject: &Polygons, clip: &Polygons, rings: impl Iterato
         .iter()
         .flat_map(|p| &p.rings)
         .any(|r| r.points.iter().any(|q| q.x.abs().max(q.y.abs()) >= largest_far))
+}
+
+/// A ring's twice area (about its first vertex, so that far coordinates cancel; its absolute
+/// value), L1 perimeter and shortest edge squared. The first over the second is at most the
+/// ring's width.
+fn ring_measures(p: &[Point]) -> (f64, f64, f64) {
+    let Some(&o) = p.first() else { return (0.0, 0.0, f64::INFINITY) };
+    let (mut a, mut twice_area, mut perimeter, mut shortest2) = (p[p.len() - 1], 0.0, 0.0, f64::INFINITY);
+    for &b in p {
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        shortest2 = shortest2.min(dx * dx + dy * dy);
+        perimeter += dx.abs() + dy.abs();
+        twice_area += (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+        a = b;
+    }
+    (twice_area.abs(), perimeter, shortest2)
+}
+
+/// Removes from an output of more than [`MAX_SCANNED_EDGES`] edges, which
+/// [`broken_near_rounding`] checks only with near vertices, the slivers (rings at most
+/// [`SLIVER_ULPS`] ulps of their largest coordinate wide) whose orientation disagrees with the
+/// number of rings around them: rounded crossings put a vertex across the line of the others, and
+/// the ring runs the wrong way round a region narrower than f64 can place a point in. Snap
+/// rounding at the fallback's pixel would collapse them; this does so without the fallback's
+/// sweep. Smaller outputs with a ring that thin are checked whole. Linear in the output where it
+/// holds no sliver.
+pub(crate) fn drop_flipped_slivers(rings: &mut Vec<Ring>) {
+    if rings.iter().map(Ring::len).sum::<usize>() <= MAX_SCANNED_EDGES {
+        return;
+    }
+    // The first vertex's magnitude plus the perimeter bounds a ring's coordinates.
+    let sliver = |r: &Ring| {
+        let (twice_area, perimeter, _) = ring_measures(&r.points);
+        let largest = r.points.first().map_or(0.0, |o| o.x.abs().max(o.y.abs())) + perimeter;
+        twice_area <= SLIVER_ULPS * f64::EPSILON * largest * perimeter
+    };
+    let slivers: Vec<usize> = (0..rings.len()).filter(|&r| sliver(&rings[r])).collect();
+    if slivers.is_empty() {
+        return;
+    }
+    let boxes: Vec<Rect> = rings.iter().map(Ring::bounds).collect();
+    let Some(index) = CellIndex::new(&boxes) else { return };
+    let flipped: Vec<usize> = slivers.into_iter().filter(|&r| against_orientation(rings, &boxes, &index, r)).collect();
+    let mut k = 0;
+    rings.retain(|_| {
+        k += 1;
+        flipped.binary_search(&(k - 1)).is_err()
+    });
 }
 
 /// Two edges crossing, two edges overlapping (conventional output shares no stretch between
@@ -274,22 +318,26 @@ const FEW_SPANS: usize = 4;
 fn nested_against_orientation(rings: &[Ring]) -> bool {
     let boxes: Vec<Rect> = rings.iter().map(Ring::bounds).collect();
     let Some(index) = CellIndex::new(&boxes) else { return false };
-    rings.iter().enumerate().any(|(r, ring)| {
-        let midpoints = ring.edges().map(|e| Point::new(0.5 * e.a.x + 0.5 * e.b.x, 0.5 * e.a.y + 0.5 * e.b.y));
-        let depth = ring.points.iter().copied().chain(midpoints).find_map(|p| {
-            let (mut depth, mut on_ring) = (0usize, false);
-            index.for_each_meeting(&boxes, &Rect::new(p.x, p.y, p.x, p.y), |k| {
-                if k != r && !on_ring {
-                    match ring_winding(p, &rings[k]) {
-                        Some(w) => depth += usize::from(w != 0),
-                        None => on_ring = true,
-                    }
+    (0..rings.len()).any(|r| against_orientation(rings, &boxes, &index, r))
+}
+
+/// [`nested_against_orientation`] for ring `r`, with the rings' boxes and their cell index.
+fn against_orientation(rings: &[Ring], boxes: &[Rect], index: &CellIndex, r: usize) -> bool {
+    let ring = &rings[r];
+    let midpoints = ring.edges().map(|e| Point::new(0.5 * e.a.x + 0.5 * e.b.x, 0.5 * e.a.y + 0.5 * e.b.y));
+    let depth = ring.points.iter().copied().chain(midpoints).find_map(|p| {
+        let (mut depth, mut on_ring) = (0usize, false);
+        index.for_each_meeting(boxes, &Rect::new(p.x, p.y, p.x, p.y), |k| {
+            if k != r && !on_ring {
+                match ring_winding(p, &rings[k]) {
+                    Some(w) => depth += usize::from(w != 0),
+                    None => on_ring = true,
                 }
-            });
-            (!on_ring).then_some(depth)
+            }
         });
-        depth.is_none_or(|d| (d % 2 == 0) != ring.runs_counter_clockwise())
-    })
+        (!on_ring).then_some(depth)
+    });
+    depth.is_none_or(|d| (d % 2 == 0) != ring.runs_counter_clockwise())
 }
 
 #[cfg(test)]
@@ -407,5 +455,39 @@ mod tests {
         let near = Polygons::from(square(0.0, 0.0, 64.0, true));
         let inside_same_way = [square(0.0, 0.0, 64.0, true), square(8.0, 8.0, 8.0, true)];
         assert!(!broken_near_rounding(&near, &Polygons::default(), &inside_same_way, false));
+    }
+
+    /// A ring of `n` vertices round a circle of radius `r` about (`cx`, `cy`), counter-clockwise.
+    fn circle(cx: f64, cy: f64, r: f64, n: usize) -> Ring {
+        let step = std::f64::consts::TAU / n as f64;
+        Ring::new(
+            (0..n).map(|i| Point::new(cx + r * (step * i as f64).cos(), cy + r * (step * i as f64).sin())).collect(),
+        )
+    }
+
+    /// In an output too large for the whole check, a triangle thinner than an ulp (its middle
+    /// vertex rounded across the line of the other two) that runs clockwise where it is an outer
+    /// goes; such a triangle running counter-clockwise stays, as does a clockwise ring that is
+    /// no sliver (a wrong-way ring of width is the whole check's to find, not this one's).
+    #[test]
+    fn slivers_turned_inside_out_are_dropped_from_large_outputs() {
+        let (a, c) = (Point::new(200.0, 0.0), Point::new(248.0, 48.0));
+        // The line from a to c passes (224, 24); an ulp above it, the ring runs clockwise.
+        let flipped = Ring::new(vec![a, Point::new(224.0, 24.0f64.next_up()), c]);
+        assert!(!flipped.runs_counter_clockwise() && flipped.signed_area() != 0.0);
+        // Such a sliver running counter-clockwise (an ulp below the line), further right.
+        let right = |p: Point| Point::new(p.x + 256.0, p.y);
+        let right_way = Ring::new(vec![right(a), right(Point::new(224.0, 24.0f64.next_down())), right(c)]);
+        assert!(right_way.runs_counter_clockwise());
+        let wide = square(300.0, 0.0, 1.0, false);
+        let mut rings = vec![circle(0.0, 0.0, 100.0, 2048), flipped.clone(), right_way.clone(), wide.clone()];
+        drop_flipped_slivers(&mut rings);
+        assert_eq!(rings.len(), 3);
+        assert!(!rings.contains(&flipped));
+        assert!(rings.contains(&right_way) && rings.contains(&wide));
+        // Too small to skip the whole check: left as it is.
+        let mut small = vec![square(0.0, 0.0, 100.0, true), flipped.clone()];
+        drop_flipped_slivers(&mut small);
+        assert_eq!(small.len(), 2);
     }
 }
