@@ -32,10 +32,14 @@ pub(crate) fn clockwise_before(v: Point, r: Point, w1: Point, w2: Point) -> bool
     if s1 == 0 || s1 == 2 { orient(v, w1, w2) == Orientation::Clockwise } else { false }
 }
 
-/// True when `a` and `b` (neither at `v`) lie on one ray from `v`.
+/// True when `a` and `b` (neither at `v`) lie on one ray from `v`. Points on one ray lie on the
+/// same side of `v` in each coordinate: those comparisons rule out most pairs before the
+/// orientation test, which on collinear grid points takes its slow exact path.
 #[inline(always)]
 pub(crate) fn one_way(v: Point, a: Point, b: Point) -> bool {
-    sector(v, a, b) == 3
+    a.x.partial_cmp(&v.x) == b.x.partial_cmp(&v.x)
+        && a.y.partial_cmp(&v.y) == b.y.partial_cmp(&v.y)
+        && sector(v, a, b) == 3
 }
 
 /// Orders directions from `v` to `a` and `b` counter-clockwise from east (the direction of +x
