@@ -362,6 +362,47 @@ fn verify_prints_a_table_writes_json_and_does_not_depend_on_the_thread_count() {
     assert_eq!(summary_one, summary_two);
 }
 
+/// `--shrink-seconds 0`: each failure is written as generated, and its case file says shrinking
+/// stopped at the time limit (a hang would otherwise cost the call time-out on every try).
+#[test]
+fn verify_writes_unshrunk_cases_when_the_shrinking_time_is_up() {
+    let dir = scratch("verify-shrink-time");
+    let out = dir.join("failures");
+    let o = clipbench(&[
+        "verify",
+        "--clipper",
+        "clipper2",
+        "--workload",
+        "grid",
+        "--cases",
+        "2",
+        "--fill",
+        "even-odd",
+        "--max-records",
+        "1",
+        "--shrink-seconds",
+        "0",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let mut checked = 0;
+    for entry in std::fs::read_dir(&out).unwrap() {
+        let case: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(entry.unwrap().path().join("case.json")).unwrap()).unwrap();
+        assert_eq!(case["shrunk_vertices"], case["generated_vertices"], "{case}");
+        assert!(
+            case["shrunk"].as_str().unwrap().ends_with("(shrinking stopped at its time limit, --shrink-seconds)"),
+            "{case}"
+        );
+        checked += 1;
+    }
+    assert!(checked > 0, "clipper2 fails grid's first cases: {}", stdout(&o));
+    let refused = clipbench(&["verify", "--shrink-seconds=-1", "--cases", "1"]);
+    assert_eq!(refused.status.code(), Some(2), "{}", stderr(&refused));
+    assert!(stderr(&refused).contains("at least 0"), "{}", stderr(&refused));
+}
+
 /// Every clipper of this project on every workload it takes, every op and fill rule, against
 /// the oracle: a regression in any of them fails CI here (peers are left out: their failures
 /// are reported, not failed on).

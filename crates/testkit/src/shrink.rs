@@ -7,23 +7,73 @@
 //! of vertices (halves first, down to single vertices), then snap every coordinate to the
 //! coarsest grid of spacing `2^k` (from 1024 down to 2^-20) on which the case still fails. A
 //! candidate that is not valid input (a ring left with fewer than 3 distinct points, an empty
-//! window) is never tried. At most [`MAX_TRIES`] calls of the predicate are made.
+//! window) is never tried. At most [`MAX_TRIES`] calls of the predicate are made, and with a
+//! [`ShrinkLimit`] time none is begun after it runs out: a predicate that runs an external clipper
+//! until a time-out (a hang) can take that long on every call.
+
+use std::time::{Duration, Instant};
 
 use clip_core::{Operand, Point, Polygons, Ring, Segment, validate_polygons, validate_window};
 
 /// The most times a shrinker calls its predicate.
 pub const MAX_TRIES: usize = 2000;
 
-/// Counts predicate calls against [`MAX_TRIES`].
-struct Budget(usize);
+/// How much work a shrinker may do: at most `tries` predicate calls, none begun after `time`
+/// has passed since it started (a call under way is not cut short).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShrinkLimit {
+    /// The most predicate calls, the first (does the original fail?) included.
+    pub tries: usize,
+    /// The time after which no call is begun; `None` for none.
+    pub time: Option<Duration>,
+}
+
+impl Default for ShrinkLimit {
+    /// [`MAX_TRIES`] calls and no time limit: the result depends on the case alone.
+    fn default() -> ShrinkLimit {
+        ShrinkLimit { tries: MAX_TRIES, time: None }
+    }
+}
+
+/// Why a shrinker stopped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShrinkEnd {
+    /// No candidate it tries is smaller and still fails alike (or the original does not fail).
+    Smallest,
+    /// It made its [`ShrinkLimit::tries`] calls.
+    OutOfTries,
+    /// Its [`ShrinkLimit::time`] ran out.
+    OutOfTime,
+}
+
+/// Counts predicate calls and time against a [`ShrinkLimit`].
+struct Budget {
+    tries: usize,
+    until: Option<Instant>,
+    end: ShrinkEnd,
+}
 
 impl Budget {
+    fn new(limit: ShrinkLimit) -> Budget {
+        let until = limit.time.and_then(|t| Instant::now().checked_add(t));
+        Budget { tries: limit.tries, until, end: ShrinkEnd::Smallest }
+    }
+
     fn take(&mut self) -> bool {
-        if self.0 == 0 {
+        if self.tries == 0 {
+            self.end = ShrinkEnd::OutOfTries;
             return false;
         }
-        self.0 -= 1;
+        if self.until.is_some_and(|until| Instant::now() >= until) {
+            self.end = ShrinkEnd::OutOfTime;
+            return false;
+        }
+        self.tries -= 1;
         true
+    }
+
+    fn spent(&self) -> bool {
+        self.end != ShrinkEnd::Smallest
     }
 }
 
@@ -45,10 +95,22 @@ pub fn shrink_polygons<F: PartialEq>(
     clip: &Polygons,
     failure: impl FnMut(&Polygons, &Polygons) -> Option<F>,
 ) -> (Polygons, Polygons) {
-    let mut budget = Budget(MAX_TRIES);
-    budget.take();
+    shrink_polygons_within(subject, clip, ShrinkLimit::default(), failure).0
+}
+
+/// [`shrink_polygons`] within `limit`, and why it stopped.
+pub fn shrink_polygons_within<F: PartialEq>(
+    subject: &Polygons,
+    clip: &Polygons,
+    limit: ShrinkLimit,
+    failure: impl FnMut(&Polygons, &Polygons) -> Option<F>,
+) -> ((Polygons, Polygons), ShrinkEnd) {
+    let mut budget = Budget::new(limit);
+    if !budget.take() {
+        return ((subject.clone(), clip.clone()), budget.end);
+    }
     let Some(mut still_fails) = failing_alike((subject, clip), failure) else {
-        return (subject.clone(), clip.clone());
+        return ((subject.clone(), clip.clone()), ShrinkEnd::Smallest);
     };
     let mut best = [subject.clone(), clip.clone()];
     let valid = |p: &[Polygons; 2]| {
@@ -95,8 +157,8 @@ pub fn shrink_polygons<F: PartialEq>(
                 break;
             }
         }
-        if size(&best) >= size_before || budget.0 == 0 {
-            return (best[0].clone(), best[1].clone());
+        if size(&best) >= size_before || budget.spent() {
+            return ((best[0].clone(), best[1].clone()), budget.end);
         }
     }
 }
@@ -109,10 +171,22 @@ pub fn shrink_segments<F: PartialEq>(
     segments: &[Segment],
     failure: impl FnMut(&Polygons, &[Segment]) -> Option<F>,
 ) -> (Polygons, Vec<Segment>) {
-    let mut budget = Budget(MAX_TRIES);
-    budget.take();
+    shrink_segments_within(window, segments, ShrinkLimit::default(), failure).0
+}
+
+/// [`shrink_segments`] within `limit`, and why it stopped.
+pub fn shrink_segments_within<F: PartialEq>(
+    window: &Polygons,
+    segments: &[Segment],
+    limit: ShrinkLimit,
+    failure: impl FnMut(&Polygons, &[Segment]) -> Option<F>,
+) -> ((Polygons, Vec<Segment>), ShrinkEnd) {
+    let mut budget = Budget::new(limit);
+    if !budget.take() {
+        return ((window.clone(), segments.to_vec()), budget.end);
+    }
     let Some(mut still_fails) = failing_alike((window, segments), failure) else {
-        return (window.clone(), segments.to_vec());
+        return ((window.clone(), segments.to_vec()), ShrinkEnd::Smallest);
     };
     let mut best = (window.clone(), segments.to_vec());
     let mut attempt = |c: (Polygons, Vec<Segment>), best: &mut (Polygons, Vec<Segment>), budget: &mut Budget| {
@@ -168,8 +242,8 @@ pub fn shrink_segments<F: PartialEq>(
             }
         }
         let size_after = best.0.vertex_count() + best.0.rings.len() + best.1.len();
-        if size_after >= size_before || budget.0 == 0 {
-            return best;
+        if size_after >= size_before || budget.spent() {
+            return (best, budget.end);
         }
     }
 }

@@ -97,3 +97,33 @@ fn a_shrunk_case_fails_the_same_way_as_the_original() {
     assert_eq!(how(&s, &c), Some(How::Hang), "{} vertices", s.vertex_count());
     assert!(s.vertex_count() < case.subject.vertex_count(), "it still shrinks");
 }
+
+/// A predicate as slow as an external clipper's time-out: once the time limit has passed, no
+/// call is begun, and the result says it stopped early (a failing case, smaller or whole).
+#[test]
+fn the_time_limit_stops_calls_and_says_so() {
+    use std::time::Duration;
+    let case = polygon_case("multi", 3, 0, WindowKind::Any).unwrap();
+    let mut calls = 0;
+    let limit = ShrinkLimit { tries: MAX_TRIES, time: Some(Duration::from_millis(30)) };
+    let ((s, c), end) = shrink_polygons_within(&case.subject, &case.clip, limit, |_, _| {
+        calls += 1;
+        std::thread::sleep(Duration::from_millis(20));
+        Some(())
+    });
+    assert_eq!(end, ShrinkEnd::OutOfTime);
+    // Each call takes at least 20 ms and none begins after 30 ms: the first, and a second only if
+    // the first's sleep ended in time.
+    assert!((1..=2).contains(&calls), "{calls} calls");
+    assert!(s.vertex_count() <= case.subject.vertex_count() && c.vertex_count() <= case.clip.vertex_count());
+
+    let mut calls = 0;
+    let limit = ShrinkLimit { tries: 5, time: None };
+    let (_, end) = shrink_polygons_within(&case.subject, &case.clip, limit, |_, _| {
+        calls += 1;
+        Some(())
+    });
+    assert_eq!((end, calls), (ShrinkEnd::OutOfTries, 5));
+    let (_, end) = shrink_polygons_within(&case.subject, &case.clip, ShrinkLimit::default(), fake_bug);
+    assert_eq!(end, ShrinkEnd::Smallest);
+}

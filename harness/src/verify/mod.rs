@@ -18,8 +18,10 @@ mod text_runs;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Duration;
 
 use clip_core::{BoolOp, FillRule};
+use clip_testkit::shrink::{MAX_TRIES, ShrinkLimit};
 use clip_testkit::workload::{CURVE_WORKLOADS, LINE_WORKLOADS, POLYGON_WORKLOADS, TEXT_WORKLOADS};
 use clip_text::{DEJAVU_SANS, OutlineFont};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -76,6 +78,11 @@ pub struct VerifyArgs {
     /// Failures shrunk and written per clipper, workload and check (0: all of them).
     #[arg(long, default_value_t = 10)]
     pub max_records: usize,
+    /// Seconds a failure may spend being shrunk, after which its smallest failing case so far is
+    /// written (a hang costs the whole --call-timeout on every try). The case file says when it
+    /// stopped early.
+    #[arg(long, value_name = "SECONDS", default_value_t = 60.0, value_parser = parse_shrink_seconds)]
+    pub shrink_seconds: f64,
     /// Worker threads, 1 to 1024 (default: one per core; never more than there are cases). The
     /// summary does not depend on it.
     #[arg(long, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_THREADS as u64))]
@@ -106,6 +113,16 @@ pub struct VerifyArgs {
 /// The most worker threads `--threads` takes: more than cases or cores only costs time, and some
 /// thousands of threads exhaust what a process may start.
 pub const MAX_THREADS: usize = 1024;
+
+/// `--shrink-seconds`' value: at least 0 (0 writes each failure as generated) and at most a day.
+fn parse_shrink_seconds(text: &str) -> Result<f64, String> {
+    let seconds: f64 = text.trim().parse().map_err(|_| format!("'{text}' is not a number of seconds"))?;
+    let day = crate::external::MAX_CALL_TIMEOUT_SECONDS;
+    if !(0.0..=day).contains(&seconds) {
+        return Err(format!("{text} seconds: the shrinking time must be at least 0 and at most {day} (a day)"));
+    }
+    Ok(seconds)
+}
 
 /// Runs the command: exit 1 when a clipper of this project fails the oracle.
 pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> {
@@ -226,7 +243,11 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
     let (chosen, skipped) = first_of_each(&findings, args.max_records, |f| (f.clipper, f.workload, f.check));
     let chosen: Vec<&Finding> = chosen.into_iter().map(|i| &findings[i]).collect();
     let records: Vec<Result<record::Record, String>> = pool.install(|| {
-        chosen.par_iter().map(|f| record::record(&registry, args.seed, args.segments, f, &out, &text)).collect()
+        let limit = ShrinkLimit { tries: MAX_TRIES, time: Some(Duration::from_secs_f64(args.shrink_seconds)) };
+        chosen
+            .par_iter()
+            .map(|f| record::record(&registry, (args.seed, args.segments), limit, f, &out, &text))
+            .collect()
     });
     let mut written = Vec::new();
     let mut cases = Vec::new();
@@ -271,6 +292,7 @@ pub fn run(args: &VerifyArgs, registry: Registry) -> Result<ExitCode, CliError> 
             "cases_per_workload": args.cases,
             "segments": args.segments,
             "max_records": args.max_records,
+            "shrink_seconds": args.shrink_seconds,
             "clippers": registry.names(),
             "workloads": workloads,
             "ops": polygon.ops.iter().map(|o| o.name()).collect::<Vec<_>>(),

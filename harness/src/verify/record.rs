@@ -9,7 +9,7 @@ use clip_core::{BoolOp, Polygons, Segment, VisiblePiece};
 use clip_testkit::case_record::{
     CurvePicture, curves_svg, line_failure_svg, polygon_failure_svg, polygons_to_wkt, segments_to_wkt,
 };
-use clip_testkit::shrink::{shrink_polygons, shrink_segments};
+use clip_testkit::shrink::{ShrinkEnd, ShrinkLimit, shrink_polygons_within, shrink_segments_within};
 use clip_testkit::workload::{CURVES_PER_CASE, curve_case, line_case, polygon_case};
 use serde::{Deserialize, Serialize};
 
@@ -91,11 +91,12 @@ impl Record {
 
 /// Regenerates a finding's case, shrinks it while the same check still fails the same way, and
 /// builds its folder.
-/// `segments` is the run's segments per line case, so the line case regenerates the same.
+/// `segments` is the run's segments per line case, so the line case regenerates the same;
+/// `limit` bounds the shrinking.
 pub fn record(
     registry: &Registry,
-    seed: u64,
-    segments: usize,
+    (seed, segments): (u64, usize),
+    limit: ShrinkLimit,
     finding: &Finding,
     out: &Path,
     text: &TextPlan,
@@ -133,8 +134,8 @@ pub fn record(
     };
     let target = Target { clipper: finding.clipper, check: finding.check, op: finding.op, fill: finding.fill };
     let mut files = match finding.kind {
-        Kind::Polygon => polygon_files(registry, seed, finding, target, &mut case)?,
-        Kind::Line => line_files(registry, (seed, segments), finding, target, &mut case)?,
+        Kind::Polygon => polygon_files(registry, (seed, limit), finding, target, &mut case)?,
+        Kind::Line => line_files(registry, (seed, segments, limit), finding, target, &mut case)?,
         Kind::Curve => curve_files(registry, seed, finding, &mut case)?,
         Kind::Text => text_files(seed, finding, text, &mut case),
     };
@@ -170,6 +171,16 @@ fn shrunk_message(now: Option<crate::checks::Failure>, finding: &Finding) -> Str
     }
 }
 
+/// [`shrunk_message`], saying so when the shrinker stopped at its time limit (its case may
+/// shrink further given longer).
+fn shrunk_message_after(now: Option<crate::checks::Failure>, finding: &Finding, end: ShrinkEnd) -> String {
+    let message = shrunk_message(now, finding);
+    match end {
+        ShrinkEnd::OutOfTime => format!("{message} (shrinking stopped at its time limit, --shrink-seconds)"),
+        ShrinkEnd::Smallest | ShrinkEnd::OutOfTries => message,
+    }
+}
+
 /// A text failure is not shrunk: the case (string, size, origin) is in the message, the window
 /// is saved, and `--replay` regenerates the case from its seed and index.
 fn text_files(seed: u64, finding: &Finding, text: &TextPlan, case: &mut CaseFile) -> Vec<(String, String)> {
@@ -187,7 +198,7 @@ fn text_files(seed: u64, finding: &Finding, text: &TextPlan, case: &mut CaseFile
 
 fn polygon_files(
     registry: &Registry,
-    seed: u64,
+    (seed, limit): (u64, ShrinkLimit),
     finding: &Finding,
     target: Target,
     case: &mut CaseFile,
@@ -195,10 +206,11 @@ fn polygon_files(
     let generated = polygon_case(finding.workload, seed, finding.index, finding.window).map_err(|e| e.to_string())?;
     // Kept only while it fails as found: a flaky hang that comes back as a crash is not shrunk.
     let failure = |s: &Polygons, c: &Polygons| polygon_failure(registry, target, s, c).filter(|f| f.how == finding.how);
-    let (subject, clip) = shrink_polygons(&generated.subject, &generated.clip, |s, c| failure(s, c).map(|f| f.how));
+    let ((subject, clip), end) =
+        shrink_polygons_within(&generated.subject, &generated.clip, limit, |s, c| failure(s, c).map(|f| f.how));
     case.generated_vertices = [generated.subject.vertex_count(), generated.clip.vertex_count()];
     case.shrunk_vertices = [subject.vertex_count(), clip.vertex_count()];
-    case.shrunk = shrunk_message(polygon_failure(registry, target, &subject, &clip), finding);
+    case.shrunk = shrunk_message_after(polygon_failure(registry, target, &subject, &clip), finding, end);
     case.inputs = ["subject.wkt".into(), "clip.wkt".into()];
     let fill = finding.fill.ok_or("a polygon finding without a fill rule")?;
     // Every selected clipper that takes this window, on the op that failed (all four for identities).
@@ -240,7 +252,7 @@ fn polygon_files(
 
 fn line_files(
     registry: &Registry,
-    (seed, count): (u64, usize),
+    (seed, count, limit): (u64, usize, ShrinkLimit),
     finding: &Finding,
     target: Target,
     case: &mut CaseFile,
@@ -248,11 +260,11 @@ fn line_files(
     let generated =
         line_case(finding.workload, seed, finding.index, finding.window, count).map_err(|e| e.to_string())?;
     let failure = |w: &Polygons, s: &[Segment]| line_failure(registry, target, w, s).filter(|f| f.how == finding.how);
-    let (window, segments) =
-        shrink_segments(&generated.window, &generated.segments, |w, s| failure(w, s).map(|f| f.how));
+    let ((window, segments), end) =
+        shrink_segments_within(&generated.window, &generated.segments, limit, |w, s| failure(w, s).map(|f| f.how));
     case.generated_vertices = [generated.window.vertex_count(), 2 * generated.segments.len()];
     case.shrunk_vertices = [window.vertex_count(), 2 * segments.len()];
-    case.shrunk = shrunk_message(line_failure(registry, target, &window, &segments), finding);
+    case.shrunk = shrunk_message_after(line_failure(registry, target, &window, &segments), finding, end);
     case.inputs = ["window.wkt".into(), "segments.wkt".into()];
     let mut files = vec![
         ("window.wkt".to_owned(), polygons_to_wkt(&window, false) + "\n"),
@@ -400,7 +412,7 @@ mod tests {
                 how: found.how,
                 message: found.message,
             };
-            let record = record(&registry, 1, 10, &finding, &out, &text).unwrap();
+            let record = record(&registry, (1, 10), ShrinkLimit::default(), &finding, &out, &text).unwrap();
             let [subject, _] = record.case.shrunk_vertices;
             assert!(subject > 6, "{how:?}: shrunk to {subject} subject vertices, where it crashes instead");
             assert!(subject < generated.subject.vertex_count(), "{how:?}: it still shrinks");
