@@ -285,11 +285,19 @@ fn expansion_sign(e: &[f64]) -> i32 {
 /// about an ulp: its error is at most about 8 ulps of `s`'s extent along each axis plus an ulp of
 /// the point (the plain [`crossing_point`] can be far off for nearly parallel segments).
 pub fn accurate_crossing_point(s: Segment, t: Segment) -> Point {
+    let (dx, dy) = accurate_crossing_offset(s, t);
+    Point::new(s.a.x + dx, s.a.y + dy)
+}
+
+/// [`accurate_crossing_point`] as its offset from `s.a`: at most about 8 ulps of `s`'s extent
+/// off along each axis, with no ulp of the point's magnitude added (an exact predicate filtered
+/// by this error stays cheap far from the origin).
+pub fn accurate_crossing_offset(s: Segment, t: Segment) -> (f64, f64) {
     let d0 = accurate_determinant(t.a, t.b, s.a);
     let d1 = accurate_determinant(t.a, t.b, s.b);
     let u = d0 / (d0 - d1);
     let u = if u.is_finite() { u.clamp(0.0, 1.0) } else { 0.0 };
-    Point::new(s.a.x + u * (s.b.x - s.a.x), s.a.y + u * (s.b.y - s.a.y))
+    (u * (s.b.x - s.a.x), u * (s.b.y - s.a.y))
 }
 
 /// Adds `b` exactly to the expansion `e[..len]` (non-overlapping components, smallest first) and

@@ -29,7 +29,7 @@
 //! (long nearly coincident edges each meeting many pixels). That is acceptable for a fallback run
 //! only where a faster path's output was broken, which is what it is for.
 
-use crate::predicates::{self, Orientation, accurate_crossing_point, crossing_coordinate_cmp, orient};
+use crate::predicates::{self, Orientation, accurate_crossing_offset, crossing_coordinate_cmp, orient};
 use crate::{CellIndex, ClipError, Operand, Point, Polygons, Rect, Ring, Segment, SegmentIntersection};
 
 /// A pixel, as its column and row: its centre is `(column·s, row·s)`.
@@ -164,24 +164,30 @@ fn square(p: Pixel, s: f64) -> Rect {
 /// error bound are decided by the estimate, and the rest exactly.
 fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
     let quotients = predicates::exact_crossing_quotients(e, f);
-    let estimate = match quotients {
-        Some((nx, ny, d)) => Point::new(e.a.x + nx / d, e.a.y + ny / d),
-        None => accurate_crossing_point(e, f),
+    // The estimate as an offset from `e.a`: its error scales with the segment's extent, not the
+    // coordinates' magnitude, so far from the origin the filter below still decides (with the
+    // point's ulp in the bound, a pixel of 4 ulps left nearly every border to the expansions).
+    let offset = match quotients {
+        Some((nx, ny, d)) => (nx / d, ny / d),
+        None => accurate_crossing_offset(e, f),
     };
-    let mut pixel = pixel_of(estimate, s);
+    let mut pixel = pixel_of(Point::new(e.a.x + offset.0, e.a.y + offset.1), s);
     for along_y in [false, true] {
-        let (at, span, base) =
-            if along_y { (estimate.y, e.b.y - e.a.y, e.a.y) } else { (estimate.x, e.b.x - e.a.x, e.a.x) };
-        let error = 16.0 * f64::EPSILON * span.abs() + 2.0 * f64::EPSILON * at.abs() + f64::MIN_POSITIVE;
+        let (off, span, base) =
+            if along_y { (offset.1, e.b.y - e.a.y, e.a.y) } else { (offset.0, e.b.x - e.a.x, e.a.x) };
         let below = |m: f64| {
             if let Some((nx, ny, d)) = quotients
                 && let Some(order) = predicates::quotient_cmp(if along_y { ny } else { nx }, d, base, m)
             {
                 return order.is_lt();
             }
-            if at - m > error {
+            // `m - base` is rounded by at most half an ulp of itself; the offset errs by at
+            // most about 8 ulps of the span (twice that allowed).
+            let w = m - base;
+            let error = 16.0 * f64::EPSILON * span.abs() + f64::EPSILON * w.abs() + f64::MIN_POSITIVE;
+            if off - w > error {
                 false
-            } else if m - at > error {
+            } else if w - off > error {
                 true
             } else {
                 crossing_coordinate_cmp(e, f, along_y, m).is_lt()
@@ -350,6 +356,63 @@ mod tests {
             let (a, b) = snap_round(&subject, &clip, s).expect("valid input");
             assert_noded(&[&a, &b]);
         }
+    }
+
+    /// The pixel of a crossing holds the exact crossing, checked against its borders exactly:
+    /// far from the origin (where the filter works on offsets from the segment's start), for
+    /// short and long segments, and for nearly parallel pairs (lenses).
+    #[test]
+    fn crossing_pixels_hold_the_exact_crossing_far_from_the_origin() {
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let mut checked = 0;
+        for (origin, span) in [(1e6f64, 1e3f64), (1e6, 1.0), (3.7e9, 1e5), (1.0, 1.0), (-2e7, 10.0)] {
+            // 4 ulps of the largest coordinate, as the vatti fallback's pixel.
+            let top = origin.abs() + span;
+            let s = 2f64.powi(((top.to_bits() >> 52) & 0x7ff) as i32 - 1023 - 50);
+            let at = |rng: &mut Rng| Point::new(origin + rng.next() * span, origin + rng.next() * span);
+            for k in 0..800 {
+                let e = Segment::new(at(&mut rng), at(&mut rng));
+                let f = if k % 3 == 0 {
+                    Segment::new(at(&mut rng), at(&mut rng))
+                } else if k % 3 == 1 {
+                    // Through a pixel corner near e's middle, as e is: the crossing lies within
+                    // rounding of two pixel borders.
+                    let m = e.at(0.5);
+                    let corner = Point::new(((m.x / s).floor() + 0.5) * s, ((m.y / s).floor() + 0.5) * s);
+                    let e2 = Segment::new(corner - (e.b - e.a) * 0.5, corner + (e.b - e.a) * 0.5);
+                    let d = Point::new(rng.next() - 0.5, rng.next() - 0.5) * span;
+                    let f = Segment::new(corner - d, corner + d);
+                    if !matches!(predicates::segment_intersection(e2, f), SegmentIntersection::Crossing(_)) {
+                        continue;
+                    }
+                    let (i, j) = crossing_pixel(e2, f, s);
+                    for (along_y, c) in [(false, i), (true, j)] {
+                        let (low, high) = ((c as f64 - 0.5) * s, (c as f64 + 0.5) * s);
+                        assert!(crossing_coordinate_cmp(e2, f, along_y, low).is_ge(), "{e2:?} {f:?} below its pixel");
+                        assert!(crossing_coordinate_cmp(e2, f, along_y, high).is_lt(), "{e2:?} {f:?} above its pixel");
+                    }
+                    checked += 1;
+                    continue;
+                } else {
+                    // e's ends moved by a few ulps: crossing at a small angle, if at all.
+                    let nudge = |p: Point, rng: &mut Rng| {
+                        Point::new(p.x + (rng.next() - 0.5) * 8.0 * s, p.y + (rng.next() - 0.5) * 8.0 * s)
+                    };
+                    Segment::new(nudge(e.b, &mut rng), nudge(e.a, &mut rng))
+                };
+                if !matches!(predicates::segment_intersection(e, f), SegmentIntersection::Crossing(_)) {
+                    continue;
+                }
+                let (i, j) = crossing_pixel(e, f, s);
+                for (along_y, c) in [(false, i), (true, j)] {
+                    let (low, high) = ((c as f64 - 0.5) * s, (c as f64 + 0.5) * s);
+                    assert!(crossing_coordinate_cmp(e, f, along_y, low).is_ge(), "{e:?} {f:?} below its pixel");
+                    assert!(crossing_coordinate_cmp(e, f, along_y, high).is_lt(), "{e:?} {f:?} above its pixel");
+                }
+                checked += 1;
+            }
+        }
+        assert!(checked > 1000, "{checked} crossings checked");
     }
 
     #[test]
