@@ -144,7 +144,13 @@ fn hot_pixels(segments: &[Segment], s: f64) -> (Vec<Pixel>, Option<f64>) {
 /// The pixel holding `p`: half-open, so a point on a border belongs to the pixel above or right.
 /// Exact: `p / s` is exact (a power of two), and adding a half is exact below 2^52.
 fn pixel_of(p: Point, s: f64) -> Pixel {
-    ((p.x / s + 0.5).floor() as i64, (p.y / s + 0.5).floor() as i64)
+    // The floor by truncation (exact below 2^63; coordinates here are within 2^51 pixels):
+    // `f64::floor` is a library call on targets without SSE4.1.
+    let floor = |v: f64| {
+        let t = v as i64;
+        t - i64::from((t as f64) > v)
+    };
+    (floor(p.x / s + 0.5), floor(p.y / s + 0.5))
 }
 
 fn centre(p: Pixel, s: f64) -> Point {
