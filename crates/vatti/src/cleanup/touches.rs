@@ -58,6 +58,8 @@ pub(crate) struct Touches {
     slot: Vec<u32>,
     ring: Vec<u32>,
     run: Vec<(f64, u32)>,
+    /// Every point as (y, x, index) by y then x, for [`split_edges`].
+    sorted: Vec<(f64, f64, u32)>,
 }
 
 impl Touches {
@@ -68,16 +70,46 @@ impl Touches {
             self.by_sorting(raw);
         }
         if raw.near_miss {
+            let sorted = if self.by_y {
+                self.points_by_id(raw);
+                Some(self.sorted.as_slice())
+            } else {
+                None
+            };
             self.splits = split_edges(
                 raw,
                 &self.ring,
                 &mut self.touched,
                 &self.ids,
                 true,
-                &mut self.split_points,
-                &mut self.inside_rings,
+                (&mut self.split_points, &mut self.inside_rings),
+                sorted,
             );
         }
+    }
+
+    /// Every point into `sorted` as (y, x, index), by its distinct point's id: by y then x where
+    /// the ids came from the emission order ([`Touches::by_y`]). A counting sort on the ids,
+    /// which are dense.
+    fn points_by_id(&mut self, raw: &RawRings) {
+        let mut starts = vec![0u32; self.distinct.len() + 1];
+        for &id in &self.ids {
+            starts[id as usize + 1] += 1;
+        }
+        for i in 1..starts.len() {
+            starts[i] += starts[i - 1];
+        }
+        self.sorted.clear();
+        self.sorted.resize(raw.points.len(), (0.0, 0.0, 0));
+        for (k, &id) in self.ids.iter().enumerate() {
+            let p = self.distinct[id as usize];
+            self.sorted[starts[id as usize] as usize] = (p.y, p.x, k as u32);
+            starts[id as usize] += 1;
+        }
+        debug_assert!(
+            self.sorted.windows(2).all(|w| w[0].0 < w[1].0 || (w[0].0 == w[1].0 && w[0].1 <= w[1].1)),
+            "distinct points from the emission order come by y then x"
+        );
     }
 
     /// Empties the results for `raw`: nothing touched, no splits, ids to be filled.
@@ -159,6 +191,7 @@ impl Touches {
             + 4 * (self.shared.capacity() + self.shared_ends.capacity())
             + self.distinct.capacity() * size_of::<Point>()
             + self.run.capacity() * size_of::<(f64, u32)>()
+            + self.sorted.capacity() * size_of::<(f64, f64, u32)>()
     }
 }
 
@@ -314,7 +347,18 @@ impl Touches {
             t.name_point(raw, &ring, same.iter().map(|&(_, k)| k));
         }
         drop(keyed);
-        t.splits = split_edges(raw, &ring, &mut t.touched, &t.ids, false, &mut t.split_points, &mut t.inside_rings);
+        // With a near miss `find` splits every edge next, which replaces these.
+        if !raw.near_miss {
+            t.splits = split_edges(
+                raw,
+                &ring,
+                &mut t.touched,
+                &t.ids,
+                false,
+                (&mut t.split_points, &mut t.inside_rings),
+                None,
+            );
+        }
         t.ring = ring;
     }
 }
@@ -342,15 +386,16 @@ fn slanted_scan_length(raw: &RawRings, by_y: &[(f64, f64, u32)]) -> usize {
 /// Every horizontal edge (every edge, with `every_edge`) with vertices strictly inside it, in
 /// ring and edge order, their inside points appended to `points` (emptied first); its ring and
 /// the vertices' rings are marked touched. A vertex is inside a slanted edge when it lies on the
-/// edge's line (exact) between its ends.
+/// edge's line (exact) between its ends. `sorted`: every point as (y, x, index) by y then x,
+/// if at hand (else they are sorted here).
 fn split_edges(
     raw: &RawRings,
     ring: &[u32],
     touched: &mut [bool],
     ids: &[u32],
     every_edge: bool,
-    points: &mut Vec<u32>,
-    inside_rings: &mut Vec<u32>,
+    (points, inside_rings): (&mut Vec<u32>, &mut Vec<u32>),
+    sorted: Option<&[(f64, f64, u32)]>,
 ) -> Vec<SplitEdge> {
     points.clear();
     inside_rings.clear();
@@ -361,11 +406,20 @@ fn split_edges(
     if !has_horizontal && !every_edge {
         return Vec::new();
     }
-    let mut by_y: Vec<(f64, f64, u32)> = raw.points.iter().enumerate().map(|(k, p)| (p.y, p.x, k as u32)).collect();
-    by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let sorted_here: Vec<(f64, f64, u32)>;
+    let by_y = match sorted {
+        Some(by_y) => by_y,
+        None => {
+            let mut by_y: Vec<(f64, f64, u32)> =
+                raw.points.iter().enumerate().map(|(k, p)| (p.y, p.x, k as u32)).collect();
+            by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+            sorted_here = by_y;
+            &sorted_here
+        }
+    };
     // Slanted edges look at every point in their height range: quadratic at worst (long edges
     // over many points), so they are split only while that stays within the budget.
-    let every_edge = every_edge && slanted_scan_length(raw, &by_y) <= SLANTED_SCAN_BUDGET;
+    let every_edge = every_edge && slanted_scan_length(raw, by_y) <= SLANTED_SCAN_BUDGET;
     let mut splits = Vec::new();
     let mut inside = Vec::new();
     for ri in 0..raw.len() {
