@@ -195,12 +195,6 @@ impl Touches {
     }
 }
 
-/// Exact key of a point (`-0.0` and `0.0` alike), ordered so equal points sort together.
-#[inline]
-fn key(p: Point) -> (u64, u64) {
-    ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
-}
-
 /// Ring index of every point, into `ring`.
 fn ring_of(raw: &RawRings, ring: &mut Vec<u32>) {
     ring.clear();
@@ -335,18 +329,25 @@ impl Touches {
         self.shared_ends.push(self.shared.len() as u32);
     }
 
-    /// The touches by sorting every point's exact key, and every vertex by y then x.
+    /// The touches by sorting every point by y then x (exact keys, so equal points come
+    /// together), which also numbers the distinct points in that order ([`Touches::by_y`]).
     fn by_sorting(&mut self, raw: &RawRings) {
         self.reset(raw);
         let t = self;
         let ring = std::mem::take(&mut t.ring);
-        let mut keyed: Vec<((u64, u64), u32)> =
-            raw.points.iter().enumerate().map(|(k, &p)| (key(p), k as u32)).collect();
+        // `+ 0.0` reads -0 as 0; `height_key` orders as the floats do.
+        let mut keyed: Vec<((i64, i64), u32)> = raw
+            .points
+            .iter()
+            .enumerate()
+            .map(|(k, &p)| ((height_key(p.y + 0.0), height_key(p.x + 0.0)), k as u32))
+            .collect();
         keyed.sort_unstable();
         for same in keyed.chunk_by(|a, b| a.0 == b.0) {
             t.name_point(raw, &ring, same.iter().map(|&(_, k)| k));
         }
         drop(keyed);
+        t.by_y = true;
         // With a near miss `find` splits every edge next, which replaces these.
         if !raw.near_miss {
             t.splits = split_edges(
