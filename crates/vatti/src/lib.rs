@@ -302,7 +302,7 @@ impl Vatti {
             let near = strict
                 && !clean.broken_form
                 && form_check::checked(&clean.rings)
-                && (rings.near_miss || form_check::vertices_near_rounding(subject, clip, &touches.distinct_by_y()));
+                && (rings.near_miss || form_check::vertices_near_rounding(subject, clip, touches.distinct_by_y()));
             (clean, near)
         })
     }

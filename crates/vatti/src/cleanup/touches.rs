@@ -46,13 +46,12 @@ pub(crate) struct Touches {
     /// The rings of the vertices inside split edges, once per vertex.
     inside_rings: Vec<u32>,
     pub ids: Vec<u32>,
+    /// The distinct points, ordered by y then x: both passes number them in that order.
     pub distinct: Vec<Point>,
     /// The points visited more than once, each as a run of its visits (point indices) in
     /// `shared`, run `i` ending at `shared_ends[i]`.
     pub shared: Vec<u32>,
     pub shared_ends: Vec<u32>,
-    /// Whether `distinct` came out ordered by y, then x (from the emission order).
-    by_y: bool,
     /// Work buffers: point index by emission stamp, ring of every point, and one run of equal
     /// y by x.
     slot: Vec<u32>,
@@ -70,12 +69,7 @@ impl Touches {
             self.by_sorting(raw);
         }
         if raw.near_miss {
-            let sorted = if self.by_y {
-                self.points_by_id(raw);
-                Some(self.sorted.as_slice())
-            } else {
-                None
-            };
+            self.points_by_id(raw);
             self.splits = split_edges(
                 raw,
                 &self.ring,
@@ -83,14 +77,13 @@ impl Touches {
                 &self.ids,
                 true,
                 (&mut self.split_points, &mut self.inside_rings),
-                sorted,
+                &self.sorted,
             );
         }
     }
 
-    /// Every point into `sorted` as (y, x, index), by its distinct point's id: by y then x where
-    /// the ids came from the emission order ([`Touches::by_y`]). A counting sort on the ids,
-    /// which are dense.
+    /// Every point into `sorted` as (y, x, index), by its distinct point's id, so by y then x
+    /// ([`Touches::distinct`]): a counting sort on the ids, which are dense.
     fn points_by_id(&mut self, raw: &RawRings) {
         let mut starts = vec![0u32; self.distinct.len() + 1];
         for &id in &self.ids {
@@ -108,7 +101,7 @@ impl Touches {
         }
         debug_assert!(
             self.sorted.windows(2).all(|w| w[0].0 < w[1].0 || (w[0].0 == w[1].0 && w[0].1 <= w[1].1)),
-            "distinct points from the emission order come by y then x"
+            "distinct points are numbered by y then x"
         );
     }
 
@@ -127,14 +120,9 @@ impl Touches {
         ring_of(raw, &mut self.ring);
     }
 
-    /// The distinct points ordered by y, then x: as found from the emission order, else sorted.
-    pub(crate) fn distinct_by_y(&self) -> std::borrow::Cow<'_, [Point]> {
-        if self.by_y {
-            return std::borrow::Cow::Borrowed(&self.distinct);
-        }
-        let mut sorted = self.distinct.clone();
-        sorted.sort_unstable_by(|a, b| a.y.total_cmp(&b.y).then(a.x.total_cmp(&b.x)));
-        std::borrow::Cow::Owned(sorted)
+    /// The distinct points ordered by y, then x.
+    pub(crate) fn distinct_by_y(&self) -> &[Point] {
+        &self.distinct
     }
 
     /// The ring of point `k` (after [`Touches::find`]).
@@ -234,7 +222,6 @@ impl Touches {
         }
         // Every point stamped once (the sweep's stamps are distinct; this guards the reading).
         let found = monotone && seen == raw.points.len();
-        self.by_y = found;
         if found {
             self.take_run(raw, &ring, &mut run);
             self.splits.sort_unstable_by_key(|s| (s.ring, s.edge));
@@ -330,7 +317,7 @@ impl Touches {
     }
 
     /// The touches by sorting every point by y then x (exact keys, so equal points come
-    /// together), which also numbers the distinct points in that order ([`Touches::by_y`]).
+    /// together), which numbers the distinct points in that order too.
     fn by_sorting(&mut self, raw: &RawRings) {
         self.reset(raw);
         let t = self;
@@ -347,9 +334,9 @@ impl Touches {
             t.name_point(raw, &ring, same.iter().map(|&(_, k)| k));
         }
         drop(keyed);
-        t.by_y = true;
         // With a near miss `find` splits every edge next, which replaces these.
-        if !raw.near_miss {
+        if !raw.near_miss && has_horizontal(raw) {
+            t.points_by_id(raw);
             t.splits = split_edges(
                 raw,
                 &ring,
@@ -357,7 +344,7 @@ impl Touches {
                 &t.ids,
                 false,
                 (&mut t.split_points, &mut t.inside_rings),
-                None,
+                &t.sorted,
             );
         }
         t.ring = ring;
@@ -367,6 +354,14 @@ impl Touches {
 /// Points that splitting slanted edges may look at, in all, beyond which it is skipped (a known
 /// limit: outputs of thousands of long edges with a near miss keep slanted overlaps unsplit).
 const SLANTED_SCAN_BUDGET: usize = 1 << 22;
+
+/// Whether some ring has a horizontal edge.
+fn has_horizontal(raw: &RawRings) -> bool {
+    (0..raw.len()).any(|i| {
+        let r = raw.ring(i);
+        (0..r.len()).any(|k| r[k].y == r[(k + 1) % r.len()].y)
+    })
+}
 
 /// How many points the slanted edges' height ranges hold, in all (`by_y`: the points by y).
 fn slanted_scan_length(raw: &RawRings, by_y: &[(f64, f64, u32)]) -> usize {
@@ -387,8 +382,7 @@ fn slanted_scan_length(raw: &RawRings, by_y: &[(f64, f64, u32)]) -> usize {
 /// Every horizontal edge (every edge, with `every_edge`) with vertices strictly inside it, in
 /// ring and edge order, their inside points appended to `points` (emptied first); its ring and
 /// the vertices' rings are marked touched. A vertex is inside a slanted edge when it lies on the
-/// edge's line (exact) between its ends. `sorted`: every point as (y, x, index) by y then x,
-/// if at hand (else they are sorted here).
+/// edge's line (exact) between its ends. `by_y`: every point as (y, x, index), by y then x.
 fn split_edges(
     raw: &RawRings,
     ring: &[u32],
@@ -396,28 +390,10 @@ fn split_edges(
     ids: &[u32],
     every_edge: bool,
     (points, inside_rings): (&mut Vec<u32>, &mut Vec<u32>),
-    sorted: Option<&[(f64, f64, u32)]>,
+    by_y: &[(f64, f64, u32)],
 ) -> Vec<SplitEdge> {
     points.clear();
     inside_rings.clear();
-    let has_horizontal = (0..raw.len()).any(|i| {
-        let r = raw.ring(i);
-        (0..r.len()).any(|k| r[k].y == r[(k + 1) % r.len()].y)
-    });
-    if !has_horizontal && !every_edge {
-        return Vec::new();
-    }
-    let sorted_here: Vec<(f64, f64, u32)>;
-    let by_y = match sorted {
-        Some(by_y) => by_y,
-        None => {
-            let mut by_y: Vec<(f64, f64, u32)> =
-                raw.points.iter().enumerate().map(|(k, p)| (p.y, p.x, k as u32)).collect();
-            by_y.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-            sorted_here = by_y;
-            &sorted_here
-        }
-    };
     // Slanted edges look at every point in their height range: quadratic at worst (long edges
     // over many points), so they are split only while that stays within the budget.
     let every_edge = every_edge && slanted_scan_length(raw, by_y) <= SLANTED_SCAN_BUDGET;
