@@ -213,24 +213,76 @@ fn exact_quotient_cmp(s: Segment, t: Segment, along_y: bool, m: f64) -> Option<c
 /// `d = D(s.a) - D(s.b)` and `n = D(s.a)·(s.b - s.a)` per coordinate. Limit: products that
 /// underflow are not caught (coordinates well above 1e-100 apart, as for the expansions).
 pub fn exact_crossing_quotients(s: Segment, t: Segment) -> Option<(f64, f64, f64)> {
-    let exact_difference = |a: f64, b: f64| {
-        let (x, e) = two_diff(a, b);
-        (e == 0.0).then_some(x)
-    };
-    let exact_product = |a: f64, b: f64| {
-        let (x, e) = two_product(a, b);
-        (e == 0.0).then_some(x)
-    };
-    let determinant = |c: Point| {
-        let (ax, ay) = (exact_difference(t.a.x, c.x)?, exact_difference(t.a.y, c.y)?);
-        let (bx, by) = (exact_difference(t.b.x, c.x)?, exact_difference(t.b.y, c.y)?);
-        exact_difference(exact_product(ax, by)?, exact_product(ay, bx)?)
-    };
-    let (d0, d1) = (determinant(s.a)?, determinant(s.b)?);
+    let (d0, d1) = (exact_determinant(t, s.a)?, exact_determinant(t, s.b)?);
     let nx = exact_product(d0, exact_difference(s.b.x, s.a.x)?)?;
     let ny = exact_product(d0, exact_difference(s.b.y, s.a.y)?)?;
     let d = exact_difference(d0, d1)?;
     (d != 0.0 && (nx / d).is_finite() && (ny / d).is_finite()).then_some((nx, ny, d))
+}
+
+/// True when every one of `coordinates` is an integer multiple of one power of two `2^e` and
+/// below `2^(e + digits)` in magnitude: integers of at most `digits` binary digits on some
+/// power-of-two scale (zero fits every scale). Such inputs have small exact arithmetic: the
+/// crossing of two of their segments is a fraction whose denominator has at most `2·digits + 3`
+/// digits, so distinct crossings, and a crossing and a line not through it, lie a bounded
+/// distance apart, which rounding to f64 cannot bridge when `digits` is small. Stops at the first
+/// coordinate that widens the span past `digits` (at once for coordinates with decimals).
+pub fn on_coarse_grid(coordinates: impl IntoIterator<Item = f64>, digits: u32) -> bool {
+    // Lowest and highest binary digit used: every coordinate is a multiple of 2^lo below 2^hi.
+    let (mut lo, mut hi) = (i32::MAX, i32::MIN);
+    for v in coordinates {
+        let bits = v.abs().to_bits();
+        if bits == 0 {
+            continue;
+        }
+        if !v.is_finite() {
+            return false;
+        }
+        let (biased, fraction) = ((bits >> 52) as i32, bits & ((1 << 52) - 1));
+        // v = mantissa · 2^exponent, the mantissa an integer (subnormals have no hidden bit).
+        let (mantissa, exponent) = if biased == 0 { (fraction, -1074) } else { (fraction | 1 << 52, biased - 1075) };
+        lo = lo.min(exponent + mantissa.trailing_zeros() as i32);
+        hi = hi.max(exponent + 64 - mantissa.leading_zeros() as i32);
+        if hi - lo > digits as i32 {
+            return false;
+        }
+    }
+    true
+}
+
+/// `a - b` when f64 holds it exactly.
+fn exact_difference(a: f64, b: f64) -> Option<f64> {
+    let (x, e) = two_diff(a, b);
+    (e == 0.0).then_some(x)
+}
+
+/// `a · b` when f64 holds it exactly.
+fn exact_product(a: f64, b: f64) -> Option<f64> {
+    let (x, e) = two_product(a, b);
+    (e == 0.0).then_some(x)
+}
+
+/// The determinant of `t`'s line at `c`, `(t.a - c) × (t.b - c)`, when every step is exact in f64.
+fn exact_determinant(t: Segment, c: Point) -> Option<f64> {
+    let (ax, ay) = (exact_difference(t.a.x, c.x)?, exact_difference(t.a.y, c.y)?);
+    let (bx, by) = (exact_difference(t.b.x, c.x)?, exact_difference(t.b.y, c.y)?);
+    exact_difference(exact_product(ax, by)?, exact_product(ay, bx)?)
+}
+
+/// Whether the line of `k` passes exactly through the crossing point of the lines of `s` and `t`
+/// (three lines through one point), when every quantity is exact in f64 (integer coordinates up
+/// to about 2^12 apart, and their multiples by powers of two); `None` elsewhere, and for parallel
+/// `s` and `t`. With `D` the determinants of `t`'s and `k`'s lines, the crossing is
+/// `s.a + (s.b - s.a)·Dt(s.a) / (Dt(s.a) - Dt(s.b))`, and `Dk` there is zero exactly when
+/// `Dt(s.a)·Dk(s.b) = Dt(s.b)·Dk(s.a)`. A sweep rounds such a point, and an edge through it at a
+/// small angle to the sweep line then passes ulps off the rounded point.
+pub fn through_crossing(k: Segment, s: Segment, t: Segment) -> Option<bool> {
+    let (t0, t1) = (exact_determinant(t, s.a)?, exact_determinant(t, s.b)?);
+    if t0 == t1 {
+        return None;
+    }
+    let (k0, k1) = (exact_determinant(k, s.a)?, exact_determinant(k, s.b)?);
+    Some(exact_product(t0, k1)? == exact_product(t1, k0)?)
 }
 
 /// How `base + n / d` compares with `m`, for `n` and `d` (not zero) exact, without expansions:
@@ -600,6 +652,32 @@ pub fn strictly_inside_rect(p: Point, r: &Rect) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn three_lines_through_one_crossing_f64_cannot_hold() {
+        let seg = |a: (f64, f64), b: (f64, f64)| Segment::new(Point::new(a.0, a.1), Point::new(b.0, b.1));
+        // Through (40/3, 101/6): a grid case where the sweep rounded the crossing.
+        let (s, t) = (seg((10.0, 16.0), (14.0, 17.0)), seg((13.0, 18.0), (15.0, 11.0)));
+        let k = seg((0.0, 16.0), (16.0, 17.0));
+        assert_eq!(through_crossing(k, s, t), Some(true));
+        assert_eq!(through_crossing(s, k, t), Some(true));
+        assert_eq!(through_crossing(seg((0.0, 16.0), (18.0, 17.0)), s, t), Some(false));
+        assert_eq!(through_crossing(k, s, seg((0.0, 0.0), (4.0, 1.0))), None, "parallel");
+        assert_eq!(through_crossing(k, s, seg((0.1, 0.0), (13.0, 18.0))), None, "not exact in f64");
+    }
+
+    #[test]
+    fn coarse_grids_are_integers_of_few_binary_digits_on_any_power_of_two_scale() {
+        let grid = |c: &[f64], digits| on_coarse_grid(c.iter().copied(), digits);
+        assert!(grid(&[0.0, 1.0, 24.0, -24.0, 7.0], 5), "integers below 32");
+        assert!(!grid(&[0.0, 1.0, 32.0], 5), "32 needs six digits");
+        assert!(grid(&[0.5, 12.0], 5) && !grid(&[0.25, 12.0], 5), "0.5 to 12 is 1 to 24 in halves");
+        assert!(grid(&[3.0 * 2f64.powi(-40), 2f64.powi(-36)], 5), "the scale can be any power of two");
+        assert!(!grid(&[0.1], 9) && !grid(&[1.0, 1e-3], 9), "decimals span the whole mantissa");
+        assert!(grid(&[], 0) && grid(&[0.0, -0.0], 0), "no digits for zeros");
+        assert!(grid(&[5e-324, 1e-323], 2) && !grid(&[5e-324, 1.0], 60), "subnormals");
+        assert!(!grid(&[f64::INFINITY], 60) && !grid(&[f64::NAN], 60));
+    }
 
     #[test]
     fn exact_quotients_order_crossings_as_the_expansions_do() {

@@ -18,8 +18,9 @@ const LINEAR_SEARCH_UP_TO: usize = 16;
 pub(crate) const ROUNDING: f64 = 4.0 * f64::EPSILON;
 
 /// The largest error of [`Edge::x_at`] relative to the larger magnitude of the edge's ends' x:
-/// the quotient errs by at most five roundings of `|top.x - bot.x| <= 2·x_max`, the sum by one of
-/// `x_max`, 5.5 ε in all. Two computed x farther apart than twice this (times the larger
+/// with u = ε/2, its numerator's two products, difference and sum, and the division, err by at
+/// most u·x_max (the product with `bot.x`), 2u·|x - bot.x| <= 4u·x_max (the other product) and
+/// 2u·|x| (the sum and the quotient), 3.5 ε in all, below this bound. Two computed x farther apart than twice this (times the larger
 /// magnitude) are in their exact order.
 pub(crate) const X_AT_ERROR: f64 = 6.0 * f64::EPSILON;
 
@@ -122,7 +123,9 @@ impl Edge {
     }
 
     /// x where the edge crosses height `y`: exact at the ends, and correctly rounded when the
-    /// product fits (always for integer grids), since the division comes last.
+    /// products and their sum are exact (integer grids), since the division comes last: then it
+    /// is the value [`Edge::crossing_with`] computes for the same point, so a crossing on a
+    /// scanline that a slide passes and the crossing of the edges through it are one point.
     #[inline]
     pub(crate) fn x_at(&self, y: f64) -> f64 {
         if y == self.top.y {
@@ -130,7 +133,8 @@ impl Edge {
         } else if y == self.bot.y {
             self.bot.x
         } else {
-            self.bot.x + ((y - self.bot.y) * (self.top.x - self.bot.x)) / (self.top.y - self.bot.y)
+            let dy = self.top.y - self.bot.y;
+            (self.bot.x * dy + (y - self.bot.y) * (self.top.x - self.bot.x)) / dy
         }
     }
 

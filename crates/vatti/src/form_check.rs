@@ -34,6 +34,29 @@ const MAX_SCANNED_EDGES: usize = 1024;
 /// make the output worth checking: features that small are where rounding misplaces edges.
 const ULPS_NEAR_ROUNDING: f64 = 4096.0;
 
+/// Binary digits up to which integer coordinates, on any power-of-two scale, make the sweep's
+/// rounding harmless ([`rounding_is_harmless`]; the bounds there hold up to 9).
+const HARMLESS_DIGITS: u32 = 9;
+
+/// True when rounding cannot change the form of the sweep's output, so it needs no check: every
+/// coordinate of `subject` and `clip` is an integer below 2^m (m = [`HARMLESS_DIGITS`]) in units
+/// of one power of two (`predicates::on_coarse_grid`). In those units:
+/// - every product in a crossing's computation is exact, so a crossing is the exact one rounded
+///   once, and an edge's x on a scanline twice: under 2^(m-51) off;
+/// - a crossing is a fraction with a denominator below 2^(2m+3), so two distinct crossing heights
+///   differ by at least 2^-(4m+6), over an ulp: the sweep takes its events in their exact order,
+///   and its decisions, which are exact predicates, are those of exact arithmetic;
+/// - a crossing or vertex off a segment's line lies at least 2^-(3m+5) from it, and two distinct
+///   points at least 2^-(4m+6) apart: rounding moves no point onto, across or within rounding of
+///   an edge or point it is not on, so the rounded output meets itself exactly where the exact
+///   one does.
+///
+/// Property used: coordinates of few binary digits (grids, pixel and tile coordinates).
+pub(crate) fn rounding_is_harmless(subject: &Polygons, clip: &Polygons) -> bool {
+    let points = [subject, clip].into_iter().flat_map(|p| p.rings.iter().flat_map(|r| &r.points));
+    clip_core::predicates::on_coarse_grid(points.flat_map(|q| [q.x, q.y]), HARMLESS_DIGITS)
+}
+
 /// Rings at most this many ulps of their largest coordinate wide are slivers that rounded
 /// crossings can turn inside out: the snap fallback's pixel, which would collapse them.
 const SLIVER_ULPS: f64 = 4.0;

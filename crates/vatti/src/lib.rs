@@ -153,6 +153,12 @@
 //!   rounding would collapse it (`form_check::drop_flipped_slivers`). Known limit: any other
 //!   output broken between rings that share no point, away from near crossings, with no near
 //!   vertices and over 1024 edges (or over 65,536), is not found.
+//! - Exact by construction on coarse grids (`form_check::rounding_is_harmless`): where every
+//!   coordinate of both operands is an integer below 2^9 in units of one power of two, crossings
+//!   are the exact ones rounded once, the sweep takes its events in their exact order, and no
+//!   rounded point comes within rounding of an edge or point it is not on; edges through a
+//!   crossing f64 cannot hold are found exactly (`predicates::through_crossing`). Such outputs
+//!   are not checked, and never fall back.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
@@ -237,6 +243,19 @@ pub struct Vatti;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FixedSweep(pub Sweep);
 
+/// What is known of the operands of a sweep, which decides what its output is checked for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Operands {
+    /// Any valid operands: rounded crossings can break the output's form, which is checked.
+    Rounded,
+    /// Operands whose rounding cannot change the output's form
+    /// (`form_check::rounding_is_harmless`): nothing is checked.
+    Exact,
+    /// The snap fallback's operands: noded (their edges meet only at vertices, so their
+    /// straight-through vertices stay) and final.
+    Noded,
+}
+
 impl Vatti {
     /// `subject op clip` along the given route, by the given sweep and axis (each chosen on the
     /// operands when `None`): for comparing the paths, which give the same region. A
@@ -264,7 +283,10 @@ impl Vatti {
     /// vertices, so that sweep rounds nothing. In larger outputs, slivers that rounding turned
     /// inside out are dropped (`form_check::drop_flipped_slivers`).
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        let (mut rings, near_vertices) = Vatti::sweep_clean(subject, clip, op, fill, sweep, true);
+        if form_check::rounding_is_harmless(subject, clip) {
+            return Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Exact).0.rings);
+        }
+        let (mut rings, near_vertices) = Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Rounded);
         let broken = rings.broken_form || form_check::broken_near_rounding(subject, clip, &rings.rings, near_vertices);
         if broken && let Some(snapped) = snap_fallback::SnappedOperands::of(subject, clip) {
             return snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep));
@@ -275,23 +297,22 @@ impl Vatti {
 
     /// The sweep's conventional rings of valid operands, whatever the clean-up reports.
     fn sweep_polygons_once(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, false).0.rings)
+        Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Noded).0.rings)
     }
 
-    /// The sweep's clean-up of valid operands, with whether rounding broke its form (`strict`:
-    /// edges retraced near rounding count too) and, with `strict`, whether two of its distinct
-    /// points lie within rounding of each other (`form_check::vertices_near_rounding`) or the
-    /// sweep met a near miss (a vertex within rounding of another edge).
+    /// The sweep's clean-up of valid operands. For [`Operands::Rounded`] only: with whether
+    /// rounding broke its form (edges retraced near rounding count too), and whether two of its
+    /// distinct points lie within rounding of each other (`form_check::vertices_near_rounding`)
+    /// or the sweep met a near miss (a vertex within rounding of another edge).
     fn sweep_clean(
         subject: &Polygons,
         clip: &Polygons,
         op: BoolOp,
         fill: FillRule,
         sweep: Sweep,
-        strict: bool,
+        operands: Operands,
     ) -> (cleanup::CleanRings, bool) {
-        // Not strict: the snap fallback's operands, noded (their straight-through vertices stay).
-        let noded = !strict;
+        let (strict, noded) = (operands == Operands::Rounded, operands == Operands::Noded);
         Vatti::sweep(sweep, subject, clip, op, fill, false, noded, |rings, touches, turns, _| {
             let mut clean = cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
                 form_check::raw_near_rounding(subject, clip, rings)

@@ -6,7 +6,7 @@
 //! table), and an event sweep, which touches an edge only where it starts, ends or crosses a
 //! neighbour.
 
-use clip_core::predicates::{Orientation, orient};
+use clip_core::predicates::{Orientation, orient, through_crossing};
 use clip_core::{Point, Trapezoid};
 
 use crate::active::{ActiveEdges, ROUNDING};
@@ -115,6 +115,9 @@ pub(crate) struct SweepLine<'a> {
     /// join the chain of an edge it lies within rounding of; any other point is an exact input
     /// vertex.
     pub(crate) rounded_crossing: bool,
+    /// The two edges whose crossing is being processed, while `rounded_crossing`: an edge
+    /// through their exact crossing joins the chain too (`through_crossing`).
+    crossing_pair: (u32, u32),
     /// The last crossing taken, for `OutputBuilder::near_crossings`.
     last_crossing: Point,
 }
@@ -177,6 +180,7 @@ impl<'a> SweepLine<'a> {
             settle,
             slides,
             rounded_crossing: false,
+            crossing_pair: (NONE, NONE),
             last_crossing: Point::new(f64::NAN, f64::NAN),
         }
     }
@@ -698,8 +702,10 @@ impl<'a> SweepLine<'a> {
             self.near_crossing(left, p, q);
         }
         self.rounded_crossing = true;
+        self.crossing_pair = (left, self.ael.next(left));
         self.cross(left, p);
         self.rounded_crossing = false;
+        self.crossing_pair = (NONE, NONE);
     }
 
     /// Notes crossing `p` of `left` and its right neighbour, taken right after the crossing `q`
@@ -837,12 +843,14 @@ impl<'a> SweepLine<'a> {
         // Within rounding of a rounded point first: it spares the exact test, which on a point
         // that close to the line mostly takes the slow, adaptive path.
         let (near, within_rounding) = (offset <= 1e-9 * scale, rounded && offset <= ROUNDING * scale);
-        if !near
-            || (!within_rounding
-                && e.side_of(p) != Orientation::Collinear
-                && !self.coincident(id, k)
-                && (also == id || !self.coincident(also, k)))
-        {
+        // On it: within rounding, exactly, along the line of `id` or `also`, or through the exact
+        // crossing that a rounded `p` stands for.
+        let on = within_rounding
+            || e.side_of(p) == Orientation::Collinear
+            || self.coincident(id, k)
+            || (also != id && self.coincident(also, k))
+            || (rounded && self.through_crossing(k));
+        if !near || !on {
             self.out.near_miss |= near && !rounded;
             return false;
         }
@@ -851,6 +859,18 @@ impl<'a> SweepLine<'a> {
             self.out.add(e.outrec, left, p);
         }
         true
+    }
+
+    /// True when active edge `k` passes exactly through the exact crossing of the pair being
+    /// processed (`predicates::through_crossing`, where f64 holds it exactly): the pair's rounded
+    /// point is then `k`'s too, however far off `k` rounding put it. An edge at a small angle to
+    /// the sweep line passes several times the rounding off such a point in x.
+    fn through_crossing(&self, k: u32) -> bool {
+        let (a, b) = self.crossing_pair;
+        a != NONE && {
+            let (ea, eb) = (self.ael.get(a), self.ael.get(b));
+            through_crossing(self.ael.get(k).segment(), ea.segment(), eb.segment()) == Some(true)
+        }
     }
 
     /// True when `id` feeds the left end of its output polygon.

@@ -4,7 +4,7 @@
 use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Ring, WindowKind};
 use clip_oracle::polygon::{OutputRules, REGION_TOLERANCE, check_polygon_result};
 use clip_testkit::workload::polygon_case;
-use clip_vatti::{Vatti, VattiPrepared};
+use clip_vatti::{FixedSweep, Sweep, Vatti, VattiPrepared};
 
 /// Rings from coordinate lists (closing point omitted).
 fn polygons(rings: &[&[(f64, f64)]]) -> Polygons {
@@ -89,10 +89,15 @@ fn grid_seed_1_cases_3_and_97_unshrunk() {
     }
 }
 
-/// Every operation and fill rule through [`Vatti`] and a prepared clip.
+/// Every operation and fill rule through [`Vatti`], a prepared clip and either sweep.
 fn assert_passes_both(subject: &Polygons, clip: &Polygons) {
     let rules = OutputRules::conventional(REGION_TOLERANCE);
-    let clippers: [(&str, &dyn PolygonClipper); 2] = [("vatti", &Vatti), ("vatti-prepared", &VattiPrepared)];
+    let clippers: [(&str, &dyn PolygonClipper); 4] = [
+        ("vatti", &Vatti),
+        ("vatti-prepared", &VattiPrepared),
+        ("scanbeam", &FixedSweep(Sweep::Scanbeam)),
+        ("events", &FixedSweep(Sweep::Events)),
+    ];
     for (name, clipper) in clippers {
         for op in BoolOp::ALL {
             for fill in FillRule::ALL {
@@ -105,15 +110,41 @@ fn assert_passes_both(subject: &Polygons, clip: &Polygons) {
 }
 
 /// `verify --cases 20000`, case 449, xor, non-zero, shrunk: three edges pass through
-/// (13⅓, 16⅚), which f64 cannot hold. All three pairwise crossings round to one point, off the
-/// edge that passes it without a vertex there, and a ring crossed itself at it; no near
-/// vertices, short edge or near miss showed it. The sweep now notes crossings taken one after
-/// another at or near one rounded point, and the edges passing there are checked
-/// (`form_check::crossing_near`).
+/// (13⅓, 16⅚), which f64 cannot hold. All three pairwise crossings round to one point, 3e-14 off
+/// the flattest edge in x (twice the rounding allowance), which passed it without a vertex there,
+/// and a ring crossed itself at it. Floating-point inputs are checked near such crossings
+/// (`form_check::crossing_near`); on a grid as coarse as this the output is not checked
+/// (`form_check::rounding_is_harmless`), and the sweep gives the point to every edge through the
+/// exact crossing (`predicates::through_crossing`).
 #[test]
-fn a_ring_crossing_itself_where_three_edges_meet_off_the_grid_is_caught() {
+fn three_edges_through_a_crossing_f64_cannot_hold_all_take_its_point() {
     let subject = polygons(&[&[(18.0, 17.0), (16.0, 17.0), (0.0, 16.0)]]);
     let clip = polygons(&[&[(10.0, 16.0), (14.0, 17.0), (14.0, 4.0), (13.0, 18.0), (15.0, 11.0)]]);
+    assert_passes_both(&subject, &clip);
+}
+
+/// Random integer rings on a 7 x 7 grid, intersection, non-zero, found by a stress of such
+/// grids: a subject edge and a clip edge cross at (⅓, -2), on the row of a clip horizontal. The
+/// slide along that horizontal computed the subject edge's x there as 0.33333333333333326 (the
+/// quotient rounded, then the sum), the edges' crossing as 0.3333333333333333 (rounded once), and
+/// a ring crossed itself between the two. `Edge::x_at` now divides last, so on a grid both are
+/// the exact value rounded once: one point.
+#[test]
+fn a_slide_and_a_crossing_on_its_row_take_one_point() {
+    let subject = polygons(&[&[
+        (1.0, 2.0),
+        (1.0, -2.0),
+        (-3.0, 0.0),
+        (2.0, -3.0),
+        (0.0, -3.0),
+        (-1.0, -3.0),
+        (0.0, -3.0),
+        (0.0, 1.0),
+    ]]);
+    let clip = polygons(&[
+        &[(-3.0, 3.0), (-3.0, 2.0), (-1.0, 2.0), (1.0, -3.0)],
+        &[(2.0, -2.0), (0.0, -2.0), (1.0, 1.0), (-1.0, -1.0), (2.0, 0.0), (0.0, 3.0), (1.0, -2.0), (0.0, -3.0)],
+    ]);
     assert_passes_both(&subject, &clip);
 }
 

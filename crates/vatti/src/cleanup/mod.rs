@@ -81,8 +81,9 @@ const HELD_TEST_BUDGET: usize = 1 << 16;
 /// in the rings, and outputs with thousands of holes far above rounding (scribble unions) took
 /// 30 times as long with it.
 ///
-/// With `strict`, edges retraced near rounding also count as broken (see [`SameWay::Retraced`]):
-/// for the sweep's own output only, not for the snap fallback's sweep, which is final.
+/// With `strict`, edges retraced near rounding also count as broken (see [`SameWay::Retraced`]).
+/// Without it nothing is checked and `broken_form` is false: for outputs taken as final, the snap
+/// fallback's sweep and sweeps whose rounding is harmless (`form_check::rounding_is_harmless`).
 pub(crate) fn conventional_rings_checked(
     raw: &RawRings,
     touches: &mut Touches,
@@ -174,7 +175,7 @@ fn walked(
         });
     }
     let same_way = if walk.rebuilt.contains(&true) {
-        rebuild(raw, touches, &walk.rebuilt, &mut |ids: &[u32], points: &[Point]| {
+        rebuild(raw, touches, &walk.rebuilt, strict, &mut |ids: &[u32], points: &[Point]| {
             ring_ids.extend_from_slice(ids);
             ring_ends.push(ring_ids.len());
             push_simplified(points, &mut out, &mut clockwise);
@@ -189,12 +190,12 @@ fn walked(
     // them can leave rings crossing at a shared point (a fuzz input's xor): the rebuilt rings
     // (before collinear vertices go; untouched rings share no point) are then checked there
     // exactly, and the snap fallback runs only if they do not meet cleanly.
-    let broken_form = same_way == SameWay::Remaining
-        || (strict
-            && same_way == SameWay::Retraced
-            && near_rounding()
-            && cross_at_shared_points(&touches.distinct, &ring_ids, &ring_ends))
-        || any_unheld(&out, &clockwise, &mut near_rounding);
+    let broken_form = strict
+        && (same_way == SameWay::Remaining
+            || (same_way == SameWay::Retraced
+                && near_rounding()
+                && cross_at_shared_points(&touches.distinct, &ring_ids, &ring_ends))
+            || any_unheld(&out, &clockwise, &mut near_rounding));
     CleanRings { rings: out, broken_form }
 }
 

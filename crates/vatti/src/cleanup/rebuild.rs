@@ -14,11 +14,13 @@ use crate::raw_rings::RawRings;
 /// Rebuilds the rings of `rings` marked in `walked` (touched rings, every one with an edge to
 /// split among them, sharing no point with the others) into simple rings, handed to `emit` as
 /// ids of `touches.distinct` and as points (in the order of the edges they start from); returns
-/// whether two of their edges leave or arrive at one point in the same direction.
+/// whether two of their edges leave or arrive at one point in the same direction, when asked to
+/// `check` (else [`SameWay::None`]).
 pub(crate) fn rebuild(
     rings: &RawRings,
     touches: &Touches,
     walked: &[bool],
+    check: bool,
     emit: &mut impl FnMut(&[u32], &[Point]),
 ) -> SameWay {
     let Touches { splits, split_points, ids, distinct: pts, .. } = touches;
@@ -87,7 +89,11 @@ pub(crate) fn rebuild(
             used[j as usize] = true;
         }
     }
-    let same_way = has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends, &used);
+    let same_way = if check {
+        has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends, &used)
+    } else {
+        SameWay::None
+    };
     let mut slot = vec![usize::MAX; pts.len()];
     let mut walk: Vec<u32> = Vec::new();
     let mut stack: Vec<u32> = Vec::new();
