@@ -497,3 +497,21 @@ fn vatti_snapped_xor_rings_crossing_beyond_1e100() {
 fn vatti_snapped_union_rings_overlapping_beyond_1e100() {
     regression("vatti", "snapped-union-rings-overlapping-beyond-1e100");
 }
+
+/// The event sweep along y (session 28, 30 minutes of `fuzz/vatti`, shrunk): a sliver 8 units
+/// long and an ulp high, its long lower edge rising 6 ulps, crossed a steep triangle edge 0.05
+/// ulp below the row of the sliver's horizontal top. The crossing was computed 1.5 ulps above
+/// that row, so the horizontal's slide met the two edges in their order below the crossing,
+/// their x on the row in the order above it, and the union filled a region below the sliver.
+/// Crossings computed just above a scanline whose edges have crossed by it, exactly, are now
+/// taken before it (`SweepLine::crossed_below`).
+#[test]
+fn vatti_crossing_computed_above_the_horizontal_it_lies_below() {
+    regression("vatti", "crossing-computed-above-the-horizontal-it-lies-below");
+}
+
+/// The same at 5e5 (its first find, also a union).
+#[test]
+fn vatti_crossing_computed_above_the_horizontal_it_lies_below_at_5e5() {
+    regression("vatti", "crossing-computed-above-the-horizontal-it-lies-below-at-5e5");
+}
