@@ -42,12 +42,6 @@ impl CrossingQueue {
             + 4 * self.free.capacity()
     }
 
-    /// True when no crossing waits.
-    #[inline]
-    pub(crate) fn is_empty(&self) -> bool {
-        self.heap.is_empty()
-    }
-
     /// Adds the crossing of `left` and `right` at `pt`.
     #[inline]
     pub(crate) fn push(&mut self, left: u32, right: u32, pt: Point) {
@@ -65,16 +59,18 @@ impl CrossingQueue {
         self.heap.push(Reverse((height_key(pt.y), slot)));
     }
 
-    /// The lowest crossing above height `y` and at or below `y + band`, taken out of the queue.
+    /// The lowest crossing, left in the queue.
     #[inline]
-    pub(crate) fn pop_just_above(&mut self, y: f64, band: f64) -> Option<PendingCrossing> {
-        let &Reverse((k, slot)) = self.heap.peek()?;
-        if k <= height_key(y) || k > height_key(y + band) {
-            return None;
+    pub(crate) fn lowest(&self) -> Option<PendingCrossing> {
+        self.heap.peek().map(|&Reverse((_, slot))| self.slots[slot as usize])
+    }
+
+    /// Takes the lowest crossing out of the queue.
+    #[inline]
+    pub(crate) fn pop(&mut self) {
+        if let Some(Reverse((_, slot))) = self.heap.pop() {
+            self.free.push(slot);
         }
-        self.heap.pop();
-        self.free.push(slot);
-        Some(self.slots[slot as usize])
     }
 
     /// The lowest crossing at or below height `y`, taken out of the queue.

@@ -24,8 +24,8 @@ use crate::small_sort::insertion_sorted_by;
 /// one point round an ulp or two apart.
 pub(crate) const NEAR_CROSSINGS_ULPS: f64 = 16.0;
 
-/// Ulps of the inputs' largest coordinate above a scanline within which a computed crossing may
-/// lie below it exactly (`SweepLine::crossed_below`): a crossing's height errs by a few ulps of
+/// Ulps of the largest coordinate of a crossing's edges above a scanline within which the
+/// crossing, computed, may lie below it exactly (`SweepLine::crossed_below`): a crossing's height errs by a few ulps of
 /// the coordinates it is computed from (found an ulp and a half above, by the `vatti` fuzz
 /// target); the test within this band is exact, so the band only bounds the work.
 const CROSSING_HEIGHT_SLACK: f64 = 64.0;
@@ -126,9 +126,6 @@ pub(crate) struct SweepLine<'a> {
     crossing_pair: (u32, u32),
     /// The last crossing taken, for `OutputBuilder::near_crossings`.
     last_crossing: Point,
-    /// How far above a scanline a crossing below it can be computed ([`SweepLine::crossed_below`]):
-    /// NaN until first needed.
-    crossing_slack: f64,
     /// Crossings taken out of the queue by [`SweepLine::crossed_below`] that wait for their height.
     waiting: Vec<PendingCrossing>,
 }
@@ -192,7 +189,6 @@ impl<'a> SweepLine<'a> {
             slides,
             rounded_crossing: false,
             crossing_pair: (NONE, NONE),
-            crossing_slack: f64::NAN,
             waiting: Vec::new(),
             last_crossing: Point::new(f64::NAN, f64::NAN),
         }
@@ -668,7 +664,6 @@ impl<'a> SweepLine<'a> {
                 self.table.table = table;
             }
             Sweep::Events => {
-                let mut waiting = std::mem::take(&mut self.waiting);
                 loop {
                     while let Some(c) = self.crossings.pop_up_to(yt) {
                         // Dropped when an edge came between the pair, or one of them ended: the
@@ -683,16 +678,15 @@ impl<'a> SweepLine<'a> {
                         self.crossing(c.left, c.pt, &mut y_prev);
                         self.test_new_pairs(yb);
                     }
-                    let Some(c) = self.crossed_below(yt, &mut waiting) else { break };
+                    let Some(c) = self.crossed_below(yt) else { break };
                     let (el, er) = (self.ael.get(c.left), self.ael.get(c.right));
                     let p = el.crossing_with(er, yb, yt, [el.x_at(yb), el.x_at(yt), er.x_at(yb), er.x_at(yt)]);
                     self.crossing(c.left, p, &mut y_prev);
                     self.test_new_pairs(yb);
                 }
-                for c in waiting.drain(..) {
+                while let Some(c) = self.waiting.pop() {
                     self.crossings.push(c.left, c.right, c.pt);
                 }
-                self.waiting = waiting;
             }
         }
         if self.traps.is_some() && yt > y_prev {
@@ -706,28 +700,29 @@ impl<'a> SweepLine<'a> {
         self.ael.next(c.left) == c.right && self.ael.get(c.left).alive
     }
 
-    /// The next crossing computed just above scanline `y` (within [`CROSSING_HEIGHT_SLACK`] ulps
-    /// of the inputs' largest coordinate) whose edges have crossed by `y` already, exactly: a
-    /// crossing of a nearly horizontal edge can be computed an ulp or two above a scanline that
-    /// it lies below, and the scanline's events (a horizontal sliding across both edges) need
-    /// the pair in its order there. The others go to `waiting`, to be queued again.
-    fn crossed_below(&mut self, y: f64, waiting: &mut Vec<PendingCrossing>) -> Option<PendingCrossing> {
-        if self.crossings.is_empty() {
-            return None;
-        }
-        if self.crossing_slack.is_nan() {
-            let largest = self.bounds.vertices.iter().fold(0.0f64, |m, v| m.max(v.pt.x.abs()).max(v.pt.y.abs()));
-            self.crossing_slack = CROSSING_HEIGHT_SLACK * f64::EPSILON * largest;
-        }
-        while let Some(c) = self.crossings.pop_just_above(y, self.crossing_slack) {
-            if !self.still_adjacent(c) {
-                continue;
+    /// The next crossing computed just above scanline `y` (the lowest ones, each within
+    /// [`CROSSING_HEIGHT_SLACK`] ulps of its edges' largest coordinate) whose edges have crossed
+    /// by `y` already, exactly: a crossing of a nearly horizontal edge can be computed an ulp or
+    /// two above a scanline that it lies below, and the scanline's events (a horizontal sliding
+    /// across both edges) need the pair in its order there. The others go to `waiting`, to be
+    /// queued again.
+    fn crossed_below(&mut self, y: f64) -> Option<PendingCrossing> {
+        while let Some(c) = self.crossings.lowest() {
+            if self.still_adjacent(c) {
+                let (l, r) = (self.ael.get(c.left), self.ael.get(c.right));
+                let band = CROSSING_HEIGHT_SLACK * f64::EPSILON * l.magnitude.max.max(r.magnitude.max);
+                if c.pt.y > y + band {
+                    return None;
+                }
+                let crossed = r.left_of_at_exactly(l, y);
+                self.crossings.pop();
+                if crossed {
+                    return Some(c);
+                }
+                self.waiting.push(c);
+            } else {
+                self.crossings.pop();
             }
-            let (l, r) = (self.ael.get(c.left), self.ael.get(c.right));
-            if r.left_of_at_exactly(l, y) {
-                return Some(c);
-            }
-            waiting.push(c);
         }
         None
     }
