@@ -25,9 +25,10 @@ use crate::small_sort::insertion_sorted_by;
 pub(crate) const NEAR_CROSSINGS_ULPS: f64 = 16.0;
 
 /// Ulps of the largest coordinate of a crossing's edges above a scanline within which the
-/// crossing, computed, may lie below it exactly (`SweepLine::crossed_below`): a crossing's height errs by a few ulps of
-/// the coordinates it is computed from (found an ulp and a half above, by the `vatti` fuzz
-/// target); the test within this band is exact, so the band only bounds the work.
+/// crossing, computed, may lie below it exactly (`SweepLine::crossed_below`): a crossing's
+/// height errs by a few ulps of the coordinates it is computed from (found an ulp and a half
+/// above, by the `vatti` fuzz target); the test within this band is exact, so the band only
+/// bounds the work.
 const CROSSING_HEIGHT_SLACK: f64 = 64.0;
 
 /// How the sweep finds the edges that end on a scanline and the crossings between scanlines.
