@@ -179,9 +179,9 @@ fn vatti_outer_turned_clockwise_at_1e15() {
 
 /// A 5-vertex ring with a vertex at 5e25 (an ulp is 8.6e9) and a triangle near the origin: the
 /// union's two rings near the origin share no point, yet one crossed into the other, which the
-/// oracle saw as a counter-clockwise hole. The clean-up cannot see rings that share no point, so
-/// small outputs with an edge within 4096 ulps of the inputs' largest coordinate now get a full
-/// exact check of their form (`clip_vatti`'s `form_check`), and the repair joins what it finds.
+/// oracle saw as a counter-clockwise hole. The clean-up cannot see rings that share no point;
+/// today the rounding certificate fails there (features within its clearance), and the
+/// snap-rounded operands are swept instead.
 #[test]
 fn vatti_rings_crossing_near_a_sliver_to_5e25() {
     regression("vatti", "rings-crossing-near-a-sliver-to-5e25");

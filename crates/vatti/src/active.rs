@@ -2,7 +2,7 @@
 
 use std::cmp::Ordering;
 
-use clip_core::predicates::{Orientation, on_line, orient, x_at_height_cmp};
+use clip_core::predicates::{Orientation, accurate_crossing_point, on_line, orient, x_at_height_cmp};
 use clip_core::{Point, Segment};
 
 use crate::bounds::NONE;
@@ -178,16 +178,19 @@ impl Edge {
 
     /// Where this edge and `other` cross, computed once and kept inside `[yb, yt]`: y clamped
     /// there (x then taken on the steeper edge), x clamped to the span of `xs`, the two edges'
-    /// x at `yb` and `yt`.
-    pub(crate) fn crossing_with(&self, other: &Edge, yb: f64, yt: f64, xs: [f64; 4]) -> Point {
+    /// x at `yb` and `yt`. With a finite `max_error` (a certified sweep), a crossing whose
+    /// quotient may err by more, or falls outside `[yb, yt]`, is computed from accurate
+    /// determinants instead; and true comes back where it was still clamped onto an edge rising
+    /// less than one per unit of x, whose x there is then off by more than its height's error.
+    pub(crate) fn crossing_with(&self, other: &Edge, yb: f64, yt: f64, xs: [f64; 4], max_error: f64) -> (Point, bool) {
         // A swap at a vertex both edges start or end at: that vertex exactly, which the quotient
         // below can miss by an ulp (`bot.x * den` is rounded); the sweep of snap-rounded operands
         // must output no point but theirs. (Sharing an end, they meet nowhere else, or overlap.)
         if xs[0] == xs[2] && self.bot == other.bot {
-            return Point::new(xs[0], yb);
+            return (Point::new(xs[0], yb), false);
         }
         if xs[1] == xs[3] && self.top == other.top {
-            return Point::new(xs[1], yt);
+            return (Point::new(xs[1], yt), false);
         }
         let (d1, d2) = (self.top - self.bot, other.top - other.bot);
         let den = d1.cross(d2);
@@ -198,14 +201,50 @@ impl Edge {
             let s = num / den;
             p = Point::new(self.bot.x + s * d1.x, self.bot.y + s * d1.y);
         }
-        if !(p.y >= yb && p.y <= yt) {
+        let inside = |p: Point| p.y >= yb && p.y <= yt;
+        // Edges at a small angle: the quotient above can be far off along them.
+        if max_error.is_finite() && (!inside(p) || self.crossing_error(other) > max_error) {
+            p = self.accurate_crossing(other).unwrap_or(p);
+        }
+        let mut off_flat = false;
+        if !inside(p) {
             let y = if p.y > yt { yt } else { yb };
             let steeper = if (d1.x / d1.y).abs() <= (d2.x / d2.y).abs() { self } else { other };
             p = Point::new(steeper.x_at(y), y);
+            let d = steeper.top - steeper.bot;
+            off_flat = max_error.is_finite() && d.y < d.x.abs();
         }
         let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y)
+        (Point::new(if p.x.is_finite() { p.x.clamp(lo, hi) } else { 0.5 * (lo + hi) }, p.y), off_flat)
+    }
+
+    /// A bound on how far the crossing with `other` that [`Edge::crossing_with`] computes from
+    /// the quotient lies from the exact one, in each coordinate: the parameter `t = num / den`
+    /// along this edge errs by under `4ε (num's terms + den's terms) / |den|` (each a difference
+    /// of two products of differences), times the edge's extent, plus the final sums' rounding
+    /// (`8ε` of the magnitudes).
+    /// Large for edges at a small angle, where `den` cancels.
+    #[inline]
+    pub(crate) fn crossing_error(&self, other: &Edge) -> f64 {
+        let (d1, d2) = (self.top - self.bot, other.top - other.bot);
+        let w = other.bot - self.bot;
+        let den = d1.cross(d2);
+        let den_terms = (d1.x * d2.y).abs() + (d1.y * d2.x).abs();
+        let num_terms = (w.x * d2.y).abs() + (w.y * d2.x).abs();
+        let t_error = 4.0 * f64::EPSILON * (num_terms + den_terms) / den.abs();
+        let along = d1.x.abs().max(d1.y.abs());
+        t_error * along + 8.0 * f64::EPSILON * self.magnitude.max.max(other.magnitude.max)
+    }
+
+    /// The crossing with `other` from accurate determinants (`predicates::accurate_crossing_point`:
+    /// about 8 ulps of this edge's extent off in each axis, and an ulp of the point), or `None`
+    /// where that is not finite.
+    #[cold]
+    #[inline(never)]
+    fn accurate_crossing(&self, other: &Edge) -> Option<Point> {
+        let q = accurate_crossing_point(self.segment(), other.segment());
+        q.is_finite().then_some(q)
     }
 
     /// True when this edge, left of `right` where both are active now, is right of it at the

@@ -38,11 +38,14 @@ impl SweepLine<'_> {
             // other edges through the exact crossing lie within rounding of a rounded one, and
             // take it too.
             let (p, rounded) = self.ael.get(k).passed_at(xk, y, lo, hi, [s.from_x, s.to_x]);
+            self.certify_passed(k, xk, p);
             self.rounded_crossing = rounded;
+            self.crossing_pair = (s.edge, k);
             let left = if rightwards { s.edge } else { k };
             self.cross(left, p);
             self.ael.recheck(self.ael.prev(left));
             self.rounded_crossing = false;
+            self.crossing_pair = (NONE, NONE);
             // The crossings come in order along the horizontal even where two edges' rounded x
             // on the scanline are an ulp out of their order.
             if rightwards {

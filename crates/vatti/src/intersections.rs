@@ -36,6 +36,9 @@ pub(crate) struct IntersectionTable {
     xtop: Vec<TopX>,
     sorted: Vec<u32>,
     pub table: Vec<Intersection>,
+    /// True when a crossing of the last [`IntersectionTable::build`] was clamped onto an edge
+    /// rising less than one per unit of x (`Edge::crossing_with`).
+    pub off_flat: bool,
 }
 
 impl IntersectionTable {
@@ -58,8 +61,9 @@ impl IntersectionTable {
     /// right to left by their x at `yt`; each edge an edge has to jump over is a crossing (the
     /// paper's ST pass). Sorted by height, ties in the order found. Every edge's `curr_x` must be
     /// its x at `yb`.
-    pub(crate) fn build(&mut self, ael: &mut ActiveEdges, yb: f64, yt: f64) {
+    pub(crate) fn build(&mut self, ael: &mut ActiveEdges, yb: f64, yt: f64, max_error: f64) {
         self.table.clear();
+        self.off_flat = false;
         let n = ael.len();
         if n < 2 {
             return;
@@ -108,7 +112,8 @@ impl IntersectionTable {
             st.push(i as u32);
             while j > 0 && left_at_top(ael, order, i, xtop[i], st[j - 1] as usize, xtop[st[j - 1] as usize], yt) {
                 let (left, right) = (order[st[j - 1] as usize], order[i]);
-                let pt = scanbeam_crossing(ael, left, right, yb, yt);
+                let (pt, off_flat) = scanbeam_crossing(ael, left, right, yb, yt, max_error);
+                self.off_flat |= off_flat;
                 self.table.push(Intersection { left, right, pt, y_key: height_key(pt.y) });
                 st[j] = st[j - 1];
                 j -= 1;
@@ -147,9 +152,9 @@ fn left_at_top_of(ael: &ActiveEdges, i: u32, ti: TopX, k: u32, tk: TopX, yt: f64
 /// Where edges `a` and `b` cross, kept inside the scanbeam `[yb, yt]`, from their x at both
 /// ends of the beam (`curr_x` at the bottom, computed when the scanline was processed, and
 /// `next_x` at the top, cached by [`IntersectionTable::build`]: no division spent on them).
-fn scanbeam_crossing(ael: &ActiveEdges, a: u32, b: u32, yb: f64, yt: f64) -> Point {
+fn scanbeam_crossing(ael: &ActiveEdges, a: u32, b: u32, yb: f64, yt: f64, max_error: f64) -> (Point, bool) {
     let (ea, eb) = (ael.get(a), ael.get(b));
     debug_assert!(ea.curr_x == ea.x_at(yb) && eb.curr_x == eb.x_at(yb));
     debug_assert!(ea.next_y == yt && eb.next_y == yt);
-    ea.crossing_with(eb, yb, yt, [ea.curr_x, ea.next_x, eb.curr_x, eb.next_x])
+    ea.crossing_with(eb, yb, yt, [ea.curr_x, ea.next_x, eb.curr_x, eb.next_x], max_error)
 }

@@ -125,40 +125,27 @@
 //!   rounding to its integer grid, drops them: ring counts differ from Clipper2's on many of its
 //!   `Polygons.txt` cases (the cross-library test in `clip-peers` runs Clipper2 on each,
 //!   normalises its output to these conventions and checks the counts agree).
-//! - Snap-rounded fallback (`snap_fallback`, `form_check`): with features a few ulps wide far
-//!   from the origin, or nearly coincident edges (angles of 1e-16, offsets of a few ulps), rounded
-//!   crossings can leave two rings running the same way along an edge (their insides
-//!   overlapping), a clockwise ring that no ring holds, or rings crossing or nested against their
-//!   orientation. The clean-up reports the first two among the rings it rebuilds (for the first,
-//!   two edges leaving or arriving at one point in the same direction once opposite edges
-//!   cancelled; two one way and one back, as grid unions' holes retrace their outers, only near
-//!   rounding and when the rebuilt rings then cross or overlap at a point they share, checked
-//!   exactly); outputs near rounding also get a full exact check of their form (`form_check`:
-//!   up to 65,536 edges where two distinct vertices lie within 4096 ulps of the inputs' largest
-//!   coordinate of each other or the sweep met a near miss, up to 1024 where an edge or a ring is
-//!   that short or thin), and every output, whatever its size, gets an exact check of the edges
-//!   passing near crossings taken one after another within 16 ulps of each other (several edges
-//!   through one point that f64 cannot hold: `form_check::crossing_near`). Where the sweep
-//!   left a point near an edge but off it (a near miss), the clean-up also splits slanted edges
-//!   at the vertices on them, so rounded edges through exact vertices cancel or are reported like
-//!   horizontal ones. A broken output is replaced once, by the sweep of both operands snap
-//!   rounded (`clip_core::snap_round`, Hobby 1999) on a grid of pixels of `s`, the smallest power
-//!   of two at least 4 ulps of the largest input coordinate: the rounded operands' edges meet
-//!   only at vertices, so that sweep (ordering edges exactly where rounding could swap them, and
-//!   taking no exact point for a rounded one) rounds nothing, and its output is valid by
-//!   construction; each of its vertices is within `s·√2/2` of the exact vertex or crossing.
-//!   Outputs not reported broken are returned as the first sweep made them, but for one repair
-//!   in outputs of over 1024 edges: a sliver (a ring at most 4 ulps of its coordinates wide) that
-//!   runs against its nesting, turned inside out by rounded crossings, is dropped, as snap
-//!   rounding would collapse it (`form_check::drop_flipped_slivers`). Known limit: any other
-//!   output broken between rings that share no point, away from near crossings, with no near
-//!   vertices and over 1024 edges (or over 65,536), is not found.
-//! - Exact by construction on coarse grids (`form_check::rounding_is_harmless`): where every
-//!   coordinate of both operands is an integer below 2^9 in units of one power of two, crossings
-//!   are the exact ones rounded once, the sweep takes its events in their exact order, and no
-//!   rounded point comes within rounding of an edge or point it is not on; edges through a
-//!   crossing f64 cannot hold are found exactly (`predicates::through_crossing`). Such outputs
-//!   are not checked, and never fall back.
+//! - Valid output by proof (`rounding_certificate`). Rounded crossings can break an output's
+//!   form only where something else lies within a few ulps of them (nearly coincident edges,
+//!   vertices a few ulps off an edge, three edges through a crossing f64 cannot hold). So either
+//!   rounding is proven harmless, and the output has the exact arrangement's form with each
+//!   vertex within 76 ulps of the largest input coordinate of its exact place (in each
+//!   coordinate), or the snap-rounded operands are swept instead:
+//!   - on coarse grids (every coordinate an integer below 2^9 in units of one power of two) it is
+//!     proven before the sweep: crossings are the exact ones rounded once, taken in their exact
+//!     order, and no rounded point comes within rounding of anything it is not on;
+//!   - on any other operands the sweep certifies it as it goes, in O(1) per event: no two events
+//!     within a box of `2D × 2H` of each other (`D` a thousandth of the largest coordinate, `H`
+//!     408 ulps of it), no edge flatter than `4H/D` near an output point (those are checked on a
+//!     list of their own), and at every output point the nearest edges either side in the table
+//!     farther than 256 ulps. Crossings whose quotient may err by over 32 ulps (edges at a small
+//!     angle) are computed from accurate determinants. The argument is in `rounding_certificate`.
+//!   - Where the certificate fails and a rounded point was output, the sweep stops and both
+//!     operands are snap rounded (`clip_core::snap_round`, Hobby 1999) on a grid of pixels of `s`,
+//!     the smallest power of two at least 4 ulps of the largest input coordinate, and swept once
+//!     (`snap_fallback`): their edges meet only at vertices, so that sweep rounds nothing and
+//!     its output is valid by construction; each of its vertices is within `s·√2/2` of the
+//!     exact vertex or crossing. No output is checked or repaired afterwards.
 //! - Bad input (NaN, infinity, coordinates beyond `clip_core::MAX_COORDINATE` or non-zero below
 //!   `clip_core::MIN_COORDINATE`, rings with fewer than three distinct points) gives a
 //!   [`ClipError`]; nothing panics or loops.
@@ -195,7 +182,6 @@ mod edge_blocks;
 mod edge_tops;
 mod envelope;
 mod far_splice;
-mod form_check;
 mod horizontal;
 mod intersections;
 mod opposite_edges;
@@ -204,6 +190,7 @@ mod output;
 mod prepared;
 mod prepared_reuse;
 mod raw_rings;
+mod rounding_certificate;
 mod route;
 mod scanbeam;
 mod scratch;
@@ -228,6 +215,7 @@ use crate::cleanup::{Touches, Turns};
 use crate::contribution::Rules;
 use crate::opposite_edges::cancel_opposite_edges;
 use crate::raw_rings::RawRings;
+use crate::rounding_certificate::rounding_is_harmless;
 use crate::route::{Plan, edge_count};
 use crate::scratch::Scratch;
 use crate::sweep::SweepLine;
@@ -243,16 +231,17 @@ pub struct Vatti;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FixedSweep(pub Sweep);
 
-/// What is known of the operands of a sweep, which decides what its output is checked for.
+/// What is known of the operands of a sweep, which decides whether its rounding is certified.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Operands {
-    /// Any valid operands: rounded crossings can break the output's form, which is checked.
-    Rounded,
-    /// Operands whose rounding cannot change the output's form
-    /// (`form_check::rounding_is_harmless`): nothing is checked.
-    Exact,
+    /// Any valid operands: the sweep certifies that rounding left its output's form as the
+    /// exact arrangement's (`rounding_certificate`), or gives no output.
+    Float,
+    /// Operands on a coarse grid, where rounding provably changes nothing
+    /// ([`rounding_is_harmless`]).
+    CoarseGrid,
     /// The snap fallback's operands: noded (their edges meet only at vertices, so their
-    /// straight-through vertices stay) and final.
+    /// straight-through vertices stay), and nothing is rounded.
     Noded,
 }
 
@@ -277,33 +266,32 @@ impl Vatti {
         Ok(clip_planned(subject, clip, None, op, fill, Plan { route, sweep, axis }))
     }
 
-    /// The sweep's conventional rings of valid operands. Where rounding broke their form (the
-    /// clean-up's report, or `form_check`'s exact check of a small output near rounding), the
-    /// snap-rounded operands are swept once instead (`snap_fallback`): their edges meet only at
-    /// vertices, so that sweep rounds nothing. In larger outputs, slivers that rounding turned
-    /// inside out are dropped (`form_check::drop_flipped_slivers`).
+    /// The sweep's conventional rings of valid operands. Where the rounding certificate fails
+    /// (`rounding_certificate`: some rounded point came within its clearance of an edge or event
+    /// it is not on), the snap-rounded operands are swept instead (`snap_fallback`): their edges
+    /// meet only at vertices, so that sweep rounds nothing. Either way the output's form is the
+    /// exact arrangement's, of the operands or of the snapped ones.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        if form_check::rounding_is_harmless(subject, clip) {
-            return Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Exact).0.rings);
+        let operands = if rounding_is_harmless(subject, clip) { Operands::CoarseGrid } else { Operands::Float };
+        if let Some(out) = Vatti::sweep_clean(subject, clip, op, fill, sweep, operands) {
+            return out;
         }
-        let (mut rings, near_vertices) = Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Rounded);
-        let broken = rings.broken_form || form_check::broken_near_rounding(subject, clip, &rings.rings, near_vertices);
-        if broken && let Some(snapped) = snap_fallback::SnappedOperands::of(subject, clip) {
-            return snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep));
+        match snap_fallback::SnappedOperands::of(subject, clip) {
+            Some(snapped) => {
+                snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep))
+            }
+            // Not reached: the grid is chosen for valid operands' largest coordinate.
+            None => Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::CoarseGrid).unwrap_or_default(),
         }
-        form_check::drop_flipped_slivers(&mut rings.rings);
-        Polygons::new(rings.rings)
     }
 
-    /// The sweep's conventional rings of valid operands, whatever the clean-up reports.
+    /// The sweep's conventional rings of snap-rounded operands.
     fn sweep_polygons_once(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        Polygons::new(Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Noded).0.rings)
+        Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Noded).unwrap_or_default()
     }
 
-    /// The sweep's clean-up of valid operands. For [`Operands::Rounded`] only: with whether
-    /// rounding broke its form (edges retraced near rounding count too), and whether two of its
-    /// distinct points lie within rounding of each other (`form_check::vertices_near_rounding`)
-    /// or the sweep met a near miss (a vertex within rounding of another edge).
+    /// The sweep's conventional rings of valid operands, `None` where they are
+    /// [`Operands::Float`] and the rounding certificate failed.
     fn sweep_clean(
         subject: &Polygons,
         clip: &Polygons,
@@ -311,26 +299,18 @@ impl Vatti {
         fill: FillRule,
         sweep: Sweep,
         operands: Operands,
-    ) -> (cleanup::CleanRings, bool) {
-        let (strict, noded) = (operands == Operands::Rounded, operands == Operands::Noded);
-        Vatti::sweep(sweep, subject, clip, op, fill, false, noded, |rings, touches, turns, _| {
-            let mut clean = cleanup::conventional_rings_checked(rings, touches, turns, strict, || {
-                form_check::raw_near_rounding(subject, clip, rings)
-            });
-            clean.broken_form |=
-                strict && !clean.broken_form && form_check::crossing_near(&clean.rings, &rings.near_crossings);
-            // Already broken: the fallback runs anyway, so the near test would be wasted.
-            let near = strict
-                && !clean.broken_form
-                && form_check::checked(&clean.rings)
-                && (rings.near_miss || form_check::vertices_near_rounding(subject, clip, touches.distinct_by_y()));
-            (clean, near)
+    ) -> Option<Polygons> {
+        let (certify, noded) = (operands == Operands::Float, operands == Operands::Noded);
+        Vatti::sweep(sweep, subject, clip, op, fill, false, noded, certify, |rings, touches, turns, _, verdict| {
+            verdict.is_ok().then(|| Polygons::new(cleanup::conventional_rings(rings, touches, turns)))
         })
     }
 
-    /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings
-    /// and trapezoids to `finish`. `noded`: the operands' edges meet only at vertices (snap
-    /// rounded), so their straight-through vertices are kept (`Bounds::rebuild`).
+    /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings,
+    /// trapezoids and whether its rounding is certified to `finish`. `noded`: the operands' edges
+    /// meet only at vertices (snap rounded), so their straight-through vertices are kept
+    /// (`Bounds::rebuild`). `certify`: rounding is certified (else the certificate holds), and the
+    /// sweep stops early where it cannot be.
     #[allow(clippy::too_many_arguments)]
     fn sweep<T>(
         sweep: Sweep,
@@ -340,23 +320,27 @@ impl Vatti {
         fill: FillRule,
         trapezoids: bool,
         noded: bool,
-        finish: impl FnOnce(&RawRings, &mut Touches, &mut Turns, Vec<Trapezoid>) -> T,
+        certify: bool,
+        finish: impl FnOnce(&RawRings, &mut Touches, &mut Turns, Vec<Trapezoid>, Result<(), &'static str>) -> T,
     ) -> T {
         // The event sweep is taken for large operands, where a hash pass over the edges costs
-        // little beside the sweep and layers that tile the plane are common.
-        let (subject, clip) = match sweep {
-            Sweep::Events => (cancel_opposite_edges(subject), cancel_opposite_edges(clip)),
-            Sweep::Scanbeam => (Cow::Borrowed(subject), Cow::Borrowed(clip)),
+        // little beside the sweep and layers that tile the plane are common; and a certified
+        // sweep would fail where an edge crosses such a pair (two crossings at one point).
+        let (subject, clip) = if sweep == Sweep::Events || certify {
+            (cancel_opposite_edges(subject), cancel_opposite_edges(clip))
+        } else {
+            (Cow::Borrowed(subject), Cow::Borrowed(clip))
         };
         Scratch::with(|scratch| {
             scratch.bounds.rebuild(&subject, &clip, noded);
             let buffers = std::mem::take(&mut scratch.sweep);
-            let mut line = SweepLine::new(sweep, &scratch.bounds, Rules::new(op, fill), trapezoids, buffers);
+            let mut line = SweepLine::new(sweep, &scratch.bounds, Rules::new(op, fill), trapezoids, certify, buffers);
             line.run();
+            let verdict = line.cert.verdict();
             line.out.rings_into(&mut scratch.raw);
             let traps = line.traps.take().unwrap_or_default();
             scratch.sweep = line.into_buffers();
-            finish(&scratch.raw, &mut scratch.touches, &mut scratch.turns, traps)
+            finish(&scratch.raw, &mut scratch.touches, &mut scratch.turns, traps, verdict)
         })
     }
 }
@@ -421,7 +405,7 @@ fn trapezoids_planned(
 ) -> Vec<Trapezoid> {
     let (a, b, op) = reduced(plan.route, subject, clip, prepared, op, fill);
     let sweep = plan.sweep_for(edge_count(&a) + edge_count(&b));
-    Vatti::sweep(sweep, &a, &b, op, fill, true, false, |_, _, _, traps| traps)
+    Vatti::sweep(sweep, &a, &b, op, fill, true, false, false, |_, _, _, traps, _| traps)
 }
 
 impl PolygonClipper for Vatti {

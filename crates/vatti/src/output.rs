@@ -41,15 +41,6 @@ pub(crate) struct OutRec {
 pub(crate) struct OutputBuilder {
     pts: Vec<OutPt>,
     recs: Vec<OutRec>,
-    /// True when a point went into no chain of an edge it lies near but not on (the sweep's
-    /// `node_neighbours`): rounded output edges along that edge may then pass through the point
-    /// exactly, so the clean-up splits every edge at the points on it, not only horizontals.
-    pub near_miss: bool,
-    /// Crossings at computed points taken one after another within
-    /// `sweep::NEAR_CROSSINGS_ULPS` ulps of each other (several edges through one point that f64
-    /// cannot hold): where the output's chains do not all meet at one of them, its edges may
-    /// cross there with no other sign, so `form_check::crossing_near` looks there.
-    pub near_crossings: Vec<Point>,
 }
 
 impl OutputBuilder {
@@ -58,8 +49,6 @@ impl OutputBuilder {
         self.pts.clear();
         self.recs.clear();
         self.pts.reserve(n);
-        self.near_miss = false;
-        self.near_crossings.clear();
     }
 
     /// Bytes the buffers hold (their capacity).
@@ -134,8 +123,6 @@ impl OutputBuilder {
     /// points' emission order, into `raw` (emptied first, its buffers kept).
     pub(crate) fn rings_into(&self, raw: &mut RawRings) {
         raw.clear();
-        raw.near_miss = self.near_miss;
-        raw.near_crossings.extend_from_slice(&self.near_crossings);
         raw.stamps = self.pts.len();
         raw.points.reserve(self.pts.len());
         raw.emitted.reserve(self.pts.len());

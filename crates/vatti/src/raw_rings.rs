@@ -15,11 +15,6 @@ pub(crate) struct RawRings {
     pub emitted: Vec<u32>,
     /// One past the largest emission stamp there may be.
     pub stamps: usize,
-    /// The sweep's [`crate::output::OutputBuilder::near_miss`]: every edge is split at the
-    /// points on it.
-    pub near_miss: bool,
-    /// The sweep's [`crate::output::OutputBuilder::near_crossings`].
-    pub near_crossings: Vec<Point>,
 }
 
 impl RawRings {
@@ -29,8 +24,6 @@ impl RawRings {
         self.ends.clear();
         self.emitted.clear();
         self.stamps = 0;
-        self.near_miss = false;
-        self.near_crossings.clear();
     }
 
     /// Number of rings.

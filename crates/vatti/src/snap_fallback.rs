@@ -1,12 +1,12 @@
-//! The one fallback where rounding broke the sweep's output: both operands snap rounded
-//! (`clip_core::snap_round`, after Hobby 1999), then swept once.
+//! The one fallback, where the rounding certificate fails (`rounding_certificate`): both
+//! operands snap rounded (`clip_core::snap_round`, after Hobby 1999), then swept once.
 //!
 //! Snap-rounded edges meet only at shared vertices or coincide, so the sweep of the rounded
 //! operands (which keeps their straight-through vertices: dropping one where another edge
 //! passes would make a crossing again) meets no crossing to round: every output vertex is a vertex of the rounded operands,
 //! and the output's form rests on exact decisions only. The price is a move of every vertex (and
 //! crossing) by at most `s·√2/2`, with `s` the [`pixel_size`], in this fallback only: outputs the
-//! sweep leaves valid are returned as they are.
+//! certificate holds for are returned as the first sweep made them.
 
 use clip_core::{MIN_COORDINATE, Point, Polygons, Ring, snap_round};
 

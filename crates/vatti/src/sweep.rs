@@ -16,13 +16,13 @@ use crate::crossing_queue::{CrossingQueue, PendingCrossing};
 use crate::edge_tops::EdgeTops;
 use crate::intersections::IntersectionTable;
 use crate::output::OutputBuilder;
+use crate::rounding_certificate::RoundingCertificate;
 use crate::scanbeam::{Scanbeams, height, height_key};
 use crate::small_sort::insertion_sorted_by;
 
-/// Crossings at computed points this many ulps of their magnitude apart or closer, taken one
-/// after another, go to `OutputBuilder::near_crossings`: the pairwise crossings of edges through
-/// one point round an ulp or two apart.
-pub(crate) const NEAR_CROSSINGS_ULPS: f64 = 16.0;
+/// The rounding certificate's check of a crossing computed outside its range and clamped onto
+/// an edge too flat for its x there to be within a crossing's error (`Edge::crossing_with`).
+const OFF_FLAT: &str = "a crossing clamped onto a flat edge";
 
 /// Ulps of the largest coordinate of a crossing's edges above a scanline within which the
 /// crossing, computed, may lie below it exactly (`SweepLine::crossed_below`): a crossing's
@@ -74,6 +74,7 @@ pub(crate) struct SweepBuffers {
     maxima: Vec<u32>,
     settle: Vec<u32>,
     slides: Vec<Slide>,
+    cert: RoundingCertificate,
 }
 
 impl SweepBuffers {
@@ -124,11 +125,13 @@ pub(crate) struct SweepLine<'a> {
     pub(crate) rounded_crossing: bool,
     /// The two edges whose crossing is being processed, while `rounded_crossing`: an edge
     /// through their exact crossing joins the chain too (`through_crossing`).
-    crossing_pair: (u32, u32),
-    /// The last crossing taken, for `OutputBuilder::near_crossings`.
-    last_crossing: Point,
+    pub(crate) crossing_pair: (u32, u32),
     /// Crossings taken out of the queue by [`SweepLine::crossed_below`] that wait for their height.
     waiting: Vec<PendingCrossing>,
+    /// Whether rounding left the output's form as the exact arrangement's.
+    pub(crate) cert: RoundingCertificate,
+    /// True while a crossing between scanlines is processed (else points are on the scanline).
+    between: bool,
 }
 
 impl<'a> SweepLine<'a> {
@@ -138,6 +141,7 @@ impl<'a> SweepLine<'a> {
         bounds: &'a Bounds,
         rules: Rules,
         trapezoids: bool,
+        certify: bool,
         buffers: SweepBuffers,
     ) -> SweepLine<'a> {
         let SweepBuffers {
@@ -154,6 +158,7 @@ impl<'a> SweepLine<'a> {
             mut maxima,
             mut settle,
             mut slides,
+            mut cert,
         } = buffers;
         ael.reset(kind == Sweep::Events, 2 * bounds.minima.len());
         if kind == Sweep::Scanbeam {
@@ -191,7 +196,11 @@ impl<'a> SweepLine<'a> {
             rounded_crossing: false,
             crossing_pair: (NONE, NONE),
             waiting: Vec::new(),
-            last_crossing: Point::new(f64::NAN, f64::NAN),
+            cert: {
+                cert.reset(certify && !trapezoids, bounds);
+                cert
+            },
+            between: false,
         }
     }
 
@@ -211,6 +220,7 @@ impl<'a> SweepLine<'a> {
             maxima,
             settle,
             slides,
+            cert,
             ..
         } = self;
         SweepBuffers {
@@ -227,6 +237,7 @@ impl<'a> SweepLine<'a> {
             maxima,
             settle,
             slides,
+            cert,
         }
     }
 
@@ -243,6 +254,10 @@ impl<'a> SweepLine<'a> {
                 for c in self.on_scanline.drain(..) {
                     self.crossings.push(c.left, c.right, c.pt);
                 }
+            }
+            // Its output would be thrown away: the snap-rounded operands are swept instead.
+            if !self.cert.holds() {
+                break;
             }
             let Some(next) = self.next_scanline(y) else { break };
             self.ael.scanline_done();
@@ -307,6 +322,11 @@ impl<'a> SweepLine<'a> {
         let v = m.vertex;
         let vx = self.bounds.vertices[v as usize];
         let p = vx.pt;
+        if self.cert.enabled() {
+            let flat = |q: u32| self.cert.is_flat_segment(p, self.bounds.pt(q));
+            let counts = !flat(vx.prev) || (!m.horizontal && !flat(vx.next));
+            self.cert.on_scanline(p, counts);
+        }
         let backward = self.new_edge(v, vx.prev, m.kind, false);
         let (fwd_from, fwd_to) = if m.horizontal {
             let u = vx.next;
@@ -343,6 +363,11 @@ impl<'a> SweepLine<'a> {
         }
         if m.horizontal {
             let to = self.bounds.pt(fwd_from);
+            if self.cert.enabled() {
+                let counts = !self.cert.is_flat_segment(to, self.bounds.pt(fwd_to));
+                self.cert.horizontal(p, to);
+                self.cert.on_scanline(to, counts);
+            }
             self.slide(Slide { edge: forward, from_x: p.x, to_x: to.x, max_vertex: NONE }, p.y);
             self.ael.get_mut(forward).moving = false;
             self.add_point(forward, to);
@@ -396,6 +421,9 @@ impl<'a> SweepLine<'a> {
             }
         }
         for &id in &ending {
+            if self.cert.enabled() {
+                self.certify_top(id);
+            }
             let e = self.ael.get_mut(id);
             e.curr_x = e.top.x;
             e.curr_y = y;
@@ -500,9 +528,12 @@ impl<'a> SweepLine<'a> {
             // The crossings are at the other edges' x on this scanline: rounded, unless exact.
             let x = self.ael.x_on(k, y);
             let (q, rounded) = self.ael.get(k).passed_at(x, y, lo, hi, [from_x, to_x]);
+            self.certify_passed(k, x, q);
             self.rounded_crossing = rounded;
+            self.crossing_pair = (id, k);
             self.cross(if right { id } else { k }, q);
             self.rounded_crossing = false;
+            self.crossing_pair = (NONE, NONE);
         }
         if self.ael.next(id) == partner {
             self.end_pair(id, p);
@@ -646,7 +677,10 @@ impl<'a> SweepLine<'a> {
         let mut y_prev = yb;
         match self.kind {
             Sweep::Scanbeam => {
-                self.table.build(&mut self.ael, yb, yt);
+                self.table.build(&mut self.ael, yb, yt, self.cert.max_error());
+                if self.table.off_flat {
+                    self.cert.fail(OFF_FLAT);
+                }
                 let mut table = std::mem::take(&mut self.table.table);
                 for i in 0..table.len() {
                     if self.ael.next(table[i].left) != table[i].right {
@@ -681,7 +715,11 @@ impl<'a> SweepLine<'a> {
                     }
                     let Some(c) = self.crossed_below(yt) else { break };
                     let (el, er) = (self.ael.get(c.left), self.ael.get(c.right));
-                    let p = el.crossing_with(er, yb, yt, [el.x_at(yb), el.x_at(yt), er.x_at(yb), er.x_at(yt)]);
+                    let xs = [el.x_at(yb), el.x_at(yt), er.x_at(yb), er.x_at(yt)];
+                    let (p, off_flat) = el.crossing_with(er, yb, yt, xs, self.cert.max_error());
+                    if off_flat {
+                        self.cert.fail(OFF_FLAT);
+                    }
                     self.crossing(c.left, p, &mut y_prev);
                     self.test_new_pairs(yb);
                 }
@@ -749,33 +787,18 @@ impl<'a> SweepLine<'a> {
             self.emit_slab(*y_prev, p.y);
             *y_prev = p.y;
         }
-        let (q, reach) = (self.last_crossing, NEAR_CROSSINGS_ULPS * f64::EPSILON * p.x.abs().max(p.y.abs()));
-        self.last_crossing = p;
-        if (p.x - q.x).abs() <= reach && (p.y - q.y).abs() <= reach {
-            self.near_crossing(left, p, q);
+        let right = self.ael.next(left);
+        if self.cert.enabled() {
+            let (a, b) = (self.ael.get(left).segment(), self.ael.get(right).segment());
+            self.cert.between_scanlines(p, a, b);
         }
         self.rounded_crossing = true;
-        self.crossing_pair = (left, self.ael.next(left));
+        self.between = true;
+        self.crossing_pair = (left, right);
         self.cross(left, p);
         self.rounded_crossing = false;
+        self.between = false;
         self.crossing_pair = (NONE, NONE);
-    }
-
-    /// Notes crossing `p` of `left` and its right neighbour, taken right after the crossing `q`
-    /// at or within `NEAR_CROSSINGS_ULPS` of it, in `OutputBuilder::near_crossings` unless `p`
-    /// lies exactly on both edges (one of their ends, or a crossing f64 holds: grids): then the
-    /// edges through it all meet at it.
-    #[cold]
-    #[inline(never)]
-    fn near_crossing(&mut self, left: u32, p: Point, q: Point) {
-        let right = self.ael.next(left);
-        let on = |id: u32| {
-            let e = self.ael.get(id);
-            p == e.bot || p == e.top || e.side_of(p) == Orientation::Collinear
-        };
-        if !(on(left) && on(right)) {
-            self.out.near_crossings.extend([q, p]);
-        }
     }
 
     /// Tests every pair of edges that became adjacent since the last test, queueing the
@@ -802,7 +825,11 @@ impl<'a> SweepLine<'a> {
             return;
         }
         let yt = el.top.y.min(er.top.y);
-        let pt = el.crossing_with(er, y, yt, [el.x_at(y), el.x_at(yt), er.x_at(y), er.x_at(yt)]);
+        let xs = [el.x_at(y), el.x_at(yt), er.x_at(y), er.x_at(yt)];
+        let (pt, off_flat) = el.crossing_with(er, y, yt, xs, self.cert.max_error());
+        if off_flat {
+            self.cert.fail(OFF_FLAT);
+        }
         self.crossings.push(l, r, pt);
     }
 
@@ -872,10 +899,85 @@ impl<'a> SweepLine<'a> {
         while k != NONE && self.node_neighbour(a, b, k, p, rounded) {
             k = self.ael.prev(k);
         }
+        if rounded {
+            self.cert.rounded_output();
+        }
+        if self.cert.enabled() {
+            self.certify_flats(p);
+            self.certify_beside(k, p, false);
+        }
         let mut k = self.ael.next(hi);
         while k != NONE && self.node_neighbour(a, b, k, p, rounded) {
             k = self.ael.next(k);
         }
+        if self.cert.enabled() {
+            self.certify_beside(k, p, true);
+        }
+    }
+
+    /// The rounding certificate's test of output point `p` against `k`, the nearest edge on one
+    /// side (`rightwards` or left) that does not pass through it, or `NONE`
+    /// ([`crate::rounding_certificate`]). Between scanlines `k` must be clear of `p`; on a
+    /// scanline, the nearest edge spanning it beyond `k` (past edges ending or starting there)
+    /// must be clear in x.
+    #[cold]
+    #[inline(never)]
+    fn certify_beside(&mut self, mut k: u32, p: Point, rightwards: bool) {
+        while k != NONE {
+            let e = self.ael.get(k);
+            // Flat edges are checked on their own list; on a scanline, edges with an end on it
+            // are apart from the point along it.
+            let skip = e.moving || self.cert.is_flat(e) || (!self.between && (e.bot.y == p.y || e.top.y <= p.y));
+            if !skip {
+                let e = e.clone();
+                self.cert.clear_of(p, &e);
+                return;
+            }
+            k = if rightwards { self.ael.next(k) } else { self.ael.prev(k) };
+        }
+    }
+
+    /// The rounding certificate's record of edge `k` passed at `p` on the scanline by a slide,
+    /// where its x there was computed as `x`: where that was clamped into the slide's part still
+    /// to pass, `k` runs within rounding of the point the slide passed last (or its end), and the
+    /// point `k` gets is not on it.
+    #[inline]
+    pub(crate) fn certify_passed(&mut self, k: u32, x: f64, p: Point) {
+        let counts = !self.cert.is_flat(self.ael.get(k));
+        self.cert.on_scanline(p, counts);
+        if p.x != x && !self.ael.get(k).moving {
+            self.cert.rounded_output();
+            self.cert.fail("a slide passing an edge within rounding of its last point");
+        }
+    }
+
+    /// The rounding certificate's record of the top of edge `id`, ending on this scanline: an
+    /// input vertex, and the horizontal edge and vertex after it where the bound runs on along
+    /// the scanline.
+    #[cold]
+    #[inline(never)]
+    fn certify_top(&mut self, id: u32) {
+        let e = self.ael.get(id);
+        let (t, forward, tp) = (e.top_vertex, e.forward, e.top);
+        let u = self.bounds.along(t, forward);
+        let up = self.bounds.pt(u);
+        let next_counts = up.y > tp.y && !self.cert.is_flat_segment(tp, up);
+        let counts = !self.cert.is_flat(self.ael.get(id)) || next_counts;
+        self.cert.on_scanline(tp, counts);
+        if up.y == tp.y {
+            self.cert.horizontal(tp, up);
+            let w = self.bounds.pt(self.bounds.along(u, forward));
+            self.cert.on_scanline(up, w.y > up.y && !self.cert.is_flat_segment(up, w));
+        }
+    }
+
+    /// The rounding certificate's test of output point `p` against the flat edges near it.
+    #[cold]
+    #[inline(never)]
+    fn certify_flats(&mut self, p: Point) {
+        let (a, b) = self.crossing_pair;
+        let pair = [a, b].map(|id| (id != NONE).then(|| self.ael.get(id).segment()));
+        self.cert.clear_of_flats(p, pair);
     }
 
     /// [`SweepLine::node_neighbours`] for active edge `k`: gives it `p` if it passes through it
@@ -904,8 +1006,10 @@ impl<'a> SweepLine<'a> {
             || (also != id && self.coincident(also, k))
             || (rounded && self.through_crossing(k));
         if !near || !on {
-            self.out.near_miss |= near && !rounded;
             return false;
+        }
+        if rounded && self.cert.enabled() && k != self.crossing_pair.0 && k != self.crossing_pair.1 {
+            self.cert.fail("an edge within rounding of a rounded point");
         }
         if e.outrec != NONE && p != e.bot && p != e.top {
             let left = self.is_left(k);
@@ -1081,10 +1185,11 @@ mod tests {
             for sweep in [Sweep::Scanbeam, Sweep::Events] {
                 for op in [BoolOp::Intersection, BoolOp::Union, BoolOp::Difference] {
                     for fill in [FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative] {
-                        let touched = Vatti::sweep(sweep, &a, &b, op, fill, false, false, |raw, touches, _, _| {
-                            touches.find(raw);
-                            touches.touched.contains(&true)
-                        });
+                        let touched =
+                            Vatti::sweep(sweep, &a, &b, op, fill, false, false, false, |raw, touches, _, _, _| {
+                                touches.find(raw);
+                                touches.touched.contains(&true)
+                            });
                         assert!(!touched, "{a:?} {op:?} {b:?}, {fill:?}, {sweep:?}: raw rings touch");
                     }
                 }

@@ -112,10 +112,10 @@ fn assert_passes_both(subject: &Polygons, clip: &Polygons) {
 /// `verify --cases 20000`, case 449, xor, non-zero, shrunk: three edges pass through
 /// (13⅓, 16⅚), which f64 cannot hold. All three pairwise crossings round to one point, 3e-14 off
 /// the flattest edge in x (twice the rounding allowance), which passed it without a vertex there,
-/// and a ring crossed itself at it. Floating-point inputs are checked near such crossings
-/// (`form_check::crossing_near`); on a grid as coarse as this the output is not checked
-/// (`form_check::rounding_is_harmless`), and the sweep gives the point to every edge through the
-/// exact crossing (`predicates::through_crossing`).
+/// and a ring crossed itself at it. On floating-point inputs such crossings fail the rounding
+/// certificate (events within its box); on a grid as coarse as this rounding is proven harmless
+/// (`rounding_certificate::rounding_is_harmless`), and the sweep gives the point to every edge
+/// through the exact crossing (`predicates::through_crossing`).
 #[test]
 fn three_edges_through_a_crossing_f64_cannot_hold_all_take_its_point() {
     let subject = polygons(&[&[(18.0, 17.0), (16.0, 17.0), (0.0, 16.0)]]);

@@ -32,16 +32,6 @@ pub(crate) fn clockwise_before(v: Point, r: Point, w1: Point, w2: Point) -> bool
     if s1 == 0 || s1 == 2 { orient(v, w1, w2) == Orientation::Clockwise } else { false }
 }
 
-/// True when `a` and `b` (neither at `v`) lie on one ray from `v`. Points on one ray lie on the
-/// same side of `v` in each coordinate: those comparisons rule out most pairs before the
-/// orientation test, which on collinear grid points takes its slow exact path.
-#[inline(always)]
-pub(crate) fn one_way(v: Point, a: Point, b: Point) -> bool {
-    a.x.partial_cmp(&v.x) == b.x.partial_cmp(&v.x)
-        && a.y.partial_cmp(&v.y) == b.y.partial_cmp(&v.y)
-        && sector(v, a, b) == 3
-}
-
 /// Orders directions from `v` to `a` and `b` counter-clockwise from east (the direction of +x
 /// first); `Equal` for one direction.
 #[inline]
@@ -79,12 +69,10 @@ mod tests {
                 if i != 0 && j != 0 {
                     assert_eq!(clockwise_before(v, east, a, b), j < i, "{a:?} {b:?}");
                 }
-                assert_eq!(one_way(v, a, b), i == j);
             }
         }
         // Twice as far is the same way; the opposite direction is half a turn.
         let (e, e2, w) = (Point::new(1.0, 0.0), Point::new(2.0, 0.0), Point::new(-1.0, 0.0));
-        assert!(one_way(v, e, e2));
         assert_eq!(counter_clockwise_from_east(v, e, e2), Ordering::Equal);
         assert_eq!(sector(v, e, w), 1);
         assert_eq!(sector(v, e, e2), 3);

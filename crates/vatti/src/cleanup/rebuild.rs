@@ -1,28 +1,19 @@
 //! The clean-up's general walk: the touched rings taken apart into directed edges (horizontal
-//! edges split at the vertices inside them, every edge after a near miss), opposite edges
+//! edges split at the vertices inside them), opposite edges
 //! cancelled, and the rest walked again, leaving each point by the edge that bounds the same
 //! corner of the region as the way in: the first one clockwise from the way back.
 
 use clip_core::Point;
 
 use super::directions::clockwise_before;
-use super::same_way::{SameWay, has_same_way_edges};
 use super::simple_loops::split_repeats;
 use super::touches::Touches;
 use crate::raw_rings::RawRings;
 
 /// Rebuilds the rings of `rings` marked in `walked` (touched rings, every one with an edge to
 /// split among them, sharing no point with the others) into simple rings, handed to `emit` as
-/// ids of `touches.distinct` and as points (in the order of the edges they start from); returns
-/// whether two of their edges leave or arrive at one point in the same direction, when asked to
-/// `check` (else [`SameWay::None`]).
-pub(crate) fn rebuild(
-    rings: &RawRings,
-    touches: &Touches,
-    walked: &[bool],
-    check: bool,
-    emit: &mut impl FnMut(&[u32], &[Point]),
-) -> SameWay {
+/// points (in the order of the edges they start from).
+pub(crate) fn rebuild(rings: &RawRings, touches: &Touches, walked: &[bool], emit: &mut impl FnMut(&[Point])) {
     let Touches { splits, split_points, ids, distinct: pts, .. } = touches;
     // Every vertex visit in ring order, as point ids, horizontals split at the vertices inside.
     let inside: usize = splits.iter().map(|s| s.inside.len()).sum();
@@ -43,16 +34,14 @@ pub(crate) fn rebuild(
     // The directed edges between them.
     let mut edges: Vec<(u32, u32)> = Vec::with_capacity(visits.len());
     let mut first = 0;
-    for end in &mut ring_ends {
-        for k in first..*end {
-            let (from, to) = (visits[k], visits[if k + 1 == *end { first } else { k + 1 }]);
+    for end in ring_ends {
+        for k in first..end {
+            let (from, to) = (visits[k], visits[if k + 1 == end { first } else { k + 1 }]);
             if from != to {
                 edges.push((from, to));
             }
         }
-        first = *end;
-        // From here on, where the ring's edges end in `edges`.
-        *end = edges.len();
+        first = end;
     }
     drop(visits);
     // Edges by start point (compressed rows, in edge order).
@@ -60,12 +49,7 @@ pub(crate) fn rebuild(
     for &(a, _) in &edges {
         row[a as usize + 1] += 1;
     }
-    // Points left by more than one edge, found while the counts are at hand.
-    let mut shared: Vec<u32> = Vec::with_capacity(pts.len() / 2);
     for v in 0..pts.len() {
-        if row[v + 1] > 1 {
-            shared.push(v as u32);
-        }
         row[v + 1] += row[v];
     }
     let mut outgoing = vec![0u32; edges.len()];
@@ -89,11 +73,6 @@ pub(crate) fn rebuild(
             used[j as usize] = true;
         }
     }
-    let same_way = if check {
-        has_same_way_edges(pts, &shared, &row, &outgoing, &edges, &ring_ends, &used)
-    } else {
-        SameWay::None
-    };
     let mut slot = vec![usize::MAX; pts.len()];
     let mut walk: Vec<u32> = Vec::new();
     let mut stack: Vec<u32> = Vec::new();
@@ -119,10 +98,9 @@ pub(crate) fn rebuild(
         split_repeats(&walk, &mut slot, &mut stack, &mut |ring: &[u32]| {
             points.clear();
             points.extend(ring.iter().map(|&i| pts[i as usize]));
-            emit(ring, &points);
+            emit(&points);
         });
     }
-    same_way
 }
 
 /// Of the edges leaving `v`, the first met turning clockwise from the direction back to `u`.

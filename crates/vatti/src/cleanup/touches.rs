@@ -7,17 +7,11 @@
 //! and every vertex inside it: only those short runs are compared, with no global sort. Where
 //! crossings at nearly one height were taken out of y order, every point is sorted instead.
 //!
-//! Slanted edges are split at the vertices on them only when the sweep reported a near miss
-//! (`RawRings::near_miss`: an exact point within 1e-9 of an edge it is not on). Output edges run
-//! between rounded points, off their input edge's line by rounding, and far from the origin such
-//! an edge can pass exactly through a vertex that is not on the input edge (points on y = x near
-//! 1e141 inside an edge rounded onto that line): a ring then overlaps itself or another along
-//! part of the edge. Without a near miss a vertex on an output edge is on its input edge, and the
-//! sweep put it into the edge's chain. The split looks at every point in an edge's height range,
-//! so it is skipped where that would exceed `SLANTED_SCAN_BUDGET` points in all.
+//! Slanted edges are not split: a vertex on a slanted output edge is on its input edge (the
+//! output has the exact arrangement's form, `rounding_certificate`), and the sweep put it into
+//! the edge's chain.
 
 use clip_core::Point;
-use clip_core::predicates::{Orientation, orient};
 
 use crate::bounds::NONE;
 use crate::raw_rings::RawRings;
@@ -68,18 +62,6 @@ impl Touches {
         if !self.by_emission_order(raw) {
             self.by_sorting(raw);
         }
-        if raw.near_miss {
-            self.points_by_id(raw);
-            self.splits = split_edges(
-                raw,
-                &self.ring,
-                &mut self.touched,
-                &self.ids,
-                true,
-                (&mut self.split_points, &mut self.inside_rings),
-                &self.sorted,
-            );
-        }
     }
 
     /// Every point into `sorted` as (y, x, index), by its distinct point's id, so by y then x
@@ -118,11 +100,6 @@ impl Touches {
         self.shared.clear();
         self.shared_ends.clear();
         ring_of(raw, &mut self.ring);
-    }
-
-    /// The distinct points ordered by y, then x.
-    pub(crate) fn distinct_by_y(&self) -> &[Point] {
-        &self.distinct
     }
 
     /// The ring of point `k` (after [`Touches::find`]).
@@ -334,26 +311,14 @@ impl Touches {
             t.name_point(raw, &ring, same.iter().map(|&(_, k)| k));
         }
         drop(keyed);
-        // With a near miss `find` splits every edge next, which replaces these.
-        if !raw.near_miss && has_horizontal(raw) {
+        if has_horizontal(raw) {
             t.points_by_id(raw);
-            t.splits = split_edges(
-                raw,
-                &ring,
-                &mut t.touched,
-                &t.ids,
-                false,
-                (&mut t.split_points, &mut t.inside_rings),
-                &t.sorted,
-            );
+            t.splits =
+                split_edges(raw, &ring, &mut t.touched, &t.ids, (&mut t.split_points, &mut t.inside_rings), &t.sorted);
         }
         t.ring = ring;
     }
 }
-
-/// Points that splitting slanted edges may look at, in all, beyond which it is skipped (a known
-/// limit: outputs of thousands of long edges with a near miss keep slanted overlaps unsplit).
-const SLANTED_SCAN_BUDGET: usize = 1 << 22;
 
 /// Whether some ring has a horizontal edge.
 fn has_horizontal(raw: &RawRings) -> bool {
@@ -363,40 +328,19 @@ fn has_horizontal(raw: &RawRings) -> bool {
     })
 }
 
-/// How many points the slanted edges' height ranges hold, in all (`by_y`: the points by y).
-fn slanted_scan_length(raw: &RawRings, by_y: &[(f64, f64, u32)]) -> usize {
-    let mut total = 0usize;
-    for ri in 0..raw.len() {
-        let r = raw.ring(ri);
-        for i in 0..r.len() {
-            let (a, b) = (r[i], r[(i + 1) % r.len()]);
-            if a.y != b.y {
-                let (bottom, top) = (a.y.min(b.y), a.y.max(b.y));
-                total += by_y.partition_point(|&(y, _, _)| y < top) - by_y.partition_point(|&(y, _, _)| y <= bottom);
-            }
-        }
-    }
-    total
-}
-
-/// Every horizontal edge (every edge, with `every_edge`) with vertices strictly inside it, in
-/// ring and edge order, their inside points appended to `points` (emptied first); its ring and
-/// the vertices' rings are marked touched. A vertex is inside a slanted edge when it lies on the
-/// edge's line (exact) between its ends. `by_y`: every point as (y, x, index), by y then x.
+/// Every horizontal edge with vertices strictly inside it, in ring and edge order, their inside
+/// points appended to `points` (emptied first); its ring and the vertices' rings are marked
+/// touched. `by_y`: every point as (y, x, index), by y then x.
 fn split_edges(
     raw: &RawRings,
     ring: &[u32],
     touched: &mut [bool],
     ids: &[u32],
-    every_edge: bool,
     (points, inside_rings): (&mut Vec<u32>, &mut Vec<u32>),
     by_y: &[(f64, f64, u32)],
 ) -> Vec<SplitEdge> {
     points.clear();
     inside_rings.clear();
-    // Slanted edges look at every point in their height range: quadratic at worst (long edges
-    // over many points), so they are split only while that stays within the budget.
-    let every_edge = every_edge && slanted_scan_length(raw, by_y) <= SLANTED_SCAN_BUDGET;
     let mut splits = Vec::new();
     let mut inside = Vec::new();
     for ri in 0..raw.len() {
@@ -412,17 +356,6 @@ fn split_edges(
                     inside.push(k);
                 }
                 if a.x > b.x {
-                    inside.reverse();
-                }
-            } else if every_edge {
-                let (bottom, top) = (a.y.min(b.y), a.y.max(b.y));
-                let start = by_y.partition_point(|&(y, _, _)| y <= bottom);
-                for &(_, x, k) in by_y[start..].iter().take_while(|&&(y, _, _)| y < top) {
-                    if lo <= x && x <= hi && orient(a, b, raw.points[k as usize]) == Orientation::Collinear {
-                        inside.push(k);
-                    }
-                }
-                if a.y > b.y {
                     inside.reverse();
                 }
             }
@@ -492,28 +425,6 @@ mod tests {
         let t = both(vec![bow, corner]);
         assert_eq!(t.touched, vec![true, true]);
         assert!(t.splits.is_empty());
-    }
-
-    #[test]
-    fn after_a_near_miss_every_edge_splits_at_the_vertices_on_it() {
-        // A triangle's vertex (2,2) lies exactly inside the other ring's slanted edge (0,0)-(4,4).
-        let slanted = ring(&[(0.0, 0.0), (4.0, 4.0), (0.0, 4.0)]);
-        let touching = ring(&[(2.0, 2.0), (3.0, 1.0), (3.0, 2.0)]);
-        let mut raw = RawRings::from_rings(vec![slanted, touching]);
-        let mut t = Touches::default();
-        t.find(&raw);
-        assert_eq!(t.touched, vec![false, false]);
-        raw.near_miss = true;
-        t.find(&raw);
-        assert_eq!(t.touched, vec![true, true]);
-        let inside: Vec<(usize, usize, Vec<Point>)> = t
-            .splits
-            .iter()
-            .map(|s| {
-                (s.ring, s.edge, t.split_points[s.inside.clone()].iter().map(|&i| t.distinct[i as usize]).collect())
-            })
-            .collect();
-        assert_eq!(inside, vec![(0, 0, vec![Point::new(2.0, 2.0)])]);
     }
 
     #[test]

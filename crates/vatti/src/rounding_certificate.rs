@@ -1,0 +1,637 @@
+//! Proofs that rounding left the sweep's output with the exact arrangement's form: for operands
+//! on a coarse grid, before the sweep ([`rounding_is_harmless`]); for any others, built as the
+//! sweep goes ([`RoundingCertificate`]): every output point far from every edge and event it is
+//! not on.
+//!
+//! The sweep decides everything on the input segments exactly, but crossing points are rounded
+//! to f64 (a slide's crossings in x only). Each output vertex then sits within `r` of its exact
+//! place in each coordinate ([`MOVE_ULPS`]). Moving vertices by at most that changes no
+//! incidence, order or side as long as every output vertex stays farther than `2√2·r` from every
+//! output edge it is not on: a vertex must touch an edge before two edges can cross, and an edge
+//! moves by no more than its ends. The certificate holds when the sweep met nothing within the
+//! clearance `δ` ([`CLEARANCE_ULPS`]) of the points it output. It is checked locally, in O(1) per
+//! event, by three tests:
+//!
+//! 1. **Events apart.** No two events (input vertices, crossings, a slide's crossings) lie
+//!    within the box `2D × 2H` of each other (`H = δ + 2r`, `D` a thousandth of the operands'
+//!    largest coordinate), unless both lie on one scanline (exactly: vertices, and a slide's
+//!    crossings, which move along it), or both are crossings of one edge.
+//! 2. **Flat edges on their own.** An edge rising less than `4H/D` per unit of x (and not
+//!    horizontal) is checked against every output point near it, on a list of its own. Any other
+//!    edge within `δ` of a point then crosses the point's box from bottom to top, with no end in
+//!    it (test 1), and at the point's height lies within `D/4 + δ` of it in x.
+//! 3. **Neighbours clear.** At each output point `p`, the nearest edge on either side in the
+//!    table that does not pass through `p` and is not flat is farther than `δ` from it; on a
+//!    scanline, the nearest edge *spanning* it, past edges that end or start on it.
+//!
+//! Why 3 suffices: let `e` pass within `δ` of `p` at `q`, and `k` be the nearest neighbour on
+//! `e`'s side. Inside the box no two edges cross and none ends (1; crossings of `p`'s own edges do
+//! not come between `k` and `e`), and `k` and `e` span it (2), so `k` lies between `p`'s edges and
+//! `e` at every height there; the segment `pq` runs from one side of `k` to the other inside the
+//! box, so it meets `k`, which is then within `δ`. On a scanline, edges that end or start on it
+//! stay on one side of it but for that end, which is a point of the scanline; a point of the
+//! scanline moves along it, so it cannot reach them.
+//!
+//! Where the certificate fails and some output point was rounded, the caller sweeps the
+//! snap-rounded operands instead (`snap_fallback`), whose output is valid by construction.
+//! Property used: none of the input's shape. It fails where features come within `δ` of each
+//! other: nearly coincident edges, vertices a few ulps off an edge, three edges through a
+//! crossing f64 cannot hold; and where events lie within `H` in height and `D` in x.
+
+use clip_core::predicates::{on_coarse_grid, on_segment};
+use clip_core::{Point, Polygons, Segment};
+
+use crate::active::{Edge, X_AT_ERROR};
+use crate::bounds::Bounds;
+
+/// The largest error accepted for a crossing's quotient, in ulps (2^-52) of the operands'
+/// largest coordinate: where a crossing's error bound is larger (edges at a small angle), it is
+/// recomputed from accurate determinants (`Edge::crossing_with`; those err by under 17 ulps).
+pub(crate) const CROSSING_ERROR_ULPS: f64 = 32.0;
+
+/// The most an output point moves from its exact place in each coordinate, in ulps of the
+/// largest coordinate: a crossing's error, plus as much again and an edge's x on a scanline (6
+/// ulps) where it was clamped into its range and taken on the steeper edge, rising at least one
+/// per unit of x (else the certificate fails), plus 6 for x clamped between the edges' ends.
+const MOVE_ULPS: f64 = 2.0 * CROSSING_ERROR_ULPS + 12.0;
+
+/// The clearance `δ`, in ulps of the largest coordinate: over twice the largest move of a point
+/// (`√2` times [`MOVE_ULPS`]), so a point stays clear of edges that moved by as much.
+pub(crate) const CLEARANCE_ULPS: f64 = 256.0;
+
+const _: () = assert!(CLEARANCE_ULPS > 2.0 * 1.4143 * MOVE_ULPS);
+
+/// `D` as a fraction of the largest coordinate: edges rising less than `4H/D` per unit of x are
+/// flat, and two events within `D/2 + 2δ` in x of each other (and `H` in height) fail. Smaller
+/// makes more edges flat (each checked against the output points near it), larger more events
+/// fail.
+const REACH: f64 = 1.0 / 65536.0;
+
+/// Comparisons of one event with earlier ones within reach in height before the certificate
+/// gives up (fails): events piled near one height are where it fails anyway.
+const COMPARISONS: usize = 64;
+
+/// Binary digits up to which integer coordinates, on any power-of-two scale, make the sweep's
+/// rounding harmless ([`rounding_is_harmless`]; the bounds there hold up to 9).
+const HARMLESS_DIGITS: u32 = 9;
+
+/// True when rounding cannot change the form of the sweep's output, so it needs no certificate:
+/// every coordinate of `subject` and `clip` is an integer below 2^m (m = [`HARMLESS_DIGITS`]) in
+/// units of one power of two (`predicates::on_coarse_grid`). In those units:
+/// - every product in a crossing's computation is exact, so a crossing is the exact one rounded
+///   once, and an edge's x on a scanline twice: under 2^(m-51) off;
+/// - a crossing is a fraction with a denominator below 2^(2m+3), so two distinct crossing heights
+///   differ by at least 2^-(4m+6), over an ulp: the sweep takes its events in their exact order,
+///   and its decisions, which are exact predicates, are those of exact arithmetic;
+/// - a crossing or vertex off a segment's line lies at least 2^-(3m+5) from it, and two distinct
+///   points at least 2^-(4m+6) apart: rounding moves no point onto, across or within rounding of
+///   an edge or point it is not on, so the rounded output meets itself exactly where the exact
+///   one does.
+///
+/// Such inputs (several edges through one crossing, rows of vertices) are where the certificate
+/// would fail. Property used: coordinates of few binary digits (grids, pixel and tile
+/// coordinates).
+pub(crate) fn rounding_is_harmless(subject: &Polygons, clip: &Polygons) -> bool {
+    fn coarse<'a>(points: impl Iterator<Item = &'a Point>) -> bool {
+        on_coarse_grid(points.flat_map(|q| [q.x, q.y]), HARMLESS_DIGITS)
+    }
+    let points = || [subject, clip].into_iter().flat_map(|p| p.rings.iter().flat_map(|r| &r.points));
+    // Every 61st point first: an input off the grid, or spanning more digits, mostly shows it
+    // there, before a pass over every point (integer spirals reach their far coordinates late).
+    coarse(points().step_by(61)) && coarse(points())
+}
+
+/// The certificate's state over one sweep.
+#[derive(Debug, Default)]
+pub(crate) struct RoundingCertificate {
+    /// False for sweeps whose rounding is harmless anyway (coarse grids, snap-rounded operands).
+    enabled: bool,
+    /// The largest accepted error of a crossing's quotient, and `r`: the most a point moves.
+    max_error: f64,
+    moves: f64,
+    /// `δ`: how far from an output point every edge it is not on must be.
+    clearance: f64,
+    /// `H = δ + 2r` and `W = D/2 + 2δ`: the box within which two events may not lie (heights err
+    /// by `r`), and the least rise per unit of x of an edge that is not flat, `4H/D`.
+    height: f64,
+    reach: f64,
+    least_rise: f64,
+    /// Edges that rise less than `4H/D` per unit of x (and are not horizontal) are checked
+    /// against every output point near them instead: they can pass near a point far from it
+    /// in the table. Sorted by their lower end; those from `next_flat` on are not reached yet.
+    flats: Vec<Segment>,
+    next_flat: usize,
+    /// Flat edges whose span, grown by `δ`, the sweep has reached.
+    near_flats: Vec<Segment>,
+    /// The highest event height so far: events come in order of height, within their rounding.
+    max_y: f64,
+    /// Events within reach in height of the sweep, oldest first from `first`, but those of the
+    /// current scanline.
+    recent: Vec<Event>,
+    first: usize,
+    /// The current scanline's height and events.
+    row_y: f64,
+    row: Vec<Event>,
+    /// True once some check failed, and the first one that did.
+    failed: bool,
+    failure: Option<&'static str>,
+    /// True once a rounded point was output.
+    rounded: bool,
+}
+
+impl RoundingCertificate {
+    /// Clears the certificate for a sweep of `bounds` (the buffers are kept); `enabled` false
+    /// checks nothing, and the certificate always holds.
+    pub(crate) fn reset(&mut self, enabled: bool, bounds: &Bounds) {
+        self.enabled = enabled;
+        (self.failed, self.failure) = (false, None);
+        self.rounded = false;
+        self.flats.clear();
+        self.near_flats.clear();
+        self.recent.clear();
+        self.row.clear();
+        (self.next_flat, self.first, self.max_y, self.row_y) = (0, 0, f64::NEG_INFINITY, f64::NAN);
+        self.max_error = f64::INFINITY;
+        if !enabled {
+            return;
+        }
+        let magnitude = bounds.vertices.iter().fold(0.0f64, |m, v| m.max(v.pt.x.abs()).max(v.pt.y.abs()));
+        let unit = f64::EPSILON * magnitude.max(f64::MIN_POSITIVE);
+        self.max_error = CROSSING_ERROR_ULPS * unit;
+        self.moves = MOVE_ULPS * unit;
+        self.clearance = CLEARANCE_ULPS * unit;
+        self.height = self.clearance + 2.0 * self.moves;
+        let d = REACH * magnitude;
+        self.reach = 0.5 * d + 2.0 * self.clearance;
+        self.least_rise = 4.0 * self.height / d;
+        let least_rise = self.least_rise;
+        for v in &bounds.vertices {
+            let w = bounds.vertices[v.next as usize].pt;
+            let (dx, dy) = ((w.x - v.pt.x).abs(), (w.y - v.pt.y).abs());
+            if dy != 0.0 && !at_least(dy, least_rise * dx) {
+                self.flats.push(if v.pt.y < w.y { Segment::new(v.pt, w) } else { Segment::new(w, v.pt) });
+            }
+        }
+        self.flats.sort_unstable_by(|a, b| a.a.y.total_cmp(&b.a.y));
+    }
+
+    /// True when the output's form is the exact arrangement's: nothing rounded was output, or
+    /// every check held.
+    pub(crate) fn holds(&self) -> bool {
+        !(self.failed && self.rounded)
+    }
+
+    /// `Ok` where the certificate [holds](RoundingCertificate::holds), else the first check that
+    /// failed.
+    pub(crate) fn verdict(&self) -> Result<(), &'static str> {
+        if self.holds() { Ok(()) } else { Err(self.failure.unwrap_or("a check")) }
+    }
+
+    /// True while checks are made.
+    #[inline]
+    pub(crate) fn enabled(&self) -> bool {
+        self.enabled && !self.failed
+    }
+
+    /// The largest crossing error accepted, or infinity when nothing is checked (a crossing is
+    /// then computed as it always is: exactly rounded on coarse grids).
+    #[inline]
+    pub(crate) fn max_error(&self) -> f64 {
+        self.max_error
+    }
+
+    /// True when edge `e` rises less than the flat edges' limit: such a neighbour is checked
+    /// against the flat list, not taken as the nearest edge spanning the point's box.
+    #[inline]
+    pub(crate) fn is_flat(&self, e: &Edge) -> bool {
+        self.is_flat_segment(e.bot, e.top)
+    }
+
+    /// [`RoundingCertificate::is_flat`] for the edge from `a` to `b` (horizontal ones too).
+    #[inline]
+    pub(crate) fn is_flat_segment(&self, a: Point, b: Point) -> bool {
+        (b.y - a.y).abs() < self.least_rise * (b.x - a.x).abs()
+    }
+
+    /// An event on scanline `p.y`: an input vertex (which `counts` unless all its edges are
+    /// flat or horizontal), or where a slide passes an edge (which counts unless the edge is
+    /// flat).
+    #[inline]
+    pub(crate) fn on_scanline(&mut self, p: Point, counts: bool) {
+        self.scanline_event(Event { p, half_width: 0.0, counts, edges: None });
+    }
+
+    /// A horizontal edge from `a` to `b` on scanline `a.y`.
+    #[inline]
+    pub(crate) fn horizontal(&mut self, a: Point, b: Point) {
+        let (p, half_width) = (Point::new(0.5 * (a.x + b.x), a.y), 0.5 * (b.x - a.x).abs());
+        self.scanline_event(Event { p, half_width, counts: true, edges: None });
+    }
+
+    fn scanline_event(&mut self, event: Event) {
+        if !self.enabled() {
+            return;
+        }
+        if event.p.y != self.row_y {
+            // The last scanline's events join the others, to be kept while within reach.
+            self.recent.append(&mut self.row);
+            self.row_y = event.p.y;
+        }
+        self.apart(event);
+        self.row.push(event);
+    }
+
+    /// A crossing of `a` and `b` between scanlines at `p`, off its exact place by at most `r`.
+    #[inline]
+    pub(crate) fn between_scanlines(&mut self, p: Point, a: Segment, b: Segment) {
+        if !self.enabled() {
+            return;
+        }
+        let counts = !(self.is_flat_segment(a.a, a.b) || self.is_flat_segment(b.a, b.b));
+        let event = Event { p, half_width: 0.0, counts, edges: Some([a, b]) };
+        self.apart(event);
+        if (p.y - self.row_y).abs() <= self.height {
+            let near = self.row.len() > COMPARISONS || self.row.iter().any(|q| self.in_box(&event, q));
+            if near {
+                self.fail_because("events in a box (a crossing near a scanline event)");
+            }
+        }
+        self.recent.push(event);
+    }
+
+    /// Fails when `e` comes below the highest event so far by more than the rounding of both,
+    /// or lies within the box of an event of another height, dropping those out of reach.
+    #[inline]
+    fn apart(&mut self, e: Event) {
+        if e.p.y < self.max_y - 2.0 * self.moves {
+            self.fail_because("out of order");
+        }
+        self.max_y = self.max_y.max(e.p.y);
+        while self.first < self.recent.len() && self.recent[self.first].p.y < e.p.y - self.height {
+            self.first += 1;
+        }
+        if self.first == self.recent.len() {
+            self.recent.clear();
+            self.first = 0;
+            return;
+        }
+        let recent = &self.recent[self.first..];
+        if recent.len() > COMPARISONS || recent.iter().any(|q| self.in_box(&e, q)) {
+            self.fail_because("events in a box");
+        }
+    }
+
+    /// True when events `e` and `q` lie within each other's box and one of them counts, but for
+    /// two crossings of one edge ([`Event::shares_edge`]).
+    #[inline]
+    fn in_box(&self, e: &Event, q: &Event) -> bool {
+        (e.counts || q.counts)
+            && (q.p.y - e.p.y).abs() <= self.height
+            && (q.p.x - e.p.x).abs() <= self.reach + e.half_width + q.half_width
+            && !e.shares_edge(q)
+    }
+
+    /// A rounded point went into the output.
+    #[inline]
+    pub(crate) fn rounded_output(&mut self) {
+        self.rounded = true;
+    }
+
+    /// A check of the sweep's failed (nothing, where checks are not made).
+    #[inline]
+    pub(crate) fn fail(&mut self, check: &'static str) {
+        if self.enabled {
+            self.fail_because(check);
+        }
+    }
+
+    /// Notes the first failed check.
+    #[cold]
+    fn fail_because(&mut self, check: &'static str) {
+        if !self.failed {
+            self.failure = Some(check);
+        }
+        self.failed = true;
+    }
+
+    /// Records whether output point `p` lies farther than the clearance from the line of edge
+    /// `k`, which spans its height.
+    #[inline]
+    pub(crate) fn clear_of(&mut self, p: Point, k: &Edge) {
+        let d = k.top - k.bot;
+        let off = (p - k.bot).cross(d);
+        // |off| / |d| is the distance to the line, at most the distance to the segment; the
+        // computed values err by a few ulps of the magnitudes, which the slack covers.
+        let reach = self.clearance + self.slack(p, k.magnitude.max);
+        if !at_least(off * off, reach * reach * d.dot(d)) || off == 0.0 {
+            self.fail_because("a neighbour within the clearance");
+        }
+    }
+
+    /// Records whether output point `p` lies farther than the clearance from every flat edge
+    /// near its height, but those it lies on (exactly) and the crossing pair `pair` it is a
+    /// crossing of.
+    #[inline]
+    pub(crate) fn clear_of_flats(&mut self, p: Point, pair: [Option<Segment>; 2]) {
+        while let Some(&f) = self.flats.get(self.next_flat) {
+            if f.a.y > p.y + self.clearance {
+                break;
+            }
+            self.near_flats.push(f);
+            self.next_flat += 1;
+        }
+        if self.near_flats.is_empty() {
+            return;
+        }
+        let reach = self.clearance;
+        self.near_flats.retain(|f| f.b.y >= p.y - reach);
+        if self.near_flats.len() > 16 * COMPARISONS {
+            self.fail_because("too many flat edges near a point");
+            return;
+        }
+        for i in 0..self.near_flats.len() {
+            let f = self.near_flats[i];
+            let (lo, hi) = if f.a.x < f.b.x { (f.a.x, f.b.x) } else { (f.b.x, f.a.x) };
+            if p.x < lo - reach || p.x > hi + reach {
+                continue;
+            }
+            if pair.contains(&Some(f)) || pair.contains(&Some(Segment::new(f.b, f.a))) {
+                continue;
+            }
+            let slack = self.slack(p, f.a.x.abs().max(f.a.y.abs()).max(f.b.x.abs()).max(f.b.y.abs()));
+            if distance_to_segment(p, f) <= self.clearance + slack && !on_segment(p, f) {
+                self.fail_because("a flat edge within the clearance");
+                return;
+            }
+        }
+    }
+
+    /// What the computed distances may err by near `p` and coordinates up to `magnitude`.
+    #[inline]
+    fn slack(&self, p: Point, magnitude: f64) -> f64 {
+        2.0 * X_AT_ERROR * magnitude.max(p.x.abs()).max(p.y.abs())
+    }
+}
+
+/// An event: a crossing of two edges between scanlines, or one on a scanline (an input vertex,
+/// where a slide passes an edge, a horizontal edge).
+#[derive(Clone, Copy, Debug)]
+struct Event {
+    /// Where it is: a horizontal edge's middle.
+    p: Point,
+    /// Half a horizontal edge's length, else 0.
+    half_width: f64,
+    /// False for events only of flat edges: those are checked against the output points near
+    /// them on their own list, and cannot come between a point and an edge that is not flat.
+    counts: bool,
+    /// The crossing's two edges, for a crossing between scanlines.
+    edges: Option<[Segment; 2]>,
+}
+
+impl Event {
+    /// True when both are crossings between scanlines of one edge: neither is then a crossing
+    /// of two edges that the other is not on, nor the end of one, so neither can come between
+    /// the other and an edge near it (see the module's argument).
+    #[inline]
+    fn shares_edge(&self, q: &Event) -> bool {
+        match (self.edges, q.edges) {
+            (Some(a), Some(b)) => a.iter().any(|s| b.contains(s)),
+            _ => false,
+        }
+    }
+}
+
+/// `a >= b`, false where either is NaN (an overflow): every test that uses it then fails safe.
+#[inline]
+fn at_least(a: f64, b: f64) -> bool {
+    a >= b
+}
+
+/// The distance from `p` to segment `s`, computed.
+fn distance_to_segment(p: Point, s: Segment) -> f64 {
+    let d = s.b - s.a;
+    let len2 = d.dot(d);
+    let t = if len2 > 0.0 { ((p - s.a).dot(d) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    let q = Point::new(s.a.x + t * d.x, s.a.y + t * d.y);
+    (p - q).dot(p - q).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use clip_core::{BoolOp, FillRule, Ring, WindowKind};
+    use clip_oracle::polygon::check_valid_output;
+    use clip_testkit::workload::polygon_case;
+
+    use super::*;
+    use crate::{Operands, Sweep, Vatti};
+
+    fn polygon(points: &[(f64, f64)]) -> Polygons {
+        Polygons::from(Ring::new(points.iter().map(|&(x, y)| Point::new(x, y)).collect()))
+    }
+
+    /// The check that fails for `a op b` (`Ok`: the certificate holds), by both sweeps, which
+    /// must agree on whether it holds.
+    fn verdict(a: &Polygons, b: &Polygons, op: BoolOp) -> Result<(), &'static str> {
+        let run = |sweep| Vatti::sweep(sweep, a, b, op, FillRule::NonZero, false, false, true, |_, _, _, _, v| v);
+        let (events, scanbeam) = (run(Sweep::Events), run(Sweep::Scanbeam));
+        assert_eq!(
+            events.is_ok(),
+            scanbeam.is_ok(),
+            "the sweeps disagree on {a:?} {op:?} {b:?}: {events:?} {scanbeam:?}"
+        );
+        events
+    }
+
+    fn certified(a: &Polygons, b: &Polygons, op: BoolOp) -> bool {
+        verdict(a, b, op).is_ok()
+    }
+
+    /// A square [0, 1]² and a triangle crossing its top edge, with its apex `apex`.
+    fn square_and_spike(apex: (f64, f64)) -> (Polygons, Polygons) {
+        let square = polygon(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+        let spike = polygon(&[(0.3, 0.5), (0.45, 0.55), apex]);
+        (square, spike)
+    }
+
+    #[test]
+    fn crossings_far_from_everything_hold() {
+        let (square, spike) = square_and_spike((0.4, 1.7));
+        for op in BoolOp::ALL {
+            assert!(certified(&square, &spike, op), "{op:?}");
+        }
+        // Edges at an angle of 0.02 cross far from everything: the quotient's error bound is
+        // past the accepted one, so the crossing is recomputed accurately, and it holds.
+        let a = polygon(&[(0.0, 0.0), (1.0, 0.01), (0.5, 1.0)]);
+        let b = polygon(&[(0.0, 0.01), (1.0, 0.0), (0.5, -1.0)]);
+        for op in BoolOp::ALL {
+            assert_eq!(verdict(&a, &b, op), Ok(()), "{op:?}");
+        }
+    }
+
+    #[test]
+    fn a_vertex_a_few_ulps_off_an_edge_fails() {
+        // The spike's apex lies 2 ulps above the square's top edge: the two crossings next to it
+        // come within the clearance of the apex and of each other.
+        let above = 1.0 + 2.0 * f64::EPSILON;
+        let (square, spike) = square_and_spike((0.4, above));
+        for op in BoolOp::ALL {
+            assert!(!certified(&square, &spike, op), "{op:?}");
+        }
+        // An apex exactly on the edge rounds nothing near it: no crossing is rounded.
+        let (square, spike) = square_and_spike((0.4, 1.0));
+        assert!(certified(&square, &spike, BoolOp::Union));
+    }
+
+    #[test]
+    fn a_crossing_next_to_an_edge_it_is_not_on_fails() {
+        // Two long edges cross at about (0.5, 0.5); a third passes 1e-14 left of that point.
+        let x = polygon(&[(0.0, 0.0), (1.0, 1.0), (1.0, 0.0), (0.0, 1.0)]);
+        let third = polygon(&[(0.5 - 1e-14, 0.2), (0.5 - 1e-14, 0.8), (0.2, 0.8)]);
+        assert!(!certified(&x, &third, BoolOp::Union));
+        // (Not (0.2, 0.8): in binary it lies 6e-17 off the diagonal x + y = 1, a near miss too.)
+        let far = polygon(&[(0.45, 0.2), (0.45, 0.8), (0.25, 0.7)]);
+        assert_eq!(verdict(&x, &far, BoolOp::Union), Ok(()));
+    }
+
+    #[test]
+    fn a_vertex_near_an_edge_that_spans_its_scanline_fails() {
+        // A triangle's apex 20 ulps left of the square's right side (farther than the sweep's
+        // rounding, nearer than the clearance), its other edges crossing the left side: the
+        // side is the apex's nearest neighbour in the table.
+        let square = polygon(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+        let triangle = |apex: f64| polygon(&[(apex, 0.5), (-0.5, 0.7), (-0.5, 0.2)]);
+        assert_eq!(verdict(&square, &triangle(0.9), BoolOp::Intersection), Ok(()));
+        let near = 1.0 - 20.0 * f64::EPSILON;
+        assert_eq!(verdict(&square, &triangle(near), BoolOp::Intersection), Err("a neighbour within the clearance"));
+    }
+
+    #[test]
+    fn a_nearly_horizontal_edge_is_checked_against_the_points_near_it() {
+        // The square's top runs from (0, 1) to (1, 1 + 1 ulp): it rises under 1e-15 per unit, so
+        // it is checked on its own list. A triangle crosses the square's left side (rounded
+        // crossings) and has its apex inside, 0.1 below the top (it holds) or 3 ulps below it,
+        // where the top is not yet in the table: only the list sees it.
+        let tilted = polygon(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0 + f64::EPSILON), (0.0, 1.0)]);
+        let triangle = |apex: f64| polygon(&[(0.4, apex), (-0.5, 0.3), (0.3, 0.2)]);
+        assert_eq!(verdict(&tilted, &triangle(0.9), BoolOp::Intersection), Ok(()));
+        let near = 1.0 - 3.0 * f64::EPSILON;
+        assert_eq!(verdict(&tilted, &triangle(near), BoolOp::Intersection), Err("a flat edge within the clearance"));
+    }
+
+    #[test]
+    fn where_it_fails_the_output_is_still_valid() {
+        let above = 1.0 + 2.0 * f64::EPSILON;
+        let (square, spike) = square_and_spike((0.4, above));
+        for op in BoolOp::ALL {
+            for fill in FillRule::ALL {
+                let out = crate::clip_planned(&square, &spike, None, op, fill, crate::route::Plan::WHOLE);
+                check_valid_output(&out).unwrap_or_else(|e| panic!("{op:?} {fill:?}: {e}"));
+            }
+        }
+    }
+
+    /// Soundness on the hardest workload: wherever the certificate holds, the output it lets
+    /// through has a valid form (it fails on most of these cases, and they fall back).
+    #[test]
+    fn where_it_holds_on_nearly_coincident_edges_the_output_is_valid() {
+        let mut held = 0;
+        for index in 0..40 {
+            let case = polygon_case("near-coincident", 7, index, WindowKind::Any).expect("a polygon workload");
+            for op in BoolOp::ALL {
+                for sweep in [Sweep::Events, Sweep::Scanbeam] {
+                    let out =
+                        Vatti::sweep_clean(&case.subject, &case.clip, op, FillRule::EvenOdd, sweep, Operands::Float);
+                    if let Some(out) = out {
+                        held += 1;
+                        check_valid_output(&out).unwrap_or_else(|e| panic!("case {index} {op:?} {sweep:?}: {e}"));
+                    }
+                }
+            }
+        }
+        assert!(held > 0, "the certificate never held");
+    }
+
+    /// A certificate for operands reaching 1 in magnitude (a unit square), enabled.
+    fn unit_certificate() -> RoundingCertificate {
+        let mut bounds = crate::bounds::Bounds::default();
+        bounds.rebuild(&polygon(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]), &Polygons::default(), false);
+        let mut cert = RoundingCertificate::default();
+        cert.reset(true, &bounds);
+        cert.rounded_output();
+        cert
+    }
+
+    #[test]
+    fn events_within_a_box_of_each_other_fail_unless_they_cross_one_edge() {
+        let seg = |x: f64| Segment::new(Point::new(x, 0.0), Point::new(x + 0.1, 1.0));
+        let (a, b, c, d) = (seg(0.1), seg(0.2), seg(0.3), seg(0.4));
+        let p = Point::new(0.5, 0.5);
+        let beside = Point::new(0.5 + 1e-6, 0.5 + 1e-14);
+        // Apart in height or in x: holds.
+        for q in [Point::new(0.5 + 1e-6, 0.5 + 1e-12), Point::new(0.5 + 1e-4, 0.5 + 1e-14)] {
+            let mut cert = unit_certificate();
+            cert.between_scanlines(p, a, b);
+            cert.between_scanlines(q, c, d);
+            assert_eq!(cert.verdict(), Ok(()), "{q:?}");
+        }
+        let mut cert = unit_certificate();
+        cert.between_scanlines(p, a, b);
+        cert.between_scanlines(beside, c, d);
+        assert_eq!(cert.verdict(), Err("events in a box"));
+        // Two crossings of one edge: neither comes between the other and an edge near it.
+        let mut cert = unit_certificate();
+        cert.between_scanlines(p, a, b);
+        cert.between_scanlines(beside, b, c);
+        assert_eq!(cert.verdict(), Ok(()));
+        // A crossing just above a scanline's vertex, and a vertex just above a crossing.
+        let mut cert = unit_certificate();
+        cert.on_scanline(p, true);
+        cert.between_scanlines(beside, c, d);
+        assert_eq!(cert.verdict(), Err("events in a box (a crossing near a scanline event)"));
+        let mut cert = unit_certificate();
+        cert.between_scanlines(p, a, b);
+        cert.on_scanline(beside, true);
+        assert_eq!(cert.verdict(), Err("events in a box"));
+        // Vertices of one scanline are never compared.
+        let mut cert = unit_certificate();
+        cert.on_scanline(p, true);
+        cert.on_scanline(Point::new(0.5 + 1e-15, 0.5), true);
+        assert_eq!(cert.verdict(), Ok(()));
+    }
+
+    #[test]
+    fn events_out_of_order_fail() {
+        let seg = |x: f64| Segment::new(Point::new(x, 0.0), Point::new(x + 0.1, 1.0));
+        let mut cert = unit_certificate();
+        cert.on_scanline(Point::new(0.1, 0.5), true);
+        cert.between_scanlines(Point::new(0.9, 0.4), seg(0.1), seg(0.2));
+        assert_eq!(cert.verdict(), Err("out of order"));
+    }
+
+    #[test]
+    fn a_failure_counts_only_once_a_rounded_point_is_output() {
+        let mut bounds = crate::bounds::Bounds::default();
+        bounds.rebuild(&polygon(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]), &Polygons::default(), false);
+        let mut cert = RoundingCertificate::default();
+        cert.reset(true, &bounds);
+        cert.fail("a check");
+        assert!(cert.holds(), "nothing rounded was output");
+        cert.rounded_output();
+        assert_eq!(cert.verdict(), Err("a check"));
+        // Disabled, nothing is checked.
+        cert.reset(false, &bounds);
+        cert.fail("a check");
+        cert.rounded_output();
+        assert_eq!(cert.verdict(), Ok(()));
+    }
+
+    #[test]
+    fn coarse_grids_need_no_certificate() {
+        // In units of 1/4, coordinates up to 64 are integers below 2^9.
+        let a = polygon(&[(0.0, 0.0), (64.0, 0.0), (64.0, 64.0)]);
+        assert!(rounding_is_harmless(&a, &polygon(&[(0.5, 0.25), (2.0, 3.0), (1.0, 3.0)])));
+        assert!(!rounding_is_harmless(&a, &polygon(&[(0.5, 0.125), (2.0, 3.0), (1.0, 3.0)])));
+        assert!(!rounding_is_harmless(&a, &polygon(&[(0.1, 0.0), (2.0, 3.0), (1.0, 3.0)])));
+        assert!(!rounding_is_harmless(&a, &polygon(&[(1024.0, 0.0), (2.0, 3.0), (1.0, 3.0)])));
+    }
+}
