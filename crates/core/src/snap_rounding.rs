@@ -24,10 +24,11 @@
 //! Limits. The topology can change by up to a pixel: features narrower than a pixel collapse
 //! (rings can become spikes or touch themselves; rings left with fewer than three distinct points
 //! or all on one line are dropped), and a vertex can end up within `s·√2/2` of an edge it was not
-//! near. Finding pairs of edges and the pixels an edge meets goes through a [`CellIndex`]: near
-//! linear when edges are short beside the extent, quadratic when many long edges share cells
-//! (long nearly coincident edges each meeting many pixels). That is acceptable for a fallback run
-//! only where a faster path's output was broken, which is what it is for.
+//! near. The pairs of edges within a pixel of each other come from a [`CellIndex`] (their
+//! crossings, and each edge's hot pixels tested against the other): near linear when edges are
+//! short beside the extent, quadratic when many long edges share cells (stars, long nearly
+//! coincident edges). That is acceptable for a fallback run only where rounding could not be
+//! proven harmless, which is what it is for.
 
 use crate::predicates::{self, Orientation, accurate_crossing_offset, crossing_coordinate_cmp, orient};
 use crate::{CellIndex, ClipError, Operand, Point, Polygons, Rect, Ring, Segment, SegmentIntersection};
@@ -84,28 +85,18 @@ fn check_on_grid(operand: Operand, polygons: &Polygons, pixel: f64) -> Result<()
 /// with fewer than three distinct points or all on one line.
 fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
     let segments: Vec<Segment> = rings.iter().flat_map(|r| r.edges()).collect();
-    let (hot, cell_size) = hot_pixels(&segments, s);
-    let squares: Vec<Rect> = hot.iter().map(|&p| square(p, s)).collect();
-    // Cells a fraction of the edges' (which each cover a few): an edge walks the cells along it
-    // (a row at a time), so finer cells mean fewer pixels beside it to test.
-    let index = cell_size.and_then(|size| CellIndex::with_cell_size(&squares, size / 8.0));
-    let mut met = Vec::new();
+    let met = met_pixels(&segments, s);
+    let mut pixels = Vec::new();
     let mut next = 0;
     rings
         .iter()
         .map(|ring| {
             let mut out: Vec<Point> = Vec::with_capacity(ring.len());
-            for segment in &segments[next..next + ring.len()] {
-                met.clear();
-                if let Some(index) = &index {
-                    index.for_each_near_segment(&squares, segment.a, segment.b, 0.0, |k| {
-                        if meets_pixel(*segment, hot[k], s) {
-                            met.push(hot[k]);
-                        }
-                    });
-                }
-                order_along(&mut met, *segment);
-                for &p in &met {
+            for (k, segment) in segments[next..next + ring.len()].iter().enumerate() {
+                pixels.clear();
+                pixels.extend_from_slice(met.of(next + k));
+                order_along(&mut pixels, *segment);
+                for &p in &pixels {
                     let c = centre(p, s);
                     if out.last() != Some(&c) {
                         out.push(c);
@@ -121,24 +112,80 @@ fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
         .collect()
 }
 
-/// The pixels holding an input vertex or the exact crossing point of two input edges, each once,
-/// and the cell size of the edges' index (`None` without edges).
-fn hot_pixels(segments: &[Segment], s: f64) -> (Vec<Pixel>, Option<f64>) {
-    let mut hot: Vec<Pixel> = segments.iter().map(|e| pixel_of(e.a, s)).collect();
-    let boxes: Vec<Rect> = segments.iter().map(Segment::bounds).collect();
-    let index = CellIndex::new(&boxes);
-    if let Some(index) = &index {
+/// Pixels per segment, in one buffer: segment `i`'s are `pixels[starts[i]..starts[i + 1]]`.
+struct PixelLists {
+    starts: Vec<usize>,
+    pixels: Vec<Pixel>,
+}
+
+impl PixelLists {
+    /// The lists of `(segment, pixel)` entries over `n` segments, by a counting sort.
+    fn of_entries(n: usize, entries: &[(u32, Pixel)]) -> PixelLists {
+        let mut starts = vec![0usize; n + 1];
+        for &(i, _) in entries {
+            starts[i as usize + 1] += 1;
+        }
+        for i in 0..n {
+            starts[i + 1] += starts[i];
+        }
+        let mut fill = starts.clone();
+        let mut pixels = vec![(0, 0); entries.len()];
+        for &(i, p) in entries {
+            pixels[fill[i as usize]] = p;
+            fill[i as usize] += 1;
+        }
+        PixelLists { starts, pixels }
+    }
+
+    fn of(&self, i: usize) -> &[Pixel] {
+        &self.pixels[self.starts[i]..self.starts[i + 1]]
+    }
+}
+
+/// The hot pixels each segment meets. A pixel is hot when it holds an input vertex or the exact
+/// crossing of two segments; each segment meets its own (its ends' and its crossings' pixels),
+/// and another segment's where it passes through them. A segment meets another's hot pixel only
+/// where the two come within a pixel of each other, so both are found from one pass over the
+/// pairs of segments whose boxes, grown by a pixel, meet: first the crossings, then each
+/// segment's pixels tested against the other's. Near linear where segments are short beside
+/// their extent (see `CellIndex`).
+fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
+    let boxes: Vec<Rect> = segments.iter().map(|e| e.bounds().expanded(s)).collect();
+    let mut pairs: Vec<(u32, u32)> = Vec::new();
+    if let Some(index) = CellIndex::new(&boxes) {
         let _ = index.try_for_each_close_pair::<()>(&boxes, |i, j| {
-            // Touching points and overlaps end at input vertices, whose pixels are hot already.
-            if let SegmentIntersection::Crossing(_) = predicates::segment_intersection(segments[i], segments[j]) {
-                hot.push(crossing_pixel(segments[i], segments[j], s));
-            }
+            pairs.push((i as u32, j as u32));
             Ok(())
         });
     }
-    hot.sort_unstable();
-    hot.dedup();
-    (hot, index.map(|i| i.cell_size()))
+    let mut own: Vec<(u32, Pixel)> = Vec::with_capacity(2 * segments.len());
+    for (i, e) in segments.iter().enumerate() {
+        own.extend([(i as u32, pixel_of(e.a, s)), (i as u32, pixel_of(e.b, s))]);
+    }
+    for &(i, j) in &pairs {
+        let (e, f) = (segments[i as usize], segments[j as usize]);
+        // Touching points and overlaps end at input vertices, whose pixels are hot already.
+        if let SegmentIntersection::Crossing(_) = predicates::segment_intersection(e, f) {
+            let p = crossing_pixel(e, f, s);
+            own.extend([(i, p), (j, p)]);
+        }
+    }
+    let own = PixelLists::of_entries(segments.len(), &own);
+    let mut met: Vec<(u32, Pixel)> = Vec::with_capacity(2 * own.pixels.len());
+    for i in 0..segments.len() {
+        met.extend(own.of(i).iter().map(|&p| (i as u32, p)));
+    }
+    for &(i, j) in &pairs {
+        for (a, b) in [(i, j), (j, i)] {
+            let e = segments[a as usize];
+            for &p in own.of(b as usize) {
+                if meets_pixel(e, p, s) {
+                    met.push((a, p));
+                }
+            }
+        }
+    }
+    PixelLists::of_entries(segments.len(), &met)
 }
 
 /// The pixel holding `p`: half-open, so a point on a border belongs to the pixel above or right.
@@ -155,12 +202,6 @@ fn pixel_of(p: Point, s: f64) -> Pixel {
 
 fn centre(p: Pixel, s: f64) -> Point {
     Point::new(p.0 as f64 * s, p.1 as f64 * s)
-}
-
-/// The closed square of a pixel, for the index.
-fn square(p: Pixel, s: f64) -> Rect {
-    let (x, y) = (p.0 as f64, p.1 as f64);
-    Rect::new((x - 0.5) * s, (y - 0.5) * s, (x + 0.5) * s, (y + 0.5) * s)
 }
 
 /// The pixel holding the exact crossing point of `e` and `f` (whose interiors cross): the pixel
