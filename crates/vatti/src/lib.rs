@@ -40,10 +40,12 @@
 //!   starts, where it ends and where it crosses a neighbour. The active edges' tops wait in a
 //!   heap, a pair of edges is tested (exactly) for a crossing only when it becomes adjacent,
 //!   and crossings wait in a second heap; a new edge finds its place in a search tree over the
-//!   table. O((n + k) log n) for n edges and k crossings. Before it, an operand of several
-//!   rings loses its pairs of exactly coincident edges running opposite ways
-//!   (`opposite_edges`): such a pair separates equal winding numbers, and layers that tile the
-//!   plane (a map's countries, a grid of tiles) run every shared border once each way.
+//!   table. O((n + k) log n) for n edges and k crossings. Before it (and before the scanbeam
+//!   sweep of operands off a coarse grid, whose rounding is certified: an edge crossing such a
+//!   pair would cross it twice at one point), an operand of several rings loses its pairs of
+//!   exactly coincident edges running opposite ways (`opposite_edges`): such a pair separates
+//!   equal winding numbers, and layers that tile the plane (a map's countries, a grid of tiles)
+//!   run every shared border once each way.
 //!
 //! [`Vatti`] takes the scanbeam sweep for operands of at most 512 edges in all, where its
 //! quadratic term is bounded and its cheaper crossings win on crossing-dense inputs, and the

@@ -109,8 +109,10 @@ pub(crate) struct RoundingCertificate {
     /// The largest accepted error of a crossing's quotient, and `r`: the most a point moves.
     max_error: f64,
     moves: f64,
-    /// `δ`: how far from an output point every edge it is not on must be.
+    /// `δ`: how far from an output point every edge it is not on must be, and the square of
+    /// that grown by what the computed distances err by.
     clearance: f64,
+    reach_squared: f64,
     /// `H = δ + 2r` and `W = D/2 + 2δ`: the box within which two events may not lie (heights err
     /// by `r`), and the least rise per unit of x of an edge that is not flat, `4H/D`.
     height: f64,
@@ -161,6 +163,8 @@ impl RoundingCertificate {
         self.moves = MOVE_ULPS * unit;
         self.clearance = CLEARANCE_ULPS * unit;
         self.height = self.clearance + 2.0 * self.moves;
+        let reach = self.clearance + 2.0 * X_AT_ERROR * magnitude;
+        self.reach_squared = reach * reach;
         let d = REACH * magnitude;
         self.reach = 0.5 * d + 2.0 * self.clearance;
         self.least_rise = 4.0 * self.height / d;
@@ -228,27 +232,33 @@ impl RoundingCertificate {
         self.scanline_event(Event { p, half_width, counts: true, edges: None });
     }
 
+    #[inline]
     fn scanline_event(&mut self, event: Event) {
         if !self.enabled() {
             return;
         }
         if event.p.y != self.row_y {
-            // The last scanline's events join the others, to be kept while within reach.
-            self.recent.append(&mut self.row);
+            // The last scanline's events join the others while within reach of this one.
+            if event.p.y - self.row_y <= self.height {
+                self.recent.append(&mut self.row);
+            } else {
+                self.row.clear();
+            }
             self.row_y = event.p.y;
         }
         self.apart(event);
         self.row.push(event);
     }
 
-    /// A crossing of `a` and `b` between scanlines at `p`, off its exact place by at most `r`.
+    /// A crossing between scanlines at `p` of the edges named `edges` (each an active edge's
+    /// record and top vertex: one segment), off its exact place by at most `r`; it `counts`
+    /// unless one of them is flat.
     #[inline]
-    pub(crate) fn between_scanlines(&mut self, p: Point, a: Segment, b: Segment) {
+    pub(crate) fn between_scanlines(&mut self, p: Point, edges: [u64; 2], counts: bool) {
         if !self.enabled() {
             return;
         }
-        let counts = !(self.is_flat_segment(a.a, a.b) || self.is_flat_segment(b.a, b.b));
-        let event = Event { p, half_width: 0.0, counts, edges: Some([a, b]) };
+        let event = Event { p, half_width: 0.0, counts, edges: Some(edges) };
         self.apart(event);
         if (p.y - self.row_y).abs() <= self.height {
             let near = self.row.len() > COMPARISONS || self.row.iter().any(|q| self.in_box(&event, q));
@@ -267,6 +277,15 @@ impl RoundingCertificate {
             self.fail_because("out of order");
         }
         self.max_y = self.max_y.max(e.p.y);
+        if self.recent.is_empty() {
+            return;
+        }
+        self.apart_from_recent(e);
+    }
+
+    /// The part of [`RoundingCertificate::apart`] that looks at the recent events.
+    #[inline(never)]
+    fn apart_from_recent(&mut self, e: Event) {
         while self.first < self.recent.len() && self.recent[self.first].p.y < e.p.y - self.height {
             self.first += 1;
         }
@@ -321,11 +340,18 @@ impl RoundingCertificate {
         let d = k.top - k.bot;
         let off = (p - k.bot).cross(d);
         // |off| / |d| is the distance to the line, at most the distance to the segment; the
-        // computed values err by a few ulps of the magnitudes, which the slack covers.
-        let reach = self.clearance + self.slack(p, k.magnitude.max);
-        if !at_least(off * off, reach * reach * d.dot(d)) || off == 0.0 {
+        // computed values err by a few ulps of the operands' largest coordinate, which the
+        // slack in `reach_squared` covers.
+        if !at_least(off * off, self.reach_squared * d.dot(d)) || off == 0.0 {
             self.fail_because("a neighbour within the clearance");
         }
+    }
+
+    /// True when flat edges may lie near height `p.y`: those not reached yet start above it, so
+    /// without flat edges reached or about to be, there is nothing to check.
+    #[inline]
+    pub(crate) fn flats_near(&self, p: Point) -> bool {
+        !self.near_flats.is_empty() || self.flats.get(self.next_flat).is_some_and(|f| f.a.y <= p.y + self.clearance)
     }
 
     /// Records whether output point `p` lies farther than the clearance from every flat edge
@@ -385,7 +411,7 @@ struct Event {
     /// them on their own list, and cannot come between a point and an edge that is not flat.
     counts: bool,
     /// The crossing's two edges, for a crossing between scanlines.
-    edges: Option<[Segment; 2]>,
+    edges: Option<[u64; 2]>,
 }
 
 impl Event {
@@ -563,33 +589,32 @@ mod tests {
 
     #[test]
     fn events_within_a_box_of_each_other_fail_unless_they_cross_one_edge() {
-        let seg = |x: f64| Segment::new(Point::new(x, 0.0), Point::new(x + 0.1, 1.0));
-        let (a, b, c, d) = (seg(0.1), seg(0.2), seg(0.3), seg(0.4));
+        let (a, b, c, d) = (1, 2, 3, 4);
         let p = Point::new(0.5, 0.5);
         let beside = Point::new(0.5 + 1e-6, 0.5 + 1e-14);
         // Apart in height or in x: holds.
         for q in [Point::new(0.5 + 1e-6, 0.5 + 1e-12), Point::new(0.5 + 1e-4, 0.5 + 1e-14)] {
             let mut cert = unit_certificate();
-            cert.between_scanlines(p, a, b);
-            cert.between_scanlines(q, c, d);
+            cert.between_scanlines(p, [a, b], true);
+            cert.between_scanlines(q, [c, d], true);
             assert_eq!(cert.verdict(), Ok(()), "{q:?}");
         }
         let mut cert = unit_certificate();
-        cert.between_scanlines(p, a, b);
-        cert.between_scanlines(beside, c, d);
+        cert.between_scanlines(p, [a, b], true);
+        cert.between_scanlines(beside, [c, d], true);
         assert_eq!(cert.verdict(), Err("events in a box"));
         // Two crossings of one edge: neither comes between the other and an edge near it.
         let mut cert = unit_certificate();
-        cert.between_scanlines(p, a, b);
-        cert.between_scanlines(beside, b, c);
+        cert.between_scanlines(p, [a, b], true);
+        cert.between_scanlines(beside, [b, c], true);
         assert_eq!(cert.verdict(), Ok(()));
         // A crossing just above a scanline's vertex, and a vertex just above a crossing.
         let mut cert = unit_certificate();
         cert.on_scanline(p, true);
-        cert.between_scanlines(beside, c, d);
+        cert.between_scanlines(beside, [c, d], true);
         assert_eq!(cert.verdict(), Err("events in a box (a crossing near a scanline event)"));
         let mut cert = unit_certificate();
-        cert.between_scanlines(p, a, b);
+        cert.between_scanlines(p, [a, b], true);
         cert.on_scanline(beside, true);
         assert_eq!(cert.verdict(), Err("events in a box"));
         // Vertices of one scanline are never compared.
@@ -601,10 +626,9 @@ mod tests {
 
     #[test]
     fn events_out_of_order_fail() {
-        let seg = |x: f64| Segment::new(Point::new(x, 0.0), Point::new(x + 0.1, 1.0));
         let mut cert = unit_certificate();
         cert.on_scanline(Point::new(0.1, 0.5), true);
-        cert.between_scanlines(Point::new(0.9, 0.4), seg(0.1), seg(0.2));
+        cert.between_scanlines(Point::new(0.9, 0.4), [1, 2], true);
         assert_eq!(cert.verdict(), Err("out of order"));
     }
 

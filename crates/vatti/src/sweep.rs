@@ -9,7 +9,7 @@
 use clip_core::predicates::{Orientation, orient, through_crossing};
 use clip_core::{Point, Trapezoid};
 
-use crate::active::{ActiveEdges, ROUNDING};
+use crate::active::{ActiveEdges, Edge, ROUNDING};
 use crate::bounds::{Bounds, LocalMinimum, NONE};
 use crate::contribution::{Crossing, Rules, classify};
 use crate::crossing_queue::{CrossingQueue, PendingCrossing};
@@ -789,8 +789,10 @@ impl<'a> SweepLine<'a> {
         }
         let right = self.ael.next(left);
         if self.cert.enabled() {
-            let (a, b) = (self.ael.get(left).segment(), self.ael.get(right).segment());
-            self.cert.between_scanlines(p, a, b);
+            let (a, b) = (self.ael.get(left), self.ael.get(right));
+            let key = |id: u32, e: &Edge| (u64::from(id) << 32) | u64::from(e.top_vertex);
+            let counts = !(self.cert.is_flat(a) || self.cert.is_flat(b));
+            self.cert.between_scanlines(p, [key(left, a), key(right, b)], counts);
         }
         self.rounded_crossing = true;
         self.between = true;
@@ -903,7 +905,9 @@ impl<'a> SweepLine<'a> {
             self.cert.rounded_output();
         }
         if self.cert.enabled() {
-            self.certify_flats(p);
+            if self.cert.flats_near(p) {
+                self.certify_flats(p);
+            }
             self.certify_beside(k, p, false);
         }
         let mut k = self.ael.next(hi);
@@ -917,23 +921,19 @@ impl<'a> SweepLine<'a> {
 
     /// The rounding certificate's test of output point `p` against `k`, the nearest edge on one
     /// side (`rightwards` or left) that does not pass through it, or `NONE`
-    /// ([`crate::rounding_certificate`]). Between scanlines `k` must be clear of `p`; on a
-    /// scanline, the nearest edge spanning it beyond `k` (past edges ending or starting there)
-    /// must be clear in x.
-    #[cold]
-    #[inline(never)]
+    /// ([`crate::rounding_certificate`]): the nearest edge from `k` on that is not flat (and, on
+    /// a scanline, spans it: edges with an end on it are apart from the point along it) must be
+    /// clear of `p`.
+    #[inline]
     fn certify_beside(&mut self, mut k: u32, p: Point, rightwards: bool) {
         while k != NONE {
             let e = self.ael.get(k);
-            // Flat edges are checked on their own list; on a scanline, edges with an end on it
-            // are apart from the point along it.
             let skip = e.moving || self.cert.is_flat(e) || (!self.between && (e.bot.y == p.y || e.top.y <= p.y));
             if !skip {
-                let e = e.clone();
-                self.cert.clear_of(p, &e);
+                self.cert.clear_of(p, e);
                 return;
             }
-            k = if rightwards { self.ael.next(k) } else { self.ael.prev(k) };
+            k = if rightwards { e.next } else { e.prev };
         }
     }
 
@@ -954,21 +954,29 @@ impl<'a> SweepLine<'a> {
     /// The rounding certificate's record of the top of edge `id`, ending on this scanline: an
     /// input vertex, and the horizontal edge and vertex after it where the bound runs on along
     /// the scanline.
-    #[cold]
-    #[inline(never)]
+    #[inline]
     fn certify_top(&mut self, id: u32) {
         let e = self.ael.get(id);
         let (t, forward, tp) = (e.top_vertex, e.forward, e.top);
         let u = self.bounds.along(t, forward);
         let up = self.bounds.pt(u);
-        let next_counts = up.y > tp.y && !self.cert.is_flat_segment(tp, up);
-        let counts = !self.cert.is_flat(self.ael.get(id)) || next_counts;
+        // It counts unless every edge at it is flat (the bound's next one, where it goes on up).
+        let counts = !self.cert.is_flat(e) || (up.y > tp.y && !self.cert.is_flat_segment(tp, up));
         self.cert.on_scanline(tp, counts);
         if up.y == tp.y {
-            self.cert.horizontal(tp, up);
-            let w = self.bounds.pt(self.bounds.along(u, forward));
-            self.cert.on_scanline(up, w.y > up.y && !self.cert.is_flat_segment(up, w));
+            self.certify_horizontal_top(tp, u, forward);
         }
+    }
+
+    /// [`SweepLine::certify_top`] of a bound running on along the scanline from `tp` to vertex
+    /// `u`.
+    #[cold]
+    #[inline(never)]
+    fn certify_horizontal_top(&mut self, tp: Point, u: u32, forward: bool) {
+        let up = self.bounds.pt(u);
+        self.cert.horizontal(tp, up);
+        let w = self.bounds.pt(self.bounds.along(u, forward));
+        self.cert.on_scanline(up, w.y > up.y && !self.cert.is_flat_segment(up, w));
     }
 
     /// The rounding certificate's test of output point `p` against the flat edges near it.
