@@ -12,14 +12,16 @@
 //! clearance `δ` ([`CLEARANCE_ULPS`]) of the points it output. It is checked locally, in O(1) per
 //! event, by three tests:
 //!
-//! 1. **Events apart.** No two events (input vertices, crossings, a slide's crossings) lie
-//!    within the box `2D × 2H` of each other (`H = δ + 2r`, `D` a thousandth of the operands'
-//!    largest coordinate), unless both lie on one scanline (exactly: vertices, and a slide's
-//!    crossings, which move along it), or both are crossings of one edge.
+//! 1. **Events apart.** No two events (input vertices, crossings, a slide's crossings,
+//!    horizontal edges as events as wide as they are) lie within a box of `2W × 2H` of each
+//!    other (`H = δ + 2r`, `W = D/2 + 2δ`, `D` 2^-16 of the operands' largest coordinate),
+//!    unless both lie on one scanline (exactly: vertices, and a slide's crossings, which move
+//!    along it), both are crossings of one edge, or neither counts (crossings of a flat edge,
+//!    vertices of flat edges only: they cannot come between a point and an edge that is not flat).
 //! 2. **Flat edges on their own.** An edge rising less than `4H/D` per unit of x (and not
 //!    horizontal) is checked against every output point near it, on a list of its own. Any other
-//!    edge within `δ` of a point then crosses the point's box from bottom to top, with no end in
-//!    it (test 1), and at the point's height lies within `D/4 + δ` of it in x.
+//!    edge within `δ` of a point runs at most `D/4` in x within `H` of the point's height, so it
+//!    crosses the point's box from bottom to top, with no end in it (test 1).
 //! 3. **Neighbours clear.** At each output point `p`, the nearest edge on either side in the
 //!    table that does not pass through `p` and is not flat is farther than `δ` from it; on a
 //!    scanline, the nearest edge *spanning* it, past edges that end or start on it.
