@@ -515,3 +515,21 @@ fn vatti_crossing_computed_above_the_horizontal_it_lies_below() {
 fn vatti_crossing_computed_above_the_horizontal_it_lies_below_at_5e5() {
     regression("vatti", "crossing-computed-above-the-horizontal-it-lies-below-at-5e5");
 }
+
+/// The rounding certificate (session 29, 30 minutes of `fuzz/vatti`): a ring of spikes and
+/// repeated points an ulp or two apart near (5e5, 4e6), a positive union. Its checks failed, but
+/// the certificate still held, because no output point had been marked rounded: every crossing
+/// was computed outside its edges' range and clamped onto one of their ends, an input vertex. A
+/// crossing between scanlines now counts as rounded wherever it lands, and events out of their
+/// exact order fail the certificate whatever was rounded.
+#[test]
+fn vatti_crossings_clamped_onto_vertices_count_as_rounded_at_4e6() {
+    regression("vatti", "crossings-clamped-onto-vertices-count-as-rounded-at-4e6");
+}
+
+/// The same found with a ring running out to -6e66, where the clearance is 1e53 wide (an
+/// even-odd union swept along x).
+#[test]
+fn vatti_crossings_clamped_onto_vertices_count_as_rounded_to_6e66() {
+    regression("vatti", "crossings-clamped-onto-vertices-count-as-rounded-to-6e66");
+}

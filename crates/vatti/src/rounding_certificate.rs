@@ -141,6 +141,8 @@ pub(crate) struct RoundingCertificate {
     failure: Option<&'static str>,
     /// True once a rounded point was output.
     rounded: bool,
+    /// True once an event came below another taken before it by more than their rounding.
+    out_of_order: bool,
 }
 
 impl RoundingCertificate {
@@ -148,7 +150,7 @@ impl RoundingCertificate {
     /// checks nothing, and the certificate always holds.
     pub(crate) fn reset(&mut self, enabled: bool, bounds: &Bounds) {
         self.enabled = enabled;
-        (self.failed, self.failure) = (false, None);
+        (self.failed, self.failure, self.out_of_order) = (false, None, false);
         self.rounded = false;
         self.flats.clear();
         self.near_flats.clear();
@@ -181,10 +183,11 @@ impl RoundingCertificate {
         self.flats.sort_unstable_by(|a, b| a.a.y.total_cmp(&b.a.y));
     }
 
-    /// True when the output's form is the exact arrangement's: nothing rounded was output, or
-    /// every check held.
+    /// True when the output's form is the exact arrangement's: every check held, or nothing
+    /// rounded was output and the events came in their exact order (then every decision was
+    /// exact and every output point is exact).
     pub(crate) fn holds(&self) -> bool {
-        !(self.failed && self.rounded)
+        !(self.failed && (self.rounded || self.out_of_order))
     }
 
     /// `Ok` where the certificate [holds](RoundingCertificate::holds), else the first check that
@@ -276,6 +279,7 @@ impl RoundingCertificate {
     #[inline]
     fn apart(&mut self, e: Event) {
         if e.p.y < self.max_y - 2.0 * self.moves {
+            self.out_of_order = true;
             self.fail_because("out of order");
         }
         self.max_y = self.max_y.max(e.p.y);
@@ -644,6 +648,11 @@ mod tests {
         assert!(cert.holds(), "nothing rounded was output");
         cert.rounded_output();
         assert_eq!(cert.verdict(), Err("a check"));
+        // Events out of their order break the sweep's decisions, not only its points.
+        cert.reset(true, &bounds);
+        cert.on_scanline(Point::new(0.1, 0.5), true);
+        cert.between_scanlines(Point::new(0.9, 0.4), [1, 2], true);
+        assert_eq!(cert.verdict(), Err("out of order"), "nothing rounded was output, but out of order");
         // Disabled, nothing is checked.
         cert.reset(false, &bounds);
         cert.fail("a check");

@@ -901,7 +901,9 @@ impl<'a> SweepLine<'a> {
         while k != NONE && self.node_neighbour(a, b, k, p, rounded) {
             k = self.ael.prev(k);
         }
-        if rounded {
+        // A crossing between scanlines is output where it was computed (and maybe clamped onto an
+        // end of its edges), so it counts as rounded even where it lands on an input vertex.
+        if rounded || self.between {
             self.cert.rounded_output();
         }
         if self.cert.enabled() {
