@@ -21,20 +21,22 @@ pub struct CellIndex {
 
 /// Sorts `entries`, made box by box (so ascending in box within each cell), by cell key below
 /// `cells`: into the order `sort_unstable` gives, by stable passes of eleven bits of the key
-/// (at most three: keys are below 2^32). Linear where a comparison sort is n log n, and indexes
-/// of thousands of edges are built for every clip the form check examines.
+/// (at most three: keys are below 2^32), or of up to sixteen in two passes where there are
+/// enough entries to fill the larger counts. Linear where a comparison sort is n log n, and
+/// indexes of thousands of edges are built for every clip the form check examines.
 fn sort_by_cell(entries: &mut Vec<(u64, u32)>, cells: u64) {
-    const DIGIT: u32 = 11;
     if entries.len() < 256 {
         entries.sort_unstable();
         return;
     }
     let bits = 64 - cells.saturating_sub(1).leading_zeros();
+    let digit_bits = if bits > 22 && entries.len() >= 1 << 16 { bits.div_ceil(2) } else { 11 };
     let mut other = vec![(0u64, 0u32); entries.len()];
+    let mut starts = vec![0usize; 1 << digit_bits];
     let mut shift = 0;
     while shift < bits {
-        let digit = |key: u64| ((key >> shift) & ((1 << DIGIT) - 1)) as usize;
-        let mut starts = [0usize; 1 << DIGIT];
+        let digit = |key: u64| ((key >> shift) & ((1 << digit_bits) - 1)) as usize;
+        starts.fill(0);
         for e in entries.iter() {
             starts[digit(e.0)] += 1;
         }
@@ -48,14 +50,16 @@ fn sort_by_cell(entries: &mut Vec<(u64, u32)>, cells: u64) {
             starts[d] += 1;
         }
         std::mem::swap(entries, &mut other);
-        shift += DIGIT;
+        shift += digit_bits;
     }
 }
 
 impl CellIndex {
-    /// The index of `boxes`, or `None` when there are none. Cells start at the median box's
-    /// larger side and double until the boxes cover at most eight cells each on average (a few
-    /// long boxes among many small ones must not cover millions).
+    /// The index of `boxes`, or `None` when there are none. Cells start at twice the median
+    /// box's larger side (a typical box then covers one to four cells, not four: fewer entries
+    /// to sort, for a few more pairs to test in each cell) and double until the boxes cover at
+    /// most eight cells each on average (a few long boxes among many small ones must not cover
+    /// millions).
     pub fn new(boxes: &[Rect]) -> Option<CellIndex> {
         let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
         if b.is_empty() {
@@ -64,7 +68,7 @@ impl CellIndex {
         let mut sides: Vec<f64> = boxes.iter().map(|r| r.width().max(r.height())).collect();
         let middle = sides.len() / 2;
         let median = *sides.select_nth_unstable_by(middle, f64::total_cmp).1;
-        let mut size = median.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
+        let mut size = (2.0 * median).max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
         loop {
             let covered: f64 =
                 boxes.iter().map(|r| ((r.width() / size).floor() + 2.0) * ((r.height() / size).floor() + 2.0)).sum();
@@ -256,7 +260,17 @@ mod tests {
             state ^= state << 17;
             state % n
         };
-        for (count, cells) in [(0, 1), (5, 1), (300, 1), (1000, 7), (5000, 3000), (20_000, 1 << 32), (700, 1 << 22)] {
+        for (count, cells) in [
+            (0, 1),
+            (5, 1),
+            (300, 1),
+            (1000, 7),
+            (5000, 3000),
+            (20_000, 1 << 32),
+            (700, 1 << 22),
+            (70_000, 1 << 32),
+            (70_000, 5 << 30),
+        ] {
             // Made box by box, each box's cells in any order: ascending in box within a cell.
             let mut entries: Vec<(u64, u32)> = Vec::new();
             let mut boxes = 0u32;

@@ -164,7 +164,12 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
     }
     for &(i, j) in &pairs {
         let (e, f) = (segments[i as usize], segments[j as usize]);
-        // Touching points and overlaps end at input vertices, whose pixels are hot already.
+        // Touching points and overlaps end at input vertices, whose pixels are hot already; two
+        // segments with an end in common (most close pairs: a ring's consecutive edges) cannot
+        // cross.
+        if e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b {
+            continue;
+        }
         if let SegmentIntersection::Crossing(_) = predicates::segment_intersection(e, f) {
             let p = crossing_pixel(e, f, s);
             own.extend([(i, p), (j, p)]);
@@ -176,9 +181,22 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
         met.extend(own.of(i).iter().map(|&p| (i as u32, p)));
     }
     for &(i, j) in &pairs {
+        // The pixel of an end both share (a ring's consecutive edges) is on both own lists.
+        let (e, f) = (segments[i as usize], segments[j as usize]);
+        let shared = match [e.a, e.b].into_iter().find(|&v| v == f.a || v == f.b) {
+            Some(v) => pixel_of(v, s),
+            None => (i64::MIN, i64::MIN),
+        };
         for (a, b) in [(i, j), (j, i)] {
             let e = segments[a as usize];
-            for &p in own.of(b as usize) {
+            // Each own list starts with its segment's ends' pixels (the counting sort is stable).
+            let (ends, crossings) = own.of(b as usize).split_at(2);
+            for &p in ends {
+                if p != shared && meets_pixel(e, p, s) {
+                    met.push((a, p));
+                }
+            }
+            for &p in crossings {
                 if meets_pixel(e, p, s) {
                     met.push((a, p));
                 }
@@ -261,6 +279,7 @@ fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
 /// line through such a corner is judged by the side the corner moves to. The side is linear
 /// over the (shrunk) square, so its two corners farthest either way along the line's normal
 /// decide: the other two lie between them.
+#[inline(always)]
 fn meets_pixel(e: Segment, p: Pixel, s: f64) -> bool {
     let (x, y) = (p.0 as f64, p.1 as f64);
     let (x0, x1, y0, y1) = ((x - 0.5) * s, (x + 0.5) * s, (y - 0.5) * s, (y + 0.5) * s);
