@@ -24,10 +24,12 @@
 //! Limits. The topology can change by up to a pixel: features narrower than a pixel collapse
 //! (rings can become spikes or touch themselves; rings left with fewer than three distinct points
 //! or all on one line are dropped), and a vertex can end up within `s·√2/2` of an edge it was not
-//! near. The pairs of edges within a pixel of each other come from a [`CellIndex`] (their
-//! crossings, and each edge's hot pixels tested against the other): near linear when edges are
-//! short beside the extent, quadratic when many long edges share cells (stars, long nearly
-//! coincident edges). That is acceptable for a fallback run only where rounding could not be
+//! near. The pairs of edges within a pixel of each other come from a [`CellIndex`] (pairs whose
+//! boxes meet, less those a float test with bounded error finds farther apart than a pixel; then
+//! their crossings, and each edge's hot pixels tested against the other): near linear when edges
+//! are short beside the extent, quadratic when many long edges lie close to each other (bundles
+//! of nearly coincident edges), and the box index itself is quadratic in the long edges sharing
+//! its cells (stars). That is acceptable for a fallback run only where rounding could not be
 //! proven harmless, which is what it is for.
 
 use crate::predicates::{self, Orientation, accurate_crossing_offset, crossing_coordinate_cmp, orient};
@@ -154,7 +156,11 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
     let mut pairs: Vec<(u32, u32)> = Vec::new();
     if let Some(index) = CellIndex::new(&boxes) {
         let _ = index.try_for_each_close_pair::<()>(&boxes, |i, j| {
-            pairs.push((i as u32, j as u32));
+            let (e, f) = (segments[i], segments[j]);
+            // A ring's consecutive edges, the most common close pairs, meet at their shared end.
+            if e.b == f.a || f.b == e.a || !apart(e, f, s) {
+                pairs.push((i as u32, j as u32));
+            }
             Ok(())
         });
     }
@@ -204,6 +210,29 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
         }
     }
     PixelLists::of_entries(segments.len(), &met)
+}
+
+/// True when `e` and `f` are certainly farther apart than a pixel's diagonal `s·√2`: the ends of
+/// one lie on one side of the other's line, both farther than that from it. Such a pair neither
+/// crosses nor has a hot pixel of one that the other meets (a hot pixel holds a point of its
+/// segment). A float test with its rounding bounded, so it keeps every pair within reach: boxes
+/// that meet are a poor test for long edges at an angle, which share boxes with many others far
+/// from them.
+#[inline]
+fn apart(e: Segment, f: Segment, s: f64) -> bool {
+    // The side of `c` from the line of `a`-`b`, scaled by |b - a|, and what it errs by (Shewchuk's
+    // bound for orient2d, over twice).
+    let side = |a: Point, b: Point, c: Point| {
+        let (l, r) = ((b.x - a.x) * (c.y - a.y), (b.y - a.y) * (c.x - a.x));
+        (l - r, 8.0 * f64::EPSILON * (l.abs() + r.abs()))
+    };
+    // |b - a| is at most its L1 length, and √2 < 1.5.
+    let beyond = |a: Point, b: Point, c: Point, d: Point| {
+        let reach = 1.5 * s * ((b.x - a.x).abs() + (b.y - a.y).abs());
+        let ((p, ep), (q, eq)) = (side(a, b, c), side(a, b, d));
+        (p > reach + ep && q > reach + eq) || (p < -(reach + ep) && q < -(reach + eq))
+    };
+    beyond(e.a, e.b, f.a, f.b) || beyond(f.a, f.b, e.a, e.b)
 }
 
 /// The pixel holding `p`: half-open, so a point on a border belongs to the pixel above or right.
@@ -554,6 +583,38 @@ mod tests {
         let nan = Polygons::new(vec![ring(&[(0.0, 0.0), (f64::NAN, 0.0), (1.0, 1.0)])]);
         let e = snap_round(&nan, &square, 1.0).unwrap_err();
         assert!(matches!(e, ClipError::NonFinite { operand: Operand::Subject, vertex: 1, .. }), "{e}");
+    }
+
+    #[test]
+    fn pairs_set_apart_meet_no_pixel_of_each_other() {
+        let mut rng = Rng(0x5DEE_CE66_D1CE_4E5B);
+        let (mut apart_pairs, mut close_kept) = (0, 0);
+        for scale in [1.0, 1e3, 1e9] {
+            let s = 2f64.powi(((scale * 2.0f64).log2().ceil()) as i32 - 50);
+            let at = |rng: &mut Rng| Point::new(rng.next() * scale, rng.next() * scale);
+            for _ in 0..3000 {
+                let e = Segment::new(at(&mut rng), at(&mut rng));
+                let f = Segment::new(at(&mut rng), at(&mut rng));
+                if apart(e, f, s) {
+                    apart_pairs += 1;
+                    assert!(matches!(predicates::segment_intersection(e, f), SegmentIntersection::None));
+                    for (g, h) in [(e, f), (f, e)] {
+                        for v in [h.a, h.b] {
+                            assert!(!meets_pixel(g, pixel_of(v, s), s), "{g:?} meets the pixel of {v:?}");
+                        }
+                    }
+                }
+                // A copy moved by up to a pixel, and one through a point of `e`: within reach.
+                let d = Point::new((rng.next() - 0.5) * s, (rng.next() - 0.5) * s);
+                let moved = Segment::new(e.a + d, e.b + d);
+                let through = Segment::new(e.at(rng.next()), at(&mut rng));
+                for g in [moved, through] {
+                    assert!(!apart(e, g, s) && !apart(g, e, s), "{e:?} and {g:?} set apart");
+                    close_kept += 1;
+                }
+            }
+        }
+        assert!(apart_pairs > 1000 && close_kept > 1000, "{apart_pairs} apart, {close_kept} close");
     }
 
     #[test]
