@@ -533,3 +533,25 @@ fn vatti_crossings_clamped_onto_vertices_count_as_rounded_at_4e6() {
 fn vatti_crossings_clamped_onto_vertices_count_as_rounded_to_6e66() {
     regression("vatti", "crossings-clamped-onto-vertices-count-as-rounded-to-6e66");
 }
+
+/// Found by `fuzz/vatti` (60 minutes, an even-odd union of one ring near 1e149 with nothing): the
+/// rounding certificate held where the output crossed itself. Its test of an output point's
+/// nearest neighbour compared squares, the point's offset from the edge's line against the
+/// clearance times the edge's length, and near `MAX_COORDINATE` both overflowed to infinity,
+/// which passed as clear. It compares them unsquared.
+#[test]
+fn vatti_neighbour_distance_squared_overflowing_at_1e149() {
+    regression("vatti", "neighbour-distance-squared-overflowing-at-1e149");
+}
+
+/// The same with two subject rings.
+#[test]
+fn vatti_neighbour_distance_squared_overflowing_at_1e149_two_rings() {
+    regression("vatti", "neighbour-distance-squared-overflowing-at-1e149-two-rings");
+}
+
+/// The same with the event sweep along x.
+#[test]
+fn vatti_neighbour_distance_squared_overflowing_at_1e149_along_x() {
+    regression("vatti", "neighbour-distance-squared-overflowing-at-1e149-along-x");
+}

@@ -111,10 +111,10 @@ pub(crate) struct RoundingCertificate {
     /// The largest accepted error of a crossing's quotient, and `r`: the most a point moves.
     max_error: f64,
     moves: f64,
-    /// `δ`: how far from an output point every edge it is not on must be, and the square of
-    /// that grown by what the computed distances err by.
+    /// `δ`: how far from an output point every edge it is not on must be, and that grown by what
+    /// the computed distances err by.
     clearance: f64,
-    reach_squared: f64,
+    clearance_reach: f64,
     /// `H = δ + 2r` and `W = D/2 + 2δ`: the box within which two events may not lie (heights err
     /// by `r`), and the least rise per unit of x of an edge that is not flat, `4H/D`.
     height: f64,
@@ -167,8 +167,7 @@ impl RoundingCertificate {
         self.moves = MOVE_ULPS * unit;
         self.clearance = CLEARANCE_ULPS * unit;
         self.height = self.clearance + 2.0 * self.moves;
-        let reach = self.clearance + 2.0 * X_AT_ERROR * magnitude;
-        self.reach_squared = reach * reach;
+        self.clearance_reach = self.clearance + 2.0 * X_AT_ERROR * magnitude;
         let d = REACH * magnitude;
         self.reach = 0.5 * d + 2.0 * self.clearance;
         self.least_rise = 4.0 * self.height / d;
@@ -347,8 +346,9 @@ impl RoundingCertificate {
         let off = (p - k.bot).cross(d);
         // |off| / |d| is the distance to the line, at most the distance to the segment; the
         // computed values err by a few ulps of the operands' largest coordinate, which the
-        // slack in `reach_squared` covers.
-        if !at_least(off * off, self.reach_squared * d.dot(d)) || off == 0.0 {
+        // slack in `clearance_reach` covers. Not compared squared: near `MAX_COORDINATE` both
+        // squares overflow to infinity, and infinity is at least infinity.
+        if !at_least(off.abs(), self.clearance_reach * d.dot(d).sqrt()) || off == 0.0 {
             self.fail_because("a neighbour within the clearance");
         }
     }
