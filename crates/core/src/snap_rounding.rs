@@ -158,7 +158,7 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
         let _ = index.try_for_each_close_pair::<()>(&boxes, |i, j| {
             let (e, f) = (segments[i], segments[j]);
             // A ring's consecutive edges, the most common close pairs, meet at their shared end.
-            if e.b == f.a || f.b == e.a || !apart(e, f, s) {
+            if shared_end(e, f).is_some() || !apart(e, f, s) {
                 pairs.push((i as u32, j as u32));
             }
             Ok(())
@@ -173,7 +173,7 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
         // Touching points and overlaps end at input vertices, whose pixels are hot already; two
         // segments with an end in common (most close pairs: a ring's consecutive edges) cannot
         // cross.
-        if e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b {
+        if shared_end(e, f).is_some() {
             continue;
         }
         if let SegmentIntersection::Crossing(_) = predicates::segment_intersection(e, f) {
@@ -189,7 +189,7 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
     for &(i, j) in &pairs {
         // The pixel of an end both share (a ring's consecutive edges) is on both own lists.
         let (e, f) = (segments[i as usize], segments[j as usize]);
-        let shared = match [e.a, e.b].into_iter().find(|&v| v == f.a || v == f.b) {
+        let shared = match shared_end(e, f) {
             Some(v) => pixel_of(v, s),
             None => (i64::MIN, i64::MIN),
         };
@@ -210,6 +210,12 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
         }
     }
     PixelLists::of_entries(segments.len(), &met)
+}
+
+/// An end `e` and `f` have in common.
+#[inline]
+fn shared_end(e: Segment, f: Segment) -> Option<Point> {
+    [e.a, e.b].into_iter().find(|&v| v == f.a || v == f.b)
 }
 
 /// True when `e` and `f` are certainly farther apart than a pixel's diagonal `s·√2`: the ends of
