@@ -122,19 +122,21 @@ impl Edge {
         [w[0] + self.wind_dx * (1 - clip), w[1] + self.wind_dx * clip]
     }
 
-    /// x where the edge crosses height `y`: exact at the ends, and correctly rounded when the
-    /// products and their sum are exact (integer grids), since the division comes last: then it
-    /// is the value [`Edge::crossing_with`] computes for the same point, so a crossing on a
-    /// scanline that a slide passes and the crossing of the edges through it are one point.
+    /// x where the edge crosses height `y`: exact at the ends and all along a vertical edge, and
+    /// correctly rounded when the products and their sum are exact (integer grids), since the
+    /// division comes last: then it is the value [`Edge::crossing_with`] computes for the same
+    /// point, so a crossing on a scanline that a slide passes and the crossing of the edges
+    /// through it are one point. (`x·dy / dy` is not always `x`: a vertical edge needs its case.)
     #[inline]
     pub(crate) fn x_at(&self, y: f64) -> f64 {
+        let dx = self.top.x - self.bot.x;
         if y == self.top.y {
             self.top.x
-        } else if y == self.bot.y {
+        } else if y == self.bot.y || dx == 0.0 {
             self.bot.x
         } else {
             let dy = self.top.y - self.bot.y;
-            (self.bot.x * dy + (y - self.bot.y) * (self.top.x - self.bot.x)) / dy
+            (self.bot.x * dy + (y - self.bot.y) * dx) / dy
         }
     }
 
@@ -213,6 +215,10 @@ impl Edge {
             p = Point::new(steeper.x_at(y), y);
             let d = steeper.top - steeper.bot;
             off_flat = max_error.is_finite() && d.y < d.x.abs();
+        }
+        // On a vertical edge the crossing's x is that edge's, exactly.
+        if d1.x == 0.0 || d2.x == 0.0 {
+            return (Point::new(if d1.x == 0.0 { self.bot.x } else { other.bot.x }, p.y), off_flat);
         }
         let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);

@@ -135,7 +135,8 @@
 //!   coordinate), or the snap-rounded operands are swept instead:
 //!   - on coarse grids (every coordinate an integer below 2^9 in units of one power of two) it is
 //!     proven before the sweep: crossings are the exact ones rounded once, taken in their exact
-//!     order, and no rounded point comes within rounding of anything it is not on;
+//!     order, and no rounded point comes within rounding of anything it is not on; and where
+//!     every edge is horizontal or vertical, at any coordinates, nothing is rounded at all;
 //!   - on any other operands the sweep certifies it as it goes, in O(1) per event: no two events
 //!     within a box of `2D × 2H` of each other (`D` a thousandth of the largest coordinate, `H`
 //!     408 ulps of it), no edge flatter than `4H/D` near an output point (those are checked on a
@@ -239,9 +240,9 @@ enum Operands {
     /// Any valid operands: the sweep certifies that rounding left its output's form as the
     /// exact arrangement's (`rounding_certificate`), or gives no output.
     Float,
-    /// Operands on a coarse grid, where rounding provably changes nothing
-    /// ([`rounding_is_harmless`]).
-    CoarseGrid,
+    /// Operands on a coarse grid or with only horizontal and vertical edges, where rounding
+    /// provably changes nothing ([`rounding_is_harmless`]).
+    RoundingHarmless,
     /// The snap fallback's operands: noded (their edges meet only at vertices, so their
     /// straight-through vertices stay), and nothing is rounded.
     Noded,
@@ -274,7 +275,7 @@ impl Vatti {
     /// meet only at vertices, so that sweep rounds nothing. Either way the output's form is the
     /// exact arrangement's, of the operands or of the snapped ones.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
-        let operands = if rounding_is_harmless(subject, clip) { Operands::CoarseGrid } else { Operands::Float };
+        let operands = if rounding_is_harmless(subject, clip) { Operands::RoundingHarmless } else { Operands::Float };
         if let Some(out) = Vatti::sweep_clean(subject, clip, op, fill, sweep, operands) {
             return out;
         }
@@ -283,7 +284,7 @@ impl Vatti {
                 snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep))
             }
             // Not reached: the grid is chosen for valid operands' largest coordinate.
-            None => Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::CoarseGrid).unwrap_or_default(),
+            None => Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::RoundingHarmless).unwrap_or_default(),
         }
     }
 

@@ -1,5 +1,6 @@
 //! Proofs that rounding left the sweep's output with the exact arrangement's form: for operands
-//! on a coarse grid, before the sweep ([`rounding_is_harmless`]); for any others, built as the
+//! on a coarse grid or with only horizontal and vertical edges, before the sweep
+//! ([`rounding_is_harmless`]); for any others, built as the
 //! sweep goes ([`RoundingCertificate`]): every output point far from every edge and event it is
 //! not on.
 //!
@@ -78,8 +79,15 @@ const COMPARISONS: usize = 64;
 const HARMLESS_DIGITS: u32 = 9;
 
 /// True when rounding cannot change the form of the sweep's output, so it needs no certificate:
-/// every coordinate of `subject` and `clip` is an integer below 2^m (m = [`HARMLESS_DIGITS`]) in
-/// units of one power of two (`predicates::on_coarse_grid`). In those units:
+/// the operands are on a coarse grid ([`coarse_grid`]) or every edge is horizontal or
+/// vertical ([`axis_parallel`]).
+pub(crate) fn rounding_is_harmless(subject: &Polygons, clip: &Polygons) -> bool {
+    coarse_grid(subject, clip) || axis_parallel(subject, clip)
+}
+
+/// True when every coordinate of `subject` and `clip` is an integer below 2^m (m =
+/// [`HARMLESS_DIGITS`]) in units of one power of two (`predicates::on_coarse_grid`). In those
+/// units:
 /// - every product in a crossing's computation is exact, so a crossing is the exact one rounded
 ///   once, and an edge's x on a scanline twice: under 2^(m-51) off;
 /// - a crossing is a fraction with a denominator below 2^(2m+3), so two distinct crossing heights
@@ -93,7 +101,7 @@ const HARMLESS_DIGITS: u32 = 9;
 /// Such inputs (several edges through one crossing, rows of vertices) are where the certificate
 /// would fail. Property used: coordinates of few binary digits (grids, pixel and tile
 /// coordinates).
-pub(crate) fn rounding_is_harmless(subject: &Polygons, clip: &Polygons) -> bool {
+fn coarse_grid(subject: &Polygons, clip: &Polygons) -> bool {
     fn coarse<'a>(points: impl Iterator<Item = &'a Point>) -> bool {
         on_coarse_grid(points.flat_map(|q| [q.x, q.y]), HARMLESS_DIGITS)
     }
@@ -103,10 +111,29 @@ pub(crate) fn rounding_is_harmless(subject: &Polygons, clip: &Polygons) -> bool 
     coarse(points().step_by(61)) && coarse(points())
 }
 
+/// True when every edge of `subject` and `clip` is horizontal or vertical. Then nothing the sweep
+/// outputs is rounded: vertical edges cross only horizontal ones, on the scanline of the
+/// horizontal, at the vertical's x (`Edge::x_at` is exact along a vertical edge), and every
+/// event is at an input vertex's height, so the events come in their exact order. The output is
+/// the exact arrangement's, with every coordinate an input's. Property used: rectilinear
+/// operands (layouts, raster outlines, tiles, boxes), at any coordinates.
+fn axis_parallel(subject: &Polygons, clip: &Polygons) -> bool {
+    [subject, clip].iter().all(|p| {
+        p.rings.iter().all(|r| {
+            let n = r.points.len();
+            (0..n).all(|i| {
+                let (a, b) = (r.points[i], r.points[if i + 1 == n { 0 } else { i + 1 }]);
+                a.x == b.x || a.y == b.y
+            })
+        })
+    })
+}
+
 /// The certificate's state over one sweep.
 #[derive(Debug, Default)]
 pub(crate) struct RoundingCertificate {
-    /// False for sweeps whose rounding is harmless anyway (coarse grids, snap-rounded operands).
+    /// False for sweeps whose rounding is harmless anyway (coarse grids, axis-parallel edges,
+    /// snap-rounded operands).
     enabled: bool,
     /// The largest accepted error of a crossing's quotient, and `r`: the most a point moves.
     max_error: f64,
@@ -668,5 +695,14 @@ mod tests {
         assert!(!rounding_is_harmless(&a, &polygon(&[(0.5, 0.125), (2.0, 3.0), (1.0, 3.0)])));
         assert!(!rounding_is_harmless(&a, &polygon(&[(0.1, 0.0), (2.0, 3.0), (1.0, 3.0)])));
         assert!(!rounding_is_harmless(&a, &polygon(&[(1024.0, 0.0), (2.0, 3.0), (1.0, 3.0)])));
+    }
+
+    #[test]
+    fn axis_parallel_edges_need_no_certificate_at_any_coordinates() {
+        let rectilinear = |x: f64, y: f64| polygon(&[(x, y), (x + 0.3, y), (x + 0.3, y + 0.7), (x + 0.1, y + 0.7)]);
+        let square = polygon(&[(0.1, 0.2), (1.3, 0.2), (1.3, 1.7), (0.1, 1.7)]);
+        assert!(rounding_is_harmless(&square, &polygon(&[(0.7, 0.3), (2.1, 0.3), (2.1, 0.9), (0.7, 0.9)])));
+        // One slanted edge (the fourth, back to the start) is enough to need it.
+        assert!(!rounding_is_harmless(&square, &rectilinear(0.55, 0.35)));
     }
 }

@@ -1,13 +1,14 @@
 //! Property tests on random float and integer-grid inputs: the exact oracle, the area
 //! identities, invariance under translation and mirroring, operand order of symmetric
-//! operations, and the trapezoid output against the polygon output.
+//! operations, the trapezoid output against the polygon output, and exact output of operands
+//! with only horizontal and vertical edges.
 
 use clip_core::{BoolOp, FillRule, Point, PolygonClipper, Polygons, Ring, Trapezoid};
 use clip_oracle::polygon::{
     OutputRules, REGION_TOLERANCE, check_area_identities, check_polygon_result, same_region, tolerance,
 };
 use clip_testkit::workload::mirrored;
-use clip_vatti::Vatti;
+use clip_vatti::{Route, Sweep, SweepAxis, Vatti};
 use proptest::prelude::*;
 
 /// Rings on a small integer grid: shared vertices, collinear overlaps, horizontals, touching.
@@ -28,6 +29,26 @@ fn random_polygons() -> impl Strategy<Value = Polygons> {
 
 fn any_polygons() -> impl Strategy<Value = Polygons> {
     prop_oneof![grid_polygons(), random_polygons()]
+}
+
+/// Rings of horizontal and vertical edges, closed walks that turn at every vertex, with
+/// coordinates off every grid drawn from five values per axis: shared coordinates, collinear
+/// overlaps, touching and crossing walks.
+fn rectilinear_polygons() -> impl Strategy<Value = Polygons> {
+    let pool = || prop::collection::vec(0.0f64..10.0, 5);
+    let walks = prop::collection::vec(prop::collection::vec((0usize..5, 0usize..5), 2..7), 1..3);
+    (pool(), pool(), walks).prop_map(|(xs, ys, walks)| {
+        let ring = |walk: Vec<(usize, usize)>| {
+            let (x0, mut points) = (xs[walk[0].0], Vec::new());
+            for (k, &(i, j)) in walk.iter().enumerate() {
+                points.push(Point::new(xs[i], ys[j]));
+                let x = walk.get(k + 1).map_or(x0, |&(i, _)| xs[i]);
+                points.push(Point::new(x, ys[j]));
+            }
+            Ring::new(points)
+        };
+        Polygons::new(walks.into_iter().map(ring).filter(|r| r.distinct_points() >= 3).collect())
+    })
 }
 
 fn op() -> impl Strategy<Value = BoolOp> {
@@ -110,5 +131,28 @@ proptest! {
         let rings = Polygons::new(traps.iter().map(Trapezoid::to_ring).filter(|r| r.distinct_points() >= 3).collect());
         let verdict = check_polygon_result(&s, &c, op, fill, &rings, &OutputRules::bridged(FillRule::NonZero, REGION_TOLERANCE));
         prop_assert!(verdict.is_ok(), "{}", verdict.unwrap_err());
+    }
+
+    /// Nothing is rounded where every edge is horizontal or vertical: every output coordinate is
+    /// an input coordinate, under both sweeps and both axes (an x·dy/dy taken along a vertical
+    /// edge was an ulp off).
+    #[test]
+    fn rectilinear_operands_give_input_coordinates(s in rectilinear_polygons(), c in rectilinear_polygons(),
+                                                   op in op(), fill in fill()) {
+        let coordinates = |f: fn(Point) -> f64| -> Vec<u64> {
+            [&s, &c].iter().flat_map(|p| p.rings.iter().flat_map(|r| r.points.iter().map(move |&q| f(q).to_bits()))).collect()
+        };
+        let (xs, ys) = (coordinates(|q| q.x), coordinates(|q| q.y));
+        for sweep in [Sweep::Scanbeam, Sweep::Events] {
+            for axis in [SweepAxis::Y, SweepAxis::X] {
+                let out = Vatti.clip_along(Route::Whole, Some(sweep), Some(axis), &s, &c, op, fill).unwrap();
+                for q in out.rings.iter().flat_map(|r| &r.points) {
+                    prop_assert!(xs.contains(&(q.x + 0.0).to_bits()) && ys.contains(&(q.y + 0.0).to_bits()),
+                        "{sweep:?} {axis:?}: {q:?} is not at input coordinates");
+                }
+                let verdict = check_polygon_result(&s, &c, op, fill, &out, &OutputRules::conventional(REGION_TOLERANCE));
+                prop_assert!(verdict.is_ok(), "{sweep:?} {axis:?}: {}", verdict.unwrap_err());
+            }
+        }
     }
 }
