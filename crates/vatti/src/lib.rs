@@ -276,15 +276,20 @@ impl Vatti {
     /// exact arrangement's, of the operands or of the snapped ones.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
         let operands = if rounding_is_harmless(subject, clip) { Operands::RoundingHarmless } else { Operands::Float };
-        if let Some(out) = Vatti::sweep_clean(subject, clip, op, fill, sweep, operands) {
+        let (subject, clip) = swept_operands(subject, clip, sweep, operands == Operands::Float);
+        if let Some(out) = Vatti::sweep_clean(&subject, &clip, op, fill, sweep, operands) {
             return out;
         }
-        match snap_fallback::SnappedOperands::of(subject, clip) {
+        // Snapped as swept: without their opposite coincident pairs, so shared borders are noded
+        // once, not twice.
+        match snap_fallback::SnappedOperands::of(&subject, &clip) {
             Some(snapped) => {
                 snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep))
             }
             // Not reached: the grid is chosen for valid operands' largest coordinate.
-            None => Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::RoundingHarmless).unwrap_or_default(),
+            None => {
+                Vatti::sweep_clean(&subject, &clip, op, fill, sweep, Operands::RoundingHarmless).unwrap_or_default()
+            }
         }
     }
 
@@ -293,8 +298,8 @@ impl Vatti {
         Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Noded).unwrap_or_default()
     }
 
-    /// The sweep's conventional rings of valid operands, `None` where they are
-    /// [`Operands::Float`] and the rounding certificate failed.
+    /// The sweep's conventional rings of valid operands (as [`swept_operands`] gives them), `None`
+    /// where they are [`Operands::Float`] and the rounding certificate failed.
     fn sweep_clean(
         subject: &Polygons,
         clip: &Polygons,
@@ -309,7 +314,8 @@ impl Vatti {
         })
     }
 
-    /// Runs the sweep of valid operands in this thread's reused buffers and hands its raw rings,
+    /// Runs the sweep of valid operands (as [`swept_operands`] gives them) in this thread's
+    /// reused buffers and hands its raw rings,
     /// trapezoids and whether its rounding is certified to `finish`. `noded`: the operands' edges
     /// meet only at vertices (snap rounded), so their straight-through vertices are kept
     /// (`Bounds::rebuild`). `certify`: rounding is certified (else the certificate holds), and the
@@ -326,16 +332,8 @@ impl Vatti {
         certify: bool,
         finish: impl FnOnce(&RawRings, &mut Touches, &mut Turns, Vec<Trapezoid>, Result<(), &'static str>) -> T,
     ) -> T {
-        // The event sweep is taken for large operands, where a hash pass over the edges costs
-        // little beside the sweep and layers that tile the plane are common; and a certified
-        // sweep would fail where an edge crosses such a pair (two crossings at one point).
-        let (subject, clip) = if sweep == Sweep::Events || certify {
-            (cancel_opposite_edges(subject), cancel_opposite_edges(clip))
-        } else {
-            (Cow::Borrowed(subject), Cow::Borrowed(clip))
-        };
         Scratch::with(|scratch| {
-            scratch.bounds.rebuild(&subject, &clip, noded);
+            scratch.bounds.rebuild(subject, clip, noded);
             let buffers = std::mem::take(&mut scratch.sweep);
             let mut line = SweepLine::new(sweep, &scratch.bounds, Rules::new(op, fill), trapezoids, certify, buffers);
             line.run();
@@ -397,6 +395,24 @@ fn swept(a: &Polygons, b: &Polygons, op: BoolOp, fill: FillRule, plan: Plan) -> 
     }
 }
 
+/// The operands as the sweep takes them: for the event sweep and for a certified one, without
+/// their pairs of exactly coincident edges running opposite ways (`opposite_edges`). The event
+/// sweep is taken for large operands, where a hash pass over the edges costs little beside the
+/// sweep and layers that tile the plane are common; and a certified sweep would fail where an
+/// edge crosses such a pair (two crossings at one point).
+fn swept_operands<'a>(
+    subject: &'a Polygons,
+    clip: &'a Polygons,
+    sweep: Sweep,
+    certify: bool,
+) -> (Cow<'a, Polygons>, Cow<'a, Polygons>) {
+    if sweep == Sweep::Events || certify {
+        (cancel_opposite_edges(subject), cancel_opposite_edges(clip))
+    } else {
+        (Cow::Borrowed(subject), Cow::Borrowed(clip))
+    }
+}
+
 /// `subject op clip` as trapezoids along `plan`.
 fn trapezoids_planned(
     subject: &Polygons,
@@ -408,6 +424,7 @@ fn trapezoids_planned(
 ) -> Vec<Trapezoid> {
     let (a, b, op) = reduced(plan.route, subject, clip, prepared, op, fill);
     let sweep = plan.sweep_for(edge_count(&a) + edge_count(&b));
+    let (a, b) = swept_operands(&a, &b, sweep, false);
     Vatti::sweep(sweep, &a, &b, op, fill, true, false, false, |_, _, _, traps, _| traps)
 }
 

@@ -482,7 +482,7 @@ mod tests {
     use clip_testkit::workload::polygon_case;
 
     use super::*;
-    use crate::{Operands, Sweep, Vatti};
+    use crate::{Operands, Sweep, Vatti, swept_operands};
 
     fn polygon(points: &[(f64, f64)]) -> Polygons {
         Polygons::from(Ring::new(points.iter().map(|&(x, y)| Point::new(x, y)).collect()))
@@ -491,7 +491,10 @@ mod tests {
     /// The check that fails for `a op b` (`Ok`: the certificate holds), by both sweeps, which
     /// must agree on whether it holds.
     fn verdict(a: &Polygons, b: &Polygons, op: BoolOp) -> Result<(), &'static str> {
-        let run = |sweep| Vatti::sweep(sweep, a, b, op, FillRule::NonZero, false, false, true, |_, _, _, _, v| v);
+        let run = |sweep| {
+            let (a, b) = swept_operands(a, b, sweep, true);
+            Vatti::sweep(sweep, &a, &b, op, FillRule::NonZero, false, false, true, |_, _, _, _, v| v)
+        };
         let (events, scanbeam) = (run(Sweep::Events), run(Sweep::Scanbeam));
         assert_eq!(
             events.is_ok(),
@@ -598,8 +601,8 @@ mod tests {
             let case = polygon_case("near-coincident", 7, index, WindowKind::Any).expect("a polygon workload");
             for op in BoolOp::ALL {
                 for sweep in [Sweep::Events, Sweep::Scanbeam] {
-                    let out =
-                        Vatti::sweep_clean(&case.subject, &case.clip, op, FillRule::EvenOdd, sweep, Operands::Float);
+                    let (a, b) = swept_operands(&case.subject, &case.clip, sweep, true);
+                    let out = Vatti::sweep_clean(&a, &b, op, FillRule::EvenOdd, sweep, Operands::Float);
                     if let Some(out) = out {
                         held += 1;
                         check_valid_output(&out).unwrap_or_else(|e| panic!("case {index} {op:?} {sweep:?}: {e}"));

@@ -1195,6 +1195,7 @@ mod tests {
             for sweep in [Sweep::Scanbeam, Sweep::Events] {
                 for op in [BoolOp::Intersection, BoolOp::Union, BoolOp::Difference] {
                     for fill in [FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative] {
+                        let (a, b) = crate::swept_operands(&a, &b, sweep, false);
                         let touched =
                             Vatti::sweep(sweep, &a, &b, op, fill, false, false, false, |raw, touches, _, _, _| {
                                 touches.find(raw);
