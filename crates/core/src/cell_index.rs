@@ -118,10 +118,11 @@ impl CellIndex {
     /// The column and row holding `p` (clamped to the grid).
     fn coordinates(&self, p: Point) -> (u64, u64) {
         // Truncation is the floor of a positive quotient: `f64::floor` is a library call on
-        // targets without SSE4.1, and this runs for every box and pair the index visits.
+        // targets without SSE4.1, and this runs for every box and pair the index visits. Through
+        // i64 (one instruction; saturating, as `min` needs), not u64 (a branchy sequence).
         let index = |v: f64, lo: f64, n: u64| {
             let k = (v - lo) / self.size;
-            if k > 0.0 { (k as u64).min(n - 1) } else { 0 }
+            if k > 0.0 { (k as i64 as u64).min(n - 1) } else { 0 }
         };
         (index(p.x, self.origin.x, self.columns), index(p.y, self.origin.y, self.rows))
     }
