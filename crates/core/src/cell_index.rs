@@ -7,6 +7,9 @@
 
 use crate::{Point, Rect};
 
+/// The most columns (and rows) of cells: keys fit 32 bits.
+const MAX_SIDE_CELLS: u64 = 1 << 16;
+
 /// Boxes binned into a uniform grid whose square cells are about as large as a typical box,
 /// kept sparse as sorted (cell, box) entries: every cell a box covers lists it.
 #[derive(Clone, Debug)]
@@ -15,8 +18,9 @@ pub struct CellIndex {
     size: f64,
     columns: u64,
     rows: u64,
-    /// (cell key, box index), sorted.
-    entries: Vec<(u64, u32)>,
+    /// (cell key, box index), sorted. At most 2^16 columns and rows, so a key fits 32 bits: 8
+    /// bytes an entry, half the memory a sort and a walk of millions of them move.
+    entries: Vec<(u32, u32)>,
 }
 
 /// Sorts `entries`, made box by box (so ascending in box within each cell), by cell key below
@@ -24,18 +28,18 @@ pub struct CellIndex {
 /// (at most three: keys are below 2^32), or of up to sixteen in two passes where there are
 /// enough entries to fill the larger counts. Linear where a comparison sort is n log n, and
 /// indexes of thousands of edges are built for every clip the form check examines.
-fn sort_by_cell(entries: &mut Vec<(u64, u32)>, cells: u64) {
+fn sort_by_cell(entries: &mut Vec<(u32, u32)>, cells: u64) {
     if entries.len() < 256 {
         entries.sort_unstable();
         return;
     }
     let bits = 64 - cells.saturating_sub(1).leading_zeros();
     let digit_bits = if bits > 22 && entries.len() >= 1 << 16 { bits.div_ceil(2) } else { 11 };
-    let mut other = vec![(0u64, 0u32); entries.len()];
+    let mut other = vec![(0u32, 0u32); entries.len()];
     let mut starts = vec![0usize; 1 << digit_bits];
     let mut shift = 0;
     while shift < bits {
-        let digit = |key: u64| ((key >> shift) & ((1 << digit_bits) - 1)) as usize;
+        let digit = |key: u32| ((key >> shift) & ((1 << digit_bits) - 1)) as usize;
         starts.fill(0);
         for e in entries.iter() {
             starts[digit(e.0)] += 1;
@@ -90,14 +94,16 @@ impl CellIndex {
             return None;
         }
         let size = size.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
-        let count = |span: f64| ((span / size).floor() as u64).saturating_add(1);
+        // At most 2^16 each, whatever the rounding of the quotient: the last column and row
+        // then reach a little farther, as `coordinates` clamps every point the same way.
+        let count = |span: f64| ((span / size).floor() as u64).saturating_add(1).min(MAX_SIDE_CELLS);
         let mut index =
             CellIndex { origin: b.min, size, columns: count(b.width()), rows: count(b.height()), entries: Vec::new() };
         let mut entries = Vec::with_capacity(2 * boxes.len());
         for (i, r) in boxes.iter().enumerate() {
             let ((x0, y0), (x1, y1)) = (index.coordinates(r.min), index.coordinates(r.max));
             for y in y0..=y1 {
-                entries.extend((x0..=x1).map(|x| (y * index.columns + x, i as u32)));
+                entries.extend((x0..=x1).map(|x| ((y * index.columns + x) as u32, i as u32)));
             }
         }
         sort_by_cell(&mut entries, index.columns.saturating_mul(index.rows));
@@ -111,7 +117,7 @@ impl CellIndex {
     }
 
     /// The (cell key, box index) entries, sorted by cell: one per cell a box covers.
-    pub fn entries(&self) -> &[(u64, u32)] {
+    pub fn entries(&self) -> &[(u32, u32)] {
         &self.entries
     }
 
@@ -128,9 +134,9 @@ impl CellIndex {
     }
 
     /// The key of the cell holding `p` (clamped to the grid).
-    pub fn cell(&self, p: Point) -> u64 {
+    pub fn cell(&self, p: Point) -> u32 {
         let (x, y) = self.coordinates(p);
-        y * self.columns + x
+        (y * self.columns + x) as u32
     }
 
     /// The boxes listed in the cell holding `p`.
@@ -187,7 +193,7 @@ impl CellIndex {
             return;
         }
         for y in y0..=y1 {
-            let (from, to) = (y * self.columns + x0, y * self.columns + x1);
+            let (from, to) = ((y * self.columns + x0) as u32, (y * self.columns + x1) as u32);
             let start = self.entries.partition_point(|e| e.0 < from);
             for &(cell, i) in self.entries[start..].iter().take_while(|e| e.0 <= to) {
                 let b = &boxes[i as usize];
@@ -237,7 +243,7 @@ impl CellIndex {
                 continue;
             }
             let ((x0, _), (x1, _)) = (self.coordinates(stretch.min), self.coordinates(stretch.max));
-            let (from, to) = (row * self.columns + x0, row * self.columns + x1);
+            let (from, to) = ((row * self.columns + x0) as u32, (row * self.columns + x1) as u32);
             let start = self.entries.partition_point(|e| e.0 < from);
             for &(_, i) in self.entries[start..].iter().take_while(|e| e.0 <= to) {
                 if boxes[i as usize].intersects(&stretch) {
@@ -270,14 +276,14 @@ mod tests {
             (20_000, 1 << 32),
             (700, 1 << 22),
             (70_000, 1 << 32),
-            (70_000, 5 << 30),
+            (70_000, (1 << 32) - 1),
         ] {
             // Made box by box, each box's cells in any order: ascending in box within a cell.
-            let mut entries: Vec<(u64, u32)> = Vec::new();
+            let mut entries: Vec<(u32, u32)> = Vec::new();
             let mut boxes = 0u32;
             while entries.len() < count {
                 for _ in 0..1 + next(5) {
-                    entries.push((next(cells), boxes));
+                    entries.push((next(cells) as u32, boxes));
                 }
                 boxes += 1;
             }
@@ -315,6 +321,35 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn the_full_grid_of_2_to_the_16_cells_a_side_keeps_every_close_pair() {
+        // Tiny boxes at both ends of a wide, tall extent: cells are at their smallest, and the
+        // grid at its largest (keys up to 2^32 - 1); boxes on the far border are clamped in.
+        let mut boxes = Vec::new();
+        for k in 0..30 {
+            let t = f64::from(k) * 1e-9;
+            boxes.push(Rect::new(t, t, t + 2e-9, t + 2e-9));
+            boxes.push(Rect::new(1.0 - t - 2e-9, 1.0 - t - 2e-9, 1.0 - t, 1.0 - t));
+        }
+        boxes.push(Rect::new(1.0 - 1e-12, 0.0, 1.0, 1.0));
+        let index = CellIndex::with_cell_size(&boxes, 1e-12).expect("boxes");
+        assert_eq!((index.columns, index.rows), (MAX_SIDE_CELLS, MAX_SIDE_CELLS));
+        let mut found = Vec::new();
+        index
+            .try_for_each_close_pair::<()>(&boxes, |i, j| {
+                found.push((i.min(j), i.max(j)));
+                Ok(())
+            })
+            .unwrap();
+        found.sort_unstable();
+        let expected: Vec<(usize, usize)> = (0..boxes.len())
+            .flat_map(|i| (i + 1..boxes.len()).map(move |j| (i, j)))
+            .filter(|&(i, j)| boxes[i].intersects(&boxes[j]))
+            .collect();
+        assert!(expected.len() > 60);
+        assert_eq!(found, expected);
     }
 
     #[test]
