@@ -293,7 +293,9 @@ impl Vatti {
         }
     }
 
-    /// The sweep's conventional rings of snap-rounded operands.
+    /// The sweep's conventional rings of snap-rounded operands, swept as they are: they were
+    /// snapped from operands without opposite coincident pairs, and the sweep takes the few that
+    /// snapping makes as it takes any overlapping edges.
     fn sweep_polygons_once(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
         Vatti::sweep_clean(subject, clip, op, fill, sweep, Operands::Noded).unwrap_or_default()
     }
