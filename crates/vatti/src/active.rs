@@ -326,6 +326,15 @@ impl Edge {
     pub(crate) fn side_of(&self, p: Point) -> Orientation {
         orient(self.bot, self.top, p)
     }
+
+    /// True when `p` lies exactly on the edge's line, decided exactly where the float
+    /// determinant is zero; false where it is not, even for a point exactly on the line whose
+    /// determinant rounds off zero (callers read false as "maybe off": safe). Cheap for the
+    /// rounded crossings it mostly meets, which the exact test would take its slow path on.
+    #[inline]
+    pub(crate) fn surely_through(&self, p: Point) -> bool {
+        (p - self.bot).cross(self.top - self.bot) == 0.0 && self.side_of(p) == Orientation::Collinear
+    }
 }
 
 /// The active edges: an arena of edge records, their left-to-right order as a doubly linked

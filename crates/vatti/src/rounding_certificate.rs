@@ -35,6 +35,10 @@
 //! stay on one side of it but for that end, which is a point of the scanline; a point of the
 //! scanline moves along it, so it cannot reach them.
 //!
+//! A crossing whose computed point lies exactly on both its edges is the exact crossing, not a
+//! rounded point (integer inputs have many): where every point output is exact and the events
+//! came in their exact order, the output is the exact one whatever the checks found.
+//!
 //! Where the certificate fails and some output point was rounded, the caller sweeps the
 //! snap-rounded operands instead (`snap_fallback`), whose output is valid by construction.
 //! Property used: none of the input's shape. It fails where features come within `δ` of each
@@ -226,6 +230,13 @@ impl RoundingCertificate {
     #[inline]
     pub(crate) fn enabled(&self) -> bool {
         self.enabled && !self.failed
+    }
+
+    /// True when this sweep is certified at all, failed or not: then whether a point output is
+    /// rounded decides whether a failed check matters ([`RoundingCertificate::holds`]).
+    #[inline]
+    pub(crate) fn certifying(&self) -> bool {
+        self.enabled
     }
 
     /// The largest crossing error accepted, or infinity when nothing is checked (a crossing is
@@ -588,6 +599,26 @@ mod tests {
             for fill in FillRule::ALL {
                 let out = crate::clip_planned(&square, &spike, None, op, fill, crate::route::Plan::WHOLE);
                 check_valid_output(&out).unwrap_or_else(|e| panic!("{op:?} {fill:?}: {e}"));
+            }
+        }
+    }
+
+    /// Crossings f64 holds exactly are not rounded: integer operands past the coarse grids
+    /// (wind-mills at 10^4 edges: multiples of 10 up to 2,840, eleven binary digits in units of
+    /// two) have events in each other's boxes, which fails the checks, yet every crossing they
+    /// output is exact, so the certificate holds, and every output coordinate is an integer.
+    #[test]
+    fn exact_crossings_let_the_certificate_hold_where_its_checks_fail() {
+        let case = clip_testkit::workload::polygon_case_sized("wind-mill", 1, 0, 10_000, WindowKind::Any)
+            .expect("a polygon workload");
+        assert!(!rounding_is_harmless(&case.subject, &case.clip), "not on a coarse grid");
+        for op in BoolOp::ALL {
+            for sweep in [Sweep::Events, Sweep::Scanbeam] {
+                let (a, b) = swept_operands(&case.subject, &case.clip, sweep, true);
+                let out = Vatti::sweep_clean(&a, &b, op, FillRule::EvenOdd, sweep, Operands::Float)
+                    .unwrap_or_else(|| panic!("{op:?} {sweep:?}: the certificate failed"));
+                check_valid_output(&out).unwrap_or_else(|e| panic!("{op:?} {sweep:?}: {e}"));
+                assert!(out.points().all(|p| p.x.fract() == 0.0 && p.y.fract() == 0.0), "{op:?} {sweep:?}");
             }
         }
     }

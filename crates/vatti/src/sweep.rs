@@ -794,7 +794,14 @@ impl<'a> SweepLine<'a> {
             let counts = !(self.cert.is_flat(a) || self.cert.is_flat(b));
             self.cert.between_scanlines(p, [key(left, a), key(right, b)], counts);
         }
-        self.rounded_crossing = true;
+        // A point exactly on both edges is their exact crossing: nothing rounded (on integer
+        // inputs past the coarse grids most crossings are). Asked only in a certified sweep,
+        // where it decides whether a failed check matters.
+        let exact = self.cert.certifying() && {
+            let (a, b) = (self.ael.get(left), self.ael.get(right));
+            a.surely_through(p) && b.surely_through(p)
+        };
+        self.rounded_crossing = !exact;
         self.between = true;
         self.crossing_pair = (left, right);
         self.cross(left, p);
@@ -902,8 +909,9 @@ impl<'a> SweepLine<'a> {
             k = self.ael.prev(k);
         }
         // A crossing between scanlines is output where it was computed (and maybe clamped onto an
-        // end of its edges), so it counts as rounded even where it lands on an input vertex.
-        if rounded || self.between {
+        // end of its edges), so it counts as rounded even where it lands on an input vertex,
+        // unless it lies exactly on both edges.
+        if rounded || (self.between && self.rounded_crossing) {
             self.cert.rounded_output();
         }
         if self.cert.enabled() {
