@@ -323,6 +323,27 @@ mod tests {
         }
     }
 
+    /// The pairs `try_for_each_close_pair` visits, each as (lower, higher), sorted.
+    fn close_pairs(index: &CellIndex, boxes: &[Rect]) -> Vec<(usize, usize)> {
+        let mut found = Vec::new();
+        index
+            .try_for_each_close_pair::<()>(boxes, |i, j| {
+                found.push((i.min(j), i.max(j)));
+                Ok(())
+            })
+            .unwrap();
+        found.sort_unstable();
+        found
+    }
+
+    /// Every pair of `boxes` that meet, by brute force, sorted.
+    fn meeting_pairs(boxes: &[Rect]) -> Vec<(usize, usize)> {
+        (0..boxes.len())
+            .flat_map(|i| (i + 1..boxes.len()).map(move |j| (i, j)))
+            .filter(|&(i, j)| boxes[i].intersects(&boxes[j]))
+            .collect()
+    }
+
     #[test]
     fn the_full_grid_of_2_to_the_16_cells_a_side_keeps_every_close_pair() {
         // Tiny boxes at both ends of a wide, tall extent: cells are at their smallest, and the
@@ -336,20 +357,9 @@ mod tests {
         boxes.push(Rect::new(1.0 - 1e-12, 0.0, 1.0, 1.0));
         let index = CellIndex::with_cell_size(&boxes, 1e-12).expect("boxes");
         assert_eq!((index.columns, index.rows), (MAX_SIDE_CELLS, MAX_SIDE_CELLS));
-        let mut found = Vec::new();
-        index
-            .try_for_each_close_pair::<()>(&boxes, |i, j| {
-                found.push((i.min(j), i.max(j)));
-                Ok(())
-            })
-            .unwrap();
-        found.sort_unstable();
-        let expected: Vec<(usize, usize)> = (0..boxes.len())
-            .flat_map(|i| (i + 1..boxes.len()).map(move |j| (i, j)))
-            .filter(|&(i, j)| boxes[i].intersects(&boxes[j]))
-            .collect();
+        let expected = meeting_pairs(&boxes);
         assert!(expected.len() > 60);
-        assert_eq!(found, expected);
+        assert_eq!(close_pairs(&index, &boxes), expected);
     }
 
     #[test]
@@ -363,23 +373,7 @@ mod tests {
         boxes.push(Rect::new(-3.0, 2.0, 30.0, 2.1));
         boxes.push(Rect::new(4.0, -1.0, 4.2, 9.0));
         let index = CellIndex::new(&boxes).expect("boxes");
-        let mut found = Vec::new();
-        index
-            .try_for_each_close_pair::<()>(&boxes, |i, j| {
-                found.push((i.min(j), i.max(j)));
-                Ok(())
-            })
-            .unwrap();
-        found.sort_unstable();
-        let mut expected = Vec::new();
-        for i in 0..boxes.len() {
-            for j in i + 1..boxes.len() {
-                if boxes[i].intersects(&boxes[j]) {
-                    expected.push((i, j));
-                }
-            }
-        }
-        assert_eq!(found, expected);
+        assert_eq!(close_pairs(&index, &boxes), meeting_pairs(&boxes));
         for query in
             [Rect::new(2.0, 1.0, 5.0, 3.0), Rect::new(-100.0, -100.0, 100.0, 100.0), Rect::new(9.0, 9.0, 9.0, 9.0)]
         {
