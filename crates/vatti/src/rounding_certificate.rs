@@ -122,15 +122,7 @@ fn coarse_grid(subject: &Polygons, clip: &Polygons) -> bool {
 /// the exact arrangement's, with every coordinate an input's. Property used: rectilinear
 /// operands (layouts, raster outlines, tiles, boxes), at any coordinates.
 fn axis_parallel(subject: &Polygons, clip: &Polygons) -> bool {
-    [subject, clip].iter().all(|p| {
-        p.rings.iter().all(|r| {
-            let n = r.points.len();
-            (0..n).all(|i| {
-                let (a, b) = (r.points[i], r.points[if i + 1 == n { 0 } else { i + 1 }]);
-                a.x == b.x || a.y == b.y
-            })
-        })
-    })
+    subject.edges().chain(clip.edges()).all(|e| e.a.x == e.b.x || e.a.y == e.b.y)
 }
 
 /// The certificate's state over one sweep.
