@@ -15,14 +15,15 @@
 //!
 //! 1. **Events apart.** No two events (input vertices, crossings, a slide's crossings,
 //!    horizontal edges as events as wide as they are) lie within a box of `2W × 2H` of each
-//!    other (`H = δ + 2r`, `W = D/2 + 2δ`, `D` 2^-16 of the operands' largest coordinate),
-//!    unless both lie on one scanline (exactly: vertices, and a slide's crossings, which move
+//!    other (`H = δ + 2r`, `W = 2H/s + 2δ`, `s` the least rise per unit of x of the edges that
+//!    are not flat: at least `4H/D`, so `W ≤ D/2 + 2δ`, `D` 2^-16 of the operands' largest
+//!    coordinate), unless both lie on one scanline (exactly: vertices, and a slide's crossings, which move
 //!    along it), both are crossings of one edge, or neither counts (crossings of a flat edge,
 //!    vertices of flat edges only: they cannot come between a point and an edge that is not flat).
 //! 2. **Flat edges on their own.** An edge rising less than `4H/D` per unit of x (and not
 //!    horizontal) is checked against every output point near it, on a list of its own. Any other
-//!    edge within `δ` of a point runs at most `D/4` in x within `H` of the point's height, so it
-//!    crosses the point's box from bottom to top, with no end in it (test 1).
+//!    edge within `δ` of a point runs at most `H/s ≤ D/4` in x within `H` of the point's height,
+//!    so it crosses the point's box from bottom to top, with no end in it (test 1).
 //! 3. **Neighbours clear.** At each output point `p`, the nearest edge on either side in the
 //!    table that does not pass through `p` and is not flat is farther than `δ` from it; on a
 //!    scanline, the nearest edge *spanning* it, past edges that end or start on it.
@@ -43,7 +44,9 @@
 //! snap-rounded operands instead (`snap_fallback`), whose output is valid by construction.
 //! Property used: none of the input's shape. It fails where features come within `δ` of each
 //! other: nearly coincident edges, vertices a few ulps off an edge, three edges through a
-//! crossing f64 cannot hold; and where events lie within `H` in height and `D` in x.
+//! crossing f64 cannot hold; and where events lie within `H` in height and `W` in x: the box is
+//! narrow where every edge that is not flat is steep (rings of many vertices, grids of polygons:
+//! events on one height far apart), as wide as `D` where some edge nearly is flat.
 
 use clip_core::predicates::{on_coarse_grid, on_segment};
 use clip_core::{Point, Polygons, Segment};
@@ -138,8 +141,9 @@ pub(crate) struct RoundingCertificate {
     /// the computed distances err by.
     clearance: f64,
     clearance_reach: f64,
-    /// `H = δ + 2r` and `W = D/2 + 2δ`: the box within which two events may not lie (heights err
-    /// by `r`), and the least rise per unit of x of an edge that is not flat, `4H/D`.
+    /// `H = δ + 2r` and `W = 2H/s + 2δ`: the box within which two events may not lie (heights err
+    /// by `r`; `s` the least rise of an edge that is not flat), and the least rise per unit of x
+    /// of an edge that is not flat, `4H/D`.
     height: f64,
     reach: f64,
     least_rise: f64,
@@ -152,13 +156,11 @@ pub(crate) struct RoundingCertificate {
     near_flats: Vec<Segment>,
     /// The highest event height so far: events come in order of height, within their rounding.
     max_y: f64,
-    /// Events within reach in height of the sweep, oldest first from `first`, but those of the
-    /// current scanline.
-    recent: Vec<Event>,
-    first: usize,
+    /// Events within reach in height of the sweep, but those of the current scanline.
+    recent: Events,
     /// The current scanline's height and events.
     row_y: f64,
-    row: Vec<Event>,
+    row: Events,
     /// True once some check failed, and the first one that did.
     failed: bool,
     failure: Option<&'static str>,
@@ -179,7 +181,7 @@ impl RoundingCertificate {
         self.near_flats.clear();
         self.recent.clear();
         self.row.clear();
-        (self.next_flat, self.first, self.max_y, self.row_y) = (0, 0, f64::NEG_INFINITY, f64::NAN);
+        (self.next_flat, self.max_y, self.row_y) = (0, f64::NEG_INFINITY, f64::NAN);
         self.max_error = f64::INFINITY;
         if !enabled {
             return;
@@ -191,17 +193,24 @@ impl RoundingCertificate {
         self.clearance = CLEARANCE_ULPS * unit;
         self.height = self.clearance + 2.0 * self.moves;
         self.clearance_reach = self.clearance + 2.0 * X_AT_ERROR * magnitude;
-        let d = REACH * magnitude;
-        self.reach = 0.5 * d + 2.0 * self.clearance;
-        self.least_rise = 4.0 * self.height / d;
+        self.least_rise = 4.0 * self.height / (REACH * magnitude);
         let least_rise = self.least_rise;
+        // The least rise of the edges that are not flat (infinity for none, or vertical ones
+        // only), computed with a relative error under 2^-50.
+        let mut steep_rise = f64::INFINITY;
         for v in &bounds.vertices {
             let w = bounds.vertices[v.next as usize].pt;
             let (dx, dy) = ((w.x - v.pt.x).abs(), (w.y - v.pt.y).abs());
             if dy != 0.0 && !at_least(dy, least_rise * dx) {
                 self.flats.push(if v.pt.y < w.y { Segment::new(v.pt, w) } else { Segment::new(w, v.pt) });
+            } else if dx != 0.0 && dy != 0.0 {
+                steep_rise = steep_rise.min(dy / dx);
             }
         }
+        // An edge rising at least `s` runs at most `H/s` in x within `H` of a height: at most
+        // `D/4`, as `s >= 4H/D`, and less where every edge that is not flat is steeper.
+        let s = (steep_rise * (1.0 - 1e-12)).max(least_rise);
+        self.reach = 2.0 * self.height / s + 2.0 * self.clearance;
         self.flats.sort_unstable_by(|a, b| a.a.y.total_cmp(&b.a.y));
     }
 
@@ -295,8 +304,7 @@ impl RoundingCertificate {
         let event = Event { p, half_width: 0.0, counts, edges: Some(edges) };
         self.apart(event);
         if (p.y - self.row_y).abs() <= self.height {
-            let near = self.row.len() > COMPARISONS || self.row.iter().any(|q| self.in_box(&event, q));
-            if near {
+            if self.crowded(&event, &self.row) {
                 self.fail_because("events in a box (a crossing near a scanline event)");
             }
         }
@@ -321,26 +329,25 @@ impl RoundingCertificate {
     /// The part of [`RoundingCertificate::apart`] that looks at the recent events.
     #[inline(never)]
     fn apart_from_recent(&mut self, e: Event) {
-        while self.first < self.recent.len() && self.recent[self.first].p.y < e.p.y - self.height {
-            self.first += 1;
-        }
-        if self.first == self.recent.len() {
-            self.recent.clear();
-            self.first = 0;
-            return;
-        }
-        let recent = &self.recent[self.first..];
-        if recent.len() > COMPARISONS || recent.iter().any(|q| self.in_box(&e, q)) {
+        self.recent.drop_below(e.p.y - self.height);
+        if self.crowded(&e, &self.recent) {
             self.fail_because("events in a box");
         }
     }
 
-    /// True when events `e` and `q` lie within each other's box and one of them counts, but for
-    /// two crossings of one edge ([`Event::shares_edge`]).
+    /// True when `e` lies within the box of one of `events` it is compared with
+    /// ([`Events::compared_with`]), or those are more than [`COMPARISONS`].
+    #[inline]
+    fn crowded(&self, e: &Event, events: &Events) -> bool {
+        let (counting, others) = events.compared_with(e);
+        counting.len() + others.len() > COMPARISONS || counting.iter().chain(others).any(|q| self.in_box(e, q))
+    }
+
+    /// True when events `e` and `q` lie within each other's box, but for two crossings of one
+    /// edge ([`Event::shares_edge`]).
     #[inline]
     fn in_box(&self, e: &Event, q: &Event) -> bool {
-        (e.counts || q.counts)
-            && (q.p.y - e.p.y).abs() <= self.height
+        (q.p.y - e.p.y).abs() <= self.height
             && (q.p.x - e.p.x).abs() <= self.reach + e.half_width + q.half_width
             && !e.shares_edge(q)
     }
@@ -460,6 +467,62 @@ impl Event {
             (Some(a), Some(b)) => a.iter().any(|s| b.contains(s)),
             _ => false,
         }
+    }
+}
+
+/// Events of the box test, those that count apart from the others: an event that does not
+/// count is compared only with those that do, so a pile of crossings of one flat edge is not
+/// compared within itself. In order of height (within rounding), oldest first from `first`.
+#[derive(Debug, Default)]
+struct Events {
+    counting: Vec<Event>,
+    others: Vec<Event>,
+    first: [usize; 2],
+}
+
+impl Events {
+    fn clear(&mut self) {
+        self.counting.clear();
+        self.others.clear();
+        self.first = [0, 0];
+    }
+
+    #[inline]
+    fn push(&mut self, e: Event) {
+        if e.counts { self.counting.push(e) } else { self.others.push(e) }
+    }
+
+    /// Moves every event of `row` here.
+    fn append(&mut self, row: &mut Events) {
+        self.counting.extend(row.counting.drain(row.first[0]..));
+        self.others.extend(row.others.drain(row.first[1]..));
+        row.clear();
+    }
+
+    #[inline]
+    fn is_empty(&self) -> bool {
+        self.first[0] == self.counting.len() && self.first[1] == self.others.len()
+    }
+
+    /// Drops the events below height `y`, and the buffers once nothing is left.
+    #[inline]
+    fn drop_below(&mut self, y: f64) {
+        let [counting, others] = &mut self.first;
+        for (events, first) in [(&self.counting, counting), (&self.others, others)] {
+            while *first < events.len() && events[*first].p.y < y {
+                *first += 1;
+            }
+        }
+        if self.is_empty() {
+            self.clear();
+        }
+    }
+
+    /// The events `e` is compared with: those that count, and the others where `e` counts.
+    #[inline]
+    fn compared_with(&self, e: &Event) -> (&[Event], &[Event]) {
+        let others = if e.counts { &self.others[self.first[1]..] } else { &[] };
+        (&self.counting[self.first[0]..], others)
     }
 }
 
@@ -636,14 +699,41 @@ mod tests {
         assert!(held > 0, "the certificate never held");
     }
 
-    /// A certificate for operands reaching 1 in magnitude (a unit square), enabled.
-    fn unit_certificate() -> RoundingCertificate {
+    /// A certificate for operands reaching 1 in magnitude, enabled: a unit square with its
+    /// bottom rising `rise` (a box `2H/rise + 2δ` wide; infinity: the square itself).
+    fn certificate_rising(rise: f64) -> RoundingCertificate {
         let mut bounds = crate::bounds::Bounds::default();
-        bounds.rebuild(&polygon(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]), &Polygons::default(), false);
+        let bottom_right = if rise.is_finite() { rise } else { 0.0 };
+        let square = polygon(&[(0.0, 0.0), (1.0, bottom_right), (1.0, 1.0), (0.0, 1.0)]);
+        bounds.rebuild(&square, &Polygons::default(), false);
         let mut cert = RoundingCertificate::default();
         cert.reset(true, &bounds);
         cert.rounded_output();
         cert
+    }
+
+    /// A certificate whose box is about 1.8e-6 wide (an edge rising 1e-7 per unit of x).
+    fn unit_certificate() -> RoundingCertificate {
+        certificate_rising(1e-7)
+    }
+
+    #[test]
+    fn the_box_is_as_wide_as_the_flattest_edge_that_is_not_flat_needs() {
+        let p = Point::new(0.5, 0.5);
+        for (rise, dx, holds) in [
+            (1e-7, 1e-6, false),
+            (1e-3, 1e-6, true),
+            (1e-3, 1e-10, false),
+            (f64::INFINITY, 1e-12, true),
+            // A flat bottom (rising under 2.5e-8 per unit here) is on the flat list: the box is
+            // as wide as the vertical sides need.
+            (1e-9, 1e-12, true),
+        ] {
+            let mut cert = certificate_rising(rise);
+            cert.on_scanline(p, true);
+            cert.between_scanlines(Point::new(0.5 + dx, 0.5 + 1e-14), [3, 4], true);
+            assert_eq!(cert.verdict().is_ok(), holds, "rise {rise}, {dx} apart");
+        }
     }
 
     #[test]
