@@ -303,10 +303,8 @@ impl RoundingCertificate {
         }
         let event = Event { p, half_width: 0.0, counts, edges: Some(edges) };
         self.apart(event);
-        if (p.y - self.row_y).abs() <= self.height {
-            if self.crowded(&event, &self.row) {
-                self.fail_because("events in a box (a crossing near a scanline event)");
-            }
+        if (p.y - self.row_y).abs() <= self.height && self.crowded(&event, &self.row) {
+            self.fail_because("events in a box (a crossing near a scanline event)");
         }
         self.recent.push(event);
     }
