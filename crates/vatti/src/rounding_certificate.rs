@@ -327,8 +327,7 @@ impl RoundingCertificate {
     /// The part of [`RoundingCertificate::apart`] that looks at the recent events.
     #[inline(never)]
     fn apart_from_recent(&mut self, e: Event) {
-        self.recent.drop_below(e.p.y - self.height);
-        if self.crowded(&e, &self.recent) {
+        if self.recent.drop_below(e.p.y - self.height) && self.crowded(&e, &self.recent) {
             self.fail_because("events in a box");
         }
     }
@@ -338,7 +337,9 @@ impl RoundingCertificate {
     #[inline]
     fn crowded(&self, e: &Event, events: &Events) -> bool {
         let (counting, others) = events.compared_with(e);
-        counting.len() + others.len() > COMPARISONS || counting.iter().chain(others).any(|q| self.in_box(e, q))
+        counting.len() + others.len() > COMPARISONS
+            || counting.iter().any(|q| self.in_box(e, q))
+            || others.iter().any(|q| self.in_box(e, q))
     }
 
     /// True when events `e` and `q` lie within each other's box, but for two crossings of one
@@ -502,18 +503,21 @@ impl Events {
         self.first[0] == self.counting.len() && self.first[1] == self.others.len()
     }
 
-    /// Drops the events below height `y`, and the buffers once nothing is left.
+    /// Drops the events below height `y`, and the buffers once nothing is left; false then.
     #[inline]
-    fn drop_below(&mut self, y: f64) {
-        let [counting, others] = &mut self.first;
-        for (events, first) in [(&self.counting, counting), (&self.others, others)] {
+    fn drop_below(&mut self, y: f64) -> bool {
+        fn drop(events: &[Event], first: &mut usize, y: f64) {
             while *first < events.len() && events[*first].p.y < y {
                 *first += 1;
             }
         }
+        drop(&self.counting, &mut self.first[0], y);
+        drop(&self.others, &mut self.first[1], y);
         if self.is_empty() {
             self.clear();
+            return false;
         }
+        true
     }
 
     /// The events `e` is compared with: those that count, and the others where `e` counts.
