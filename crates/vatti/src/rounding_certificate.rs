@@ -78,7 +78,9 @@ const _: () = assert!(CLEARANCE_ULPS > 2.0 * 1.4143 * MOVE_ULPS);
 const REACH: f64 = 1.0 / 65536.0;
 
 /// Comparisons of one event with earlier ones within reach in height before the certificate
-/// gives up (fails): events piled near one height are where it fails anyway.
+/// gives up (fails): events that count piled near one height are where it fails anyway. Events
+/// that do not count (a flat edge's crossings) pile up harmlessly, and are compared only with
+/// events whose box meets their extent ([`EventRun`]).
 const COMPARISONS: usize = 64;
 
 /// Binary digits up to which integer coordinates, on any power-of-two scale, make the sweep's
@@ -336,7 +338,7 @@ impl RoundingCertificate {
     /// ([`Events::compared_with`]), or those are more than [`COMPARISONS`].
     #[inline]
     fn crowded(&self, e: &Event, events: &Events) -> bool {
-        let (counting, others) = events.compared_with(e);
+        let (counting, others) = events.compared_with(e, self.reach);
         counting.len() + others.len() > COMPARISONS
             || counting.iter().any(|q| self.in_box(e, q))
             || others.iter().any(|q| self.in_box(e, q))
@@ -471,19 +473,17 @@ impl Event {
 
 /// Events of the box test, those that count apart from the others: an event that does not
 /// count is compared only with those that do, so a pile of crossings of one flat edge is not
-/// compared within itself. In order of height (within rounding), oldest first from `first`.
+/// compared within itself.
 #[derive(Debug, Default)]
 struct Events {
-    counting: Vec<Event>,
-    others: Vec<Event>,
-    first: [usize; 2],
+    counting: EventRun<false>,
+    others: EventRun<true>,
 }
 
 impl Events {
     fn clear(&mut self) {
         self.counting.clear();
         self.others.clear();
-        self.first = [0, 0];
     }
 
     #[inline]
@@ -493,38 +493,95 @@ impl Events {
 
     /// Moves every event of `row` here.
     fn append(&mut self, row: &mut Events) {
-        self.counting.extend(row.counting.drain(row.first[0]..));
-        self.others.extend(row.others.drain(row.first[1]..));
-        row.clear();
+        self.counting.append(&mut row.counting);
+        self.others.append(&mut row.others);
     }
 
     #[inline]
     fn is_empty(&self) -> bool {
-        self.first[0] == self.counting.len() && self.first[1] == self.others.len()
+        self.counting.is_empty() && self.others.is_empty()
     }
 
-    /// Drops the events below height `y`, and the buffers once nothing is left; false then.
+    /// Drops the events below height `y`; false when none is left.
     #[inline]
     fn drop_below(&mut self, y: f64) -> bool {
-        fn drop(events: &[Event], first: &mut usize, y: f64) {
-            while *first < events.len() && events[*first].p.y < y {
-                *first += 1;
-            }
-        }
-        drop(&self.counting, &mut self.first[0], y);
-        drop(&self.others, &mut self.first[1], y);
-        if self.is_empty() {
-            self.clear();
-            return false;
-        }
-        true
+        self.counting.drop_below(y);
+        self.others.drop_below(y);
+        !self.is_empty()
     }
 
-    /// The events `e` is compared with: those that count, and the others where `e` counts.
+    /// The events `e` is compared with, its box `reach` wide either side of it: those that
+    /// count, and the others where `e` counts, each only where the box meets their run's extent.
     #[inline]
-    fn compared_with(&self, e: &Event) -> (&[Event], &[Event]) {
-        let others = if e.counts { &self.others[self.first[1]..] } else { &[] };
-        (&self.counting[self.first[0]..], others)
+    fn compared_with(&self, e: &Event, reach: f64) -> (&[Event], &[Event]) {
+        let (lo, hi) = (e.p.x - e.half_width - reach, e.p.x + e.half_width + reach);
+        let others = if e.counts { self.others.near(lo, hi) } else { &[] };
+        (self.counting.near(lo, hi), others)
+    }
+}
+
+/// Events in order of height (within rounding), oldest first from `first`, and where `EXTENT`,
+/// the x extent of every event pushed since the run was last empty (horizontals' half widths
+/// included), so a box that misses it meets none of them: a pile of crossings along a flat edge
+/// spans the part of the edge they are on, and events elsewhere at its height are not compared
+/// with them. (Events that count pile up only where the certificate fails anyway.)
+#[derive(Debug)]
+struct EventRun<const EXTENT: bool> {
+    events: Vec<Event>,
+    first: usize,
+    lo: f64,
+    hi: f64,
+}
+
+impl<const EXTENT: bool> Default for EventRun<EXTENT> {
+    fn default() -> Self {
+        EventRun { events: Vec::new(), first: 0, lo: f64::INFINITY, hi: f64::NEG_INFINITY }
+    }
+}
+
+impl<const EXTENT: bool> EventRun<EXTENT> {
+    fn clear(&mut self) {
+        self.events.clear();
+        (self.first, self.lo, self.hi) = (0, f64::INFINITY, f64::NEG_INFINITY);
+    }
+
+    #[inline]
+    fn push(&mut self, e: Event) {
+        if EXTENT {
+            self.lo = self.lo.min(e.p.x - e.half_width);
+            self.hi = self.hi.max(e.p.x + e.half_width);
+        }
+        self.events.push(e);
+    }
+
+    /// Moves every event of `other` here.
+    fn append(&mut self, other: &mut Self) {
+        for &e in &other.events[other.first..] {
+            self.push(e);
+        }
+        other.clear();
+    }
+
+    #[inline]
+    fn is_empty(&self) -> bool {
+        self.first == self.events.len()
+    }
+
+    /// Drops the events below height `y`, and the buffer and extent once none is left.
+    #[inline]
+    fn drop_below(&mut self, y: f64) {
+        while self.first < self.events.len() && self.events[self.first].p.y < y {
+            self.first += 1;
+        }
+        if self.is_empty() {
+            self.clear();
+        }
+    }
+
+    /// The events left, or none where the x range `lo..=hi` misses their extent.
+    #[inline]
+    fn near(&self, lo: f64, hi: f64) -> &[Event] {
+        if EXTENT && (hi < self.lo || lo > self.hi) { &[] } else { &self.events[self.first..] }
     }
 }
 
@@ -773,6 +830,29 @@ mod tests {
         cert.on_scanline(p, true);
         cert.on_scanline(Point::new(0.5 + 1e-15, 0.5), true);
         assert_eq!(cert.verdict(), Ok(()));
+    }
+
+    /// A pile of crossings along one flat edge (which do not count) at one height: compared
+    /// neither with each other nor, beyond the comparison limit, with an event far from them.
+    #[test]
+    fn a_pile_of_crossings_along_a_flat_edge_is_compared_only_near_it() {
+        let pile = |cert: &mut RoundingCertificate| {
+            for i in 0..4 * COMPARISONS {
+                let p = Point::new(0.6 + 1e-4 * i as f64, 0.5 + 1e-17 * i as f64);
+                cert.between_scanlines(p, [1, 10 + i as u64], false);
+            }
+        };
+        let mut cert = certificate_rising(1e-3);
+        pile(&mut cert);
+        assert_eq!(cert.verdict(), Ok(()), "the pile alone");
+        cert.between_scanlines(Point::new(0.1, 0.5 + 1e-14), [2, 3], true);
+        cert.on_scanline(Point::new(0.2, 0.5 + 2e-14), true);
+        assert_eq!(cert.verdict(), Ok(()), "events far from the pile, at its height");
+        // Among the pile, past the limit: the certificate gives up.
+        let mut cert = certificate_rising(1e-3);
+        pile(&mut cert);
+        cert.between_scanlines(Point::new(0.61, 0.5 + 1e-14), [2, 3], true);
+        assert_eq!(cert.verdict(), Err("events in a box"));
     }
 
     #[test]
