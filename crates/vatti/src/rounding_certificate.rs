@@ -511,7 +511,7 @@ impl Events {
     }
 
     /// The events `e` is compared with, its box `reach` wide either side of it: those that
-    /// count, and the others where `e` counts, each only where the box meets their run's extent.
+    /// count, and where `e` counts the others, if the box meets their extent.
     #[inline]
     fn compared_with(&self, e: &Event, reach: f64) -> (&[Event], &[Event]) {
         let (lo, hi) = (e.p.x - e.half_width - reach, e.p.x + e.half_width + reach);
