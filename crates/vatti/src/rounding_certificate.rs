@@ -17,9 +17,10 @@
 //!    horizontal edges as events as wide as they are) lie within a box of `2W × 2H` of each
 //!    other (`H = δ + 2r`, `W = 2H/s + 2δ`, `s` the least rise per unit of x of the edges that
 //!    are not flat: at least `4H/D`, so `W ≤ D/2 + 2δ`, `D` 2^-16 of the operands' largest
-//!    coordinate), unless both lie on one scanline (exactly: vertices, and a slide's crossings, which move
-//!    along it), both are crossings of one edge, or neither counts (crossings of a flat edge,
-//!    vertices of flat edges only: they cannot come between a point and an edge that is not flat).
+//!    coordinate), unless both lie on one scanline (exactly: vertices, and a slide's crossings,
+//!    which move along it), both are crossings of one edge, or neither counts (crossings of a
+//!    flat edge, vertices of flat edges only: they cannot come between a point and an edge that
+//!    is not flat).
 //! 2. **Flat edges on their own.** An edge rising less than `4H/D` per unit of x (and not
 //!    horizontal) is checked against every output point near it, on a list of its own. Any other
 //!    edge within `δ` of a point runs at most `H/s ≤ D/4` in x within `H` of the point's height,
