@@ -166,6 +166,8 @@ pub(crate) struct RoundingCertificate {
     row: Events,
     /// True once some check failed, and the first one that did.
     failed: bool,
+    /// `enabled && !failed`, kept as one flag: it is read at every event.
+    checking: bool,
     failure: Option<&'static str>,
     /// True once a rounded point was output.
     rounded: bool,
@@ -177,7 +179,7 @@ impl RoundingCertificate {
     /// Clears the certificate for a sweep of `bounds` (the buffers are kept); `enabled` false
     /// checks nothing, and the certificate always holds.
     pub(crate) fn reset(&mut self, enabled: bool, bounds: &Bounds) {
-        self.enabled = enabled;
+        (self.enabled, self.checking) = (enabled, enabled);
         (self.failed, self.failure, self.out_of_order) = (false, None, false);
         self.rounded = false;
         self.flats.clear();
@@ -233,7 +235,7 @@ impl RoundingCertificate {
     /// True while checks are made.
     #[inline]
     pub(crate) fn enabled(&self) -> bool {
-        self.enabled && !self.failed
+        self.checking
     }
 
     /// True when this sweep is certified at all, failed or not: then whether a point output is
@@ -316,6 +318,13 @@ impl RoundingCertificate {
     /// or lies within the box of an event of another height, dropping those out of reach.
     #[inline]
     fn apart(&mut self, e: Event) {
+        if self.max_y < e.p.y - self.height {
+            // Every event so far is out of reach of this one, and so of every later one (none
+            // may come below it by more than the rounding, which `height` exceeds).
+            self.max_y = e.p.y;
+            self.recent.clear_unless_empty();
+            return;
+        }
         if e.p.y < self.max_y - 2.0 * self.moves {
             self.out_of_order = true;
             self.fail_because("out of order");
@@ -374,7 +383,7 @@ impl RoundingCertificate {
         if !self.failed {
             self.failure = Some(check);
         }
-        self.failed = true;
+        (self.failed, self.checking) = (true, false);
     }
 
     /// Records whether output point `p` lies farther than the clearance from the line of edge
@@ -501,6 +510,13 @@ impl Events {
     #[inline]
     fn is_empty(&self) -> bool {
         self.counting.is_empty() && self.others.is_empty()
+    }
+
+    #[inline]
+    fn clear_unless_empty(&mut self) {
+        if !self.is_empty() {
+            self.clear();
+        }
     }
 
     /// Drops the events below height `y`; false when none is left.
