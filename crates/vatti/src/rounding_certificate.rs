@@ -191,7 +191,10 @@ impl RoundingCertificate {
         if !enabled {
             return;
         }
-        let magnitude = bounds.vertices.iter().fold(0.0f64, |m, v| m.max(v.pt.x.abs()).max(v.pt.y.abs()));
+        // Coordinates are finite (validated), so a plain comparison (one `maxsd`) does what
+        // `f64::max` does with its NaN handling.
+        let larger = |m: f64, c: f64| if m > c.abs() { m } else { c.abs() };
+        let magnitude = bounds.vertices.iter().fold(0.0f64, |m, v| larger(larger(m, v.pt.x), v.pt.y));
         let unit = f64::EPSILON * magnitude.max(f64::MIN_POSITIVE);
         self.max_error = CROSSING_ERROR_ULPS * unit;
         self.moves = MOVE_ULPS * unit;
@@ -392,6 +395,11 @@ impl RoundingCertificate {
     pub(crate) fn clear_of(&mut self, p: Point, k: &Edge) {
         let d = k.top - k.bot;
         let off = (p - k.bot).cross(d);
+        // Clear by the L1 length, which is at least |d|, in the common case: no square root to
+        // wait for (NaN and overflow fall through to the test below).
+        if off.abs() >= self.clearance_reach * (d.x.abs() + d.y.abs()) && off != 0.0 {
+            return;
+        }
         // |off| / |d| is the distance to the line, at most the distance to the segment; the
         // computed values err by a few ulps of the operands' largest coordinate, which the
         // slack in `clearance_reach` covers. Not compared squared: near `MAX_COORDINATE` both
