@@ -44,6 +44,7 @@ mod batch_filter;
 mod cell_index;
 mod clipper;
 mod curve_region;
+mod double_double;
 mod ellipse;
 mod error;
 mod filled_arc;

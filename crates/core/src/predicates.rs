@@ -1,6 +1,7 @@
 //! The one place orientation and incidence are decided, exactly, with Shewchuk's adaptive
 //! predicates (the `robust` crate). No clipper computes a raw cross product for a decision.
 
+use crate::double_double::{DoubleDouble, two_diff, two_product, two_sum};
 use crate::{Point, Rect, Segment};
 
 /// Which way three points turn.
@@ -75,20 +76,69 @@ pub fn orient2d(a: Point, b: Point, c: Point) -> f64 {
 /// cancel to 1e25 (a window edge near the origin, a segment end at 6e25) leave it 1e-4 off. The
 /// coordinate range (`MIN_COORDINATE` to `MAX_COORDINATE`) keeps every term a normal number.
 fn accurate_determinant(a: Point, b: Point, c: Point) -> f64 {
-    let (ax, ay, bx, by) = (two_diff(a.x, c.x), two_diff(a.y, c.y), two_diff(b.x, c.x), two_diff(b.y, c.y));
     let mut expansion = [0.0; 32];
+    let len = determinant_into(a, b, c, &mut expansion);
+    expansion[..len].iter().sum()
+}
+
+/// [`accurate_determinant`]'s exact expansion, into `expansion`: its length.
+fn determinant_into(a: Point, b: Point, c: Point, expansion: &mut [f64; 32]) -> usize {
+    let (ax, ay, bx, by) = (two_diff(a.x, c.x), two_diff(a.y, c.y), two_diff(b.x, c.x), two_diff(b.y, c.y));
     let mut len = 0;
     for (u, v, sign) in [(ax, by, 1.0), (ay, bx, -1.0)] {
         for x in [u.0, u.1] {
             for y in [v.0, v.1] {
                 let (p, e) = two_product(x, y);
                 for term in [sign * e, sign * p] {
-                    len = grow_expansion(&mut expansion, len, term);
+                    len = grow_expansion(expansion, len, term);
                 }
             }
         }
     }
-    expansion[..len].iter().sum()
+    len
+}
+
+/// [`accurate_determinant`] in double-double, and a bound on its error: the expansion's sum, the
+/// sum of what is left of it after that, and the magnitudes of what is left after both, summed
+/// and rounded up (every step exact but the sums).
+fn double_double_determinant(a: Point, b: Point, c: Point) -> (DoubleDouble, f64) {
+    // Sixteen terms leave at most seventeen components, and each step below one more.
+    let mut expansion = [0.0; 32];
+    let len = determinant_into(a, b, c, &mut expansion);
+    let hi: f64 = expansion[..len].iter().sum();
+    let len = grow_expansion(&mut expansion, len, -hi);
+    let lo: f64 = expansion[..len].iter().sum();
+    let len = grow_expansion(&mut expansion, len, -lo);
+    // A sum of at most nineteen magnitudes errs by under 2^-47 of itself.
+    let left: f64 = expansion[..len].iter().map(|c| c.abs()).sum();
+    (DoubleDouble::sum_of(hi, lo), left * (1.0 + 2f64.powi(-40)))
+}
+
+/// The crossing point of two segments whose interiors cross, as its offset from `s.a` along each
+/// axis in double-double, and a bound on the offsets' error relative to their size; `None` where
+/// something is not finite or the determinants are not known to 2^-60. With `D(p)` the
+/// determinant of `t`'s line at `p`, the offset is `D(s.a) / (D(s.a) - D(s.b)) · (s.b - s.a)`. The
+/// two determinants have opposite signs, so their difference does not cancel: with each within
+/// a fraction `r` of its value, the quotient is within `2r/(1 - r)` of its own, and the division,
+/// the difference and the product add a few units of 2^-104 each (bounded by 2^-96 here). For
+/// filtering the exact [`crossing_coordinate_cmp`]: against a line farther from the estimate
+/// than its error, the estimate decides. Limit: as the expansions', coordinates well above
+/// 1e-100 apart.
+pub(crate) fn double_double_crossing_offset(s: Segment, t: Segment) -> Option<([DoubleDouble; 2], f64)> {
+    let (d0, e0) = double_double_determinant(t.a, t.b, s.a);
+    let (d1, e1) = double_double_determinant(t.a, t.b, s.b);
+    // Relative to the determinants' values, which lie within 2^-52 of their leading parts.
+    let r = (e0 / d0.hi.abs()).max(e1 / d1.hi.abs()) * (1.0 + 2f64.powi(-50));
+    // NaN (a determinant of zero) fails too.
+    let known = r < 2f64.powi(-60);
+    if !known || (d0.hi > 0.0) == (d1.hi > 0.0) {
+        return None;
+    }
+    let u = d0.div(d0.sub(d1));
+    let along = |a: f64, b: f64| u.mul(DoubleDouble::difference(b, a));
+    let offset = [along(s.a.x, s.b.x), along(s.a.y, s.b.y)];
+    let relative = (2.0 * r / (1.0 - r) + 2f64.powi(-96)) * (1.0 + 2f64.powi(-50));
+    offset.iter().all(|o| o.is_finite()).then_some((offset, relative))
 }
 
 /// `(a.x - c.x)(b.y - c.y) - (a.y - c.y)(b.x - c.x)` as an exact expansion (non-overlapping
@@ -370,31 +420,6 @@ fn grow_expansion(e: &mut [f64; 32], len: usize, b: f64) -> usize {
         out += 1;
     }
     out
-}
-
-/// `a + b` exactly, as a rounded sum and its error.
-#[inline]
-fn two_sum(a: f64, b: f64) -> (f64, f64) {
-    let x = a + b;
-    let bv = x - a;
-    let av = x - bv;
-    (x, (a - av) + (b - bv))
-}
-
-/// `a - b` exactly, as a rounded difference and its error.
-#[inline]
-fn two_diff(a: f64, b: f64) -> (f64, f64) {
-    let x = a - b;
-    let bv = a - x;
-    let av = x + bv;
-    (x, (a - av) + (bv - b))
-}
-
-/// `a * b` exactly, as a rounded product and its error.
-#[inline]
-fn two_product(a: f64, b: f64) -> (f64, f64) {
-    let x = a * b;
-    (x, a.mul_add(b, -x))
 }
 
 /// The largest error [`LineSide::crossing_values`] lets into a crossing's parameter (of the

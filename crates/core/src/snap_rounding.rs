@@ -32,6 +32,7 @@
 //! its cells (stars). That is acceptable for a fallback run only where rounding could not be
 //! proven harmless, which is what it is for.
 
+use crate::double_double::DoubleDouble;
 use crate::predicates::{self, Orientation, accurate_crossing_offset, crossing_coordinate_cmp, orient};
 use crate::{CellIndex, ClipError, Operand, Point, Polygons, Rect, Ring, Segment, SegmentIntersection};
 
@@ -261,8 +262,13 @@ fn centre(p: Pixel, s: f64) -> Point {
 /// of an estimate, moved a pixel at a time while the exact crossing lies beyond one of its
 /// borders. Where the crossing's quotients are exact in f64 (grids), each border is decided by
 /// one division ([`predicates::quotient_cmp`]); else borders farther from the estimate than its
-/// error bound are decided by the estimate, and the rest exactly.
+/// error bound are decided by the estimate, those within it by one in double-double (made once,
+/// for the first such border: within about 2^-90 of the offset's size), and the rest exactly.
 fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
+    // An estimate errs by ulps of the extent of the segment it runs along: the shorter one
+    // leaves the fewest borders to the exact test.
+    let extent = |g: Segment| (g.b.x - g.a.x).abs().max((g.b.y - g.a.y).abs());
+    let (e, f) = if extent(f) < extent(e) { (f, e) } else { (e, f) };
     let quotients = predicates::exact_crossing_quotients(e, f);
     // The estimate as an offset from `e.a`: its error scales with the segment's extent, not the
     // coordinates' magnitude, so far from the origin the filter below still decides (with the
@@ -271,11 +277,13 @@ fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
         Some((nx, ny, d)) => (nx / d, ny / d),
         None => accurate_crossing_offset(e, f),
     };
+    // The double-double estimate, made for the first border the f64 one cannot decide.
+    let mut finer = None;
     let mut pixel = pixel_of(Point::new(e.a.x + offset.0, e.a.y + offset.1), s);
     for along_y in [false, true] {
         let (off, span, base) =
             if along_y { (offset.1, e.b.y - e.a.y, e.a.y) } else { (offset.0, e.b.x - e.a.x, e.a.x) };
-        let below = |m: f64| {
+        let mut below = |m: f64| {
             if let Some((nx, ny, d)) = quotients
                 && let Some(order) = predicates::quotient_cmp(if along_y { ny } else { nx }, d, base, m)
             {
@@ -286,12 +294,15 @@ fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
             let w = m - base;
             let error = 16.0 * f64::EPSILON * span.abs() + f64::EPSILON * w.abs() + f64::MIN_POSITIVE;
             if off - w > error {
-                false
-            } else if w - off > error {
-                true
-            } else {
-                crossing_coordinate_cmp(e, f, along_y, m).is_lt()
+                return false;
             }
+            if w - off > error {
+                return true;
+            }
+            let finer = finer.get_or_insert_with(|| predicates::double_double_crossing_offset(e, f));
+            finer
+                .and_then(|(o, relative)| below_by_estimate(o[usize::from(along_y)], relative, base, m))
+                .unwrap_or_else(|| crossing_coordinate_cmp(e, f, along_y, m).is_lt())
         };
         let k = if along_y { &mut pixel.1 } else { &mut pixel.0 };
         // The exact crossing lies in the segment's box, within 2^51 pixels: this ends.
@@ -306,6 +317,24 @@ fn crossing_pixel(e: Segment, f: Segment, s: f64) -> Pixel {
         }
     }
     pixel
+}
+
+/// Whether the exact crossing's coordinate `base + offset` lies below `m`, decided by an estimate
+/// `o` of the offset within `relative` of its size; `None` where it lies too near to tell. The
+/// estimate less `w = m - base` (exact as a double-double) is off by the estimate's error and
+/// the difference's rounding (a few units of 2^-104 of its operands); beyond twice that, its
+/// leading part has the exact difference's sign.
+fn below_by_estimate(o: DoubleDouble, relative: f64, base: f64, m: f64) -> Option<bool> {
+    let w = DoubleDouble::difference(m, base);
+    let d = o.sub(w);
+    let error = relative * o.hi.abs() + 2f64.powi(-100) * (o.hi.abs() + w.hi.abs()) + f64::MIN_POSITIVE;
+    if d.hi > 2.0 * error {
+        Some(false)
+    } else if d.hi < -2.0 * error {
+        Some(true)
+    } else {
+        None
+    }
 }
 
 /// Whether the closed segment `e` meets the half-open pixel `p`, exactly: their boxes meet (the
@@ -505,6 +534,52 @@ mod tests {
             }
         }
         assert!(checked > 1000, "{checked} crossings checked");
+    }
+
+    #[test]
+    fn the_double_double_estimate_decides_only_as_the_exact_comparison_does() {
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        let (mut decided, mut ulp_away) = (0, 0);
+        for (origin, span) in [(1e6f64, 1e3f64), (3.7e9, 1e5), (1.0, 1.0), (-2e7, 10.0)] {
+            let at = |rng: &mut Rng| Point::new(origin + rng.next() * span, origin + rng.next() * span);
+            for k in 0..400 {
+                let e = Segment::new(at(&mut rng), at(&mut rng));
+                // Every other pair nearly parallel: `e` turned by up to 1e-12 about its middle.
+                let f = if k % 2 == 0 {
+                    Segment::new(at(&mut rng), at(&mut rng))
+                } else {
+                    let (m, half) = (e.at(0.5), (e.b - e.a) * 0.5);
+                    let turn = Point::new(-half.y, half.x) * ((rng.next() - 0.5) * 2e-12);
+                    Segment::new(m + half + turn, m - half - turn)
+                };
+                if !matches!(predicates::segment_intersection(e, f), SegmentIntersection::Crossing(_)) {
+                    continue;
+                }
+                let Some((offset, relative)) = predicates::double_double_crossing_offset(e, f) else { continue };
+                for along_y in [false, true] {
+                    let (o, base) = if along_y { (offset[1], e.a.y) } else { (offset[0], e.a.x) };
+                    let estimate = base + o.hi;
+                    // Lines from within the estimate's error to a few ulps of the coordinate away.
+                    for steps in [-64i32, -3, -1, 0, 1, 3, 64] {
+                        for (scale, ulps) in [(relative * o.hi.abs(), false), (f64::EPSILON * estimate.abs(), true)] {
+                            let m = estimate + f64::from(steps) * scale;
+                            let exact = crossing_coordinate_cmp(e, f, along_y, m).is_lt();
+                            let by_estimate = below_by_estimate(o, relative, base, m);
+                            if let Some(below) = by_estimate {
+                                assert_eq!(below, exact, "{e:?} {f:?} against {m} (y: {along_y})");
+                                decided += 1;
+                            }
+                            // A line an ulp of the coordinate or more away: the estimate decides.
+                            if ulps && steps != 0 && m != estimate {
+                                assert!(by_estimate.is_some(), "{e:?} {f:?} against {m}, {steps} ulps away");
+                                ulp_away += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(ulp_away > 1000 && decided > ulp_away, "{decided} decided, {ulp_away} lines an ulp or more away");
     }
 
     #[test]
