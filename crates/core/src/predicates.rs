@@ -127,11 +127,14 @@ fn double_double_determinant(a: Point, b: Point, c: Point) -> (DoubleDouble, f64
 pub(crate) fn double_double_crossing_offset(s: Segment, t: Segment) -> Option<([DoubleDouble; 2], f64)> {
     let (d0, e0) = double_double_determinant(t.a, t.b, s.a);
     let (d1, e1) = double_double_determinant(t.a, t.b, s.b);
+    // Interiors that cross put the ends of `s` strictly either side of `t`'s line.
+    if d0.hi == 0.0 || d1.hi == 0.0 || (d0.hi > 0.0) == (d1.hi > 0.0) {
+        return None;
+    }
     // Relative to the determinants' values, which lie within 2^-52 of their leading parts.
     let r = (e0 / d0.hi.abs()).max(e1 / d1.hi.abs()) * (1.0 + 2f64.powi(-50));
-    // NaN (a determinant of zero) fails too.
     let known = r < 2f64.powi(-60);
-    if !known || (d0.hi > 0.0) == (d1.hi > 0.0) {
+    if !known {
         return None;
     }
     let u = d0.div(d0.sub(d1));
