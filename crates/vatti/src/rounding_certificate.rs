@@ -237,7 +237,7 @@ impl RoundingCertificate {
 
     /// True while checks are made.
     #[inline]
-    pub(crate) fn enabled(&self) -> bool {
+    pub(crate) fn checking(&self) -> bool {
         self.checking
     }
 
@@ -285,7 +285,7 @@ impl RoundingCertificate {
 
     #[inline]
     fn scanline_event(&mut self, event: Event) {
-        if !self.enabled() {
+        if !self.checking() {
             return;
         }
         if event.p.y != self.row_y {
@@ -306,7 +306,7 @@ impl RoundingCertificate {
     /// unless one of them is flat.
     #[inline]
     pub(crate) fn between_scanlines(&mut self, p: Point, edges: [u64; 2], counts: bool) {
-        if !self.enabled() {
+        if !self.checking() {
             return;
         }
         let event = Event { p, half_width: 0.0, counts, edges: Some(edges) };

@@ -322,7 +322,7 @@ impl<'a> SweepLine<'a> {
         let v = m.vertex;
         let vx = self.bounds.vertices[v as usize];
         let p = vx.pt;
-        if self.cert.enabled() {
+        if self.cert.checking() {
             let flat = |q: u32| self.cert.is_flat_segment(p, self.bounds.pt(q));
             let counts = !flat(vx.prev) || (!m.horizontal && !flat(vx.next));
             self.cert.on_scanline(p, counts);
@@ -363,7 +363,7 @@ impl<'a> SweepLine<'a> {
         }
         if m.horizontal {
             let to = self.bounds.pt(fwd_from);
-            if self.cert.enabled() {
+            if self.cert.checking() {
                 let counts = !self.cert.is_flat_segment(to, self.bounds.pt(fwd_to));
                 self.cert.horizontal(p, to);
                 self.cert.on_scanline(to, counts);
@@ -421,7 +421,7 @@ impl<'a> SweepLine<'a> {
             }
         }
         for &id in &ending {
-            if self.cert.enabled() {
+            if self.cert.checking() {
                 self.certify_top(id);
             }
             let e = self.ael.get_mut(id);
@@ -788,7 +788,7 @@ impl<'a> SweepLine<'a> {
             *y_prev = p.y;
         }
         let right = self.ael.next(left);
-        if self.cert.enabled() {
+        if self.cert.checking() {
             let (a, b) = (self.ael.get(left), self.ael.get(right));
             let key = |id: u32, e: &Edge| (u64::from(id) << 32) | u64::from(e.top_vertex);
             let counts = !(self.cert.is_flat(a) || self.cert.is_flat(b));
@@ -914,7 +914,7 @@ impl<'a> SweepLine<'a> {
         if rounded || (self.between && self.rounded_crossing) {
             self.cert.rounded_output();
         }
-        if self.cert.enabled() {
+        if self.cert.checking() {
             if self.cert.flats_near(p) {
                 self.certify_flats(p);
             }
@@ -924,7 +924,7 @@ impl<'a> SweepLine<'a> {
         while k != NONE && self.node_neighbour(a, b, k, p, rounded) {
             k = self.ael.next(k);
         }
-        if self.cert.enabled() {
+        if self.cert.checking() {
             self.certify_beside(k, p, true);
         }
     }
@@ -1026,7 +1026,7 @@ impl<'a> SweepLine<'a> {
         if !near || !on {
             return false;
         }
-        if rounded && self.cert.enabled() && k != self.crossing_pair.0 && k != self.crossing_pair.1 {
+        if rounded && self.cert.checking() && k != self.crossing_pair.0 && k != self.crossing_pair.1 {
             self.cert.fail("an edge within rounding of a rounded point");
         }
         if e.outrec != NONE && p != e.bot && p != e.top {
