@@ -166,9 +166,9 @@ pub(crate) struct RoundingCertificate {
     row: Events,
     /// True once some check failed, and the first one that did.
     failed: bool,
+    failure: Option<&'static str>,
     /// `enabled && !failed`, kept as one flag: it is read at every event.
     checking: bool,
-    failure: Option<&'static str>,
     /// True once a rounded point was output.
     rounded: bool,
     /// True once an event came below another taken before it by more than their rounding.
