@@ -52,6 +52,7 @@ mod filled_arc;
 mod geo;
 mod line_crossings;
 mod line_frame;
+mod near_edges;
 mod nesting;
 mod ops;
 mod point;
@@ -62,6 +63,7 @@ mod ring;
 mod segment;
 mod snap_rounding;
 mod trapezoid;
+mod vertex_snapping;
 mod winding;
 mod window_rings;
 
@@ -81,6 +83,7 @@ pub use error::{
 pub use filled_arc::{ArcFill, FilledArc};
 pub use line_crossings::{LineCrossings, PARAMETER_SNAP};
 pub use line_frame::{Along, LineFrame};
+pub use near_edges::NearEdges;
 pub use nesting::{NestedPolygon, nest};
 pub use ops::{BoolOp, FillRule, UnknownName};
 pub use point::Point;
@@ -89,7 +92,8 @@ pub use predicates::{LineSide, Orientation, SegmentIntersection, orient, segment
 pub use rect::Rect;
 pub use ring::Ring;
 pub use segment::{FAR_REACH, Segment};
-pub use snap_rounding::snap_round;
+pub use snap_rounding::{snap_round, snap_round_near};
 pub use trapezoid::Trapezoid;
+pub use vertex_snapping::snap_edges_to_vertices;
 pub use winding::{Location, edge_winding, locate, ring_winding, winding_number};
 pub use window_rings::WindowRings;

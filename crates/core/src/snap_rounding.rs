@@ -24,17 +24,18 @@
 //! Limits. The topology can change by up to a pixel: features narrower than a pixel collapse
 //! (rings can become spikes or touch themselves; rings left with fewer than three distinct points
 //! or all on one line are dropped), and a vertex can end up within `s·√2/2` of an edge it was not
-//! near. The pairs of edges within a pixel of each other come from a [`CellIndex`] (pairs whose
-//! boxes meet, less those a float test with bounded error finds farther apart than a pixel; then
-//! their crossings, and each edge's hot pixels tested against the other): near linear when edges
-//! are short beside the extent, quadratic when many long edges lie close to each other (bundles
-//! of nearly coincident edges), and the box index itself is quadratic in the long edges sharing
-//! its cells (stars). That is acceptable for a fallback run only where rounding could not be
-//! proven harmless, which is what it is for.
+//! near. The pairs of edges within a pixel of each other come from [`NearEdges`] (then their
+//! crossings, and each edge's hot pixels tested against the other): near linear when edges are
+//! short beside the extent, quadratic when many long edges lie close to each other (bundles of
+//! nearly coincident edges) or share the index's cells (stars). That is acceptable for a fallback
+//! run only where rounding could not be proven harmless, which is what it is for.
 
 use crate::double_double::DoubleDouble;
+use crate::near_edges::{NearEdges, shared_end};
+#[cfg(test)]
+use crate::near_edges::{apart, near_pairs};
 use crate::predicates::{self, Orientation, accurate_crossing_offset, crossing_coordinate_cmp, orient};
-use crate::{CellIndex, ClipError, Operand, Point, Polygons, Rect, Ring, Segment, SegmentIntersection};
+use crate::{ClipError, Point, Polygons, Ring, Segment, SegmentIntersection};
 
 /// A pixel, as its column and row: its centre is `(column·s, row·s)`.
 type Pixel = (i64, i64);
@@ -43,52 +44,29 @@ type Pixel = (i64, i64);
 /// rings, then the clip's, each without the rings the rounding leaves with fewer than three
 /// distinct points or all on one line. Edges of the result (of both operands together) meet only
 /// at shared end points or coincide; every vertex is a multiple of `pixel`, within `pixel·√2/2`
-/// of the input edge it comes from.
+/// of the input edge it comes from. Refuses what [`NearEdges::of`] refuses.
 pub fn snap_round(subject: &Polygons, clip: &Polygons, pixel: f64) -> Result<(Polygons, Polygons), ClipError> {
-    if !(pixel.is_normal() && pixel > 0.0 && pixel.to_bits() & ((1u64 << 52) - 1) == 0) {
-        return Err(ClipError::InvalidPixel { value: pixel });
-    }
-    for (operand, polygons) in [(Operand::Subject, subject), (Operand::Clip, clip)] {
-        check_on_grid(operand, polygons, pixel)?;
-    }
-    // Decided in pixel units (dividing by a power of two is exact): there every coordinate is
-    // below 2^51, so the degree-three crossing predicates stay finite whatever the pixel (in
-    // world units they overflow for coordinates beyond about 1e100). Grid points times the pixel
-    // are exact again.
-    let in_pixels = |r: &Ring| Ring::new(r.points.iter().map(|p| Point::new(p.x / pixel, p.y / pixel)).collect());
-    let rings: Vec<Ring> = subject.rings.iter().chain(&clip.rings).map(in_pixels).collect();
-    let rings: Vec<&Ring> = rings.iter().collect();
-    let in_world =
-        |points: Vec<Point>| Ring::new(points.into_iter().map(|p| Point::new(p.x * pixel, p.y * pixel)).collect());
-    let mut snapped = snap_rings(&rings, 1.0).into_iter();
-    let mut take = |n: usize| Polygons::new(snapped.by_ref().take(n).flatten().map(in_world).collect());
-    let a = take(subject.rings.len());
-    let b = take(clip.rings.len());
-    Ok((a, b))
+    Ok(snap_round_near(&NearEdges::of(subject, clip, pixel)?))
 }
 
-/// Every coordinate finite and within 2^51 pixels of the origin, where the pixel's centre and
-/// borders are exact.
-fn check_on_grid(operand: Operand, polygons: &Polygons, pixel: f64) -> Result<(), ClipError> {
-    let limit = pixel * 2f64.powi(51);
-    for (part, ring) in polygons.rings.iter().enumerate() {
-        for (vertex, p) in ring.points.iter().enumerate() {
-            if !p.is_finite() {
-                return Err(ClipError::NonFinite { operand, part, vertex, x: p.x, y: p.y });
-            }
-            if let Some(value) = [p.x, p.y].into_iter().find(|v| v.abs() >= limit) {
-                return Err(ClipError::BeyondGrid { operand, part, vertex, value, pixel });
-            }
-        }
-    }
-    Ok(())
+/// [`snap_round`] of the operands `near` was made of, on its pixel, from its near pairs.
+pub fn snap_round_near(near: &NearEdges) -> (Polygons, Polygons) {
+    // Grid points times the pixel are exact again.
+    let rings: Vec<&Ring> = near.rings.iter().collect();
+    near.in_world(snap_rings_of(&rings, &near.segments, &near.pairs, 1.0))
 }
 
 /// The snap-rounded points of each ring (finite, on the grid's range), `None` for a ring left
 /// with fewer than three distinct points or all on one line.
+#[cfg(test)]
 fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
     let segments: Vec<Segment> = rings.iter().flat_map(|r| r.edges()).collect();
-    let met = met_pixels(&segments, s);
+    snap_rings_of(rings, &segments, &near_pairs(&segments, s), s)
+}
+
+/// [`snap_rings`] of `rings`, whose edges are `segments` with the near `pairs` among them.
+fn snap_rings_of(rings: &[&Ring], segments: &[Segment], pairs: &[(u32, u32)], s: f64) -> Vec<Option<Vec<Point>>> {
+    let met = met_pixels(segments, pairs, s);
     let mut pixels = Vec::new();
     let mut next = 0;
     rings
@@ -149,27 +127,14 @@ impl PixelLists {
 /// crossing of two segments; each segment meets its own (its ends' and its crossings' pixels),
 /// and another segment's where it passes through them. A segment meets another's hot pixel only
 /// where the two come within a pixel of each other, so both are found from one pass over the
-/// pairs of segments whose boxes, grown by a pixel, meet: first the crossings, then each
-/// segment's pixels tested against the other's. Near linear where segments are short beside
-/// their extent (see `CellIndex`).
-fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
-    let boxes: Vec<Rect> = segments.iter().map(|e| e.bounds().expanded(s)).collect();
-    let mut pairs: Vec<(u32, u32)> = Vec::new();
-    if let Some(index) = CellIndex::new(&boxes) {
-        let _ = index.try_for_each_close_pair::<()>(&boxes, |i, j| {
-            let (e, f) = (segments[i], segments[j]);
-            // A ring's consecutive edges, the most common close pairs, meet at their shared end.
-            if shared_end(e, f).is_some() || !apart(e, f, s) {
-                pairs.push((i as u32, j as u32));
-            }
-            Ok(())
-        });
-    }
+/// near `pairs` ([`near_pairs`]): first the crossings, then each segment's pixels tested against
+/// the other's.
+fn met_pixels(segments: &[Segment], pairs: &[(u32, u32)], s: f64) -> PixelLists {
     let mut own: Vec<(u32, Pixel)> = Vec::with_capacity(2 * segments.len());
     for (i, e) in segments.iter().enumerate() {
         own.extend([(i as u32, pixel_of(e.a, s)), (i as u32, pixel_of(e.b, s))]);
     }
-    for &(i, j) in &pairs {
+    for &(i, j) in pairs {
         let (e, f) = (segments[i as usize], segments[j as usize]);
         // Touching points and overlaps end at input vertices, whose pixels are hot already; two
         // segments with an end in common (most close pairs: a ring's consecutive edges) cannot
@@ -187,7 +152,7 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
     for i in 0..segments.len() {
         met.extend(own.of(i).iter().map(|&p| (i as u32, p)));
     }
-    for &(i, j) in &pairs {
+    for &(i, j) in pairs {
         // The pixel of an end both share (a ring's consecutive edges) is on both own lists.
         let (e, f) = (segments[i as usize], segments[j as usize]);
         let shared = match shared_end(e, f) {
@@ -211,35 +176,6 @@ fn met_pixels(segments: &[Segment], s: f64) -> PixelLists {
         }
     }
     PixelLists::of_entries(segments.len(), &met)
-}
-
-/// An end `e` and `f` have in common.
-#[inline]
-fn shared_end(e: Segment, f: Segment) -> Option<Point> {
-    [e.a, e.b].into_iter().find(|&v| v == f.a || v == f.b)
-}
-
-/// True when `e` and `f` are certainly farther apart than a pixel's diagonal `s·√2`: the ends of
-/// one lie on one side of the other's line, both farther than that from it. Such a pair neither
-/// crosses nor has a hot pixel of one that the other meets (a hot pixel holds a point of its
-/// segment). A float test with its rounding bounded, so it keeps every pair within reach: boxes
-/// that meet are a poor test for long edges at an angle, which share boxes with many others far
-/// from them.
-#[inline]
-fn apart(e: Segment, f: Segment, s: f64) -> bool {
-    // The side of `c` from the line of `a`-`b`, scaled by |b - a|, and what it errs by (Shewchuk's
-    // bound for orient2d, over twice).
-    let side = |a: Point, b: Point, c: Point| {
-        let (l, r) = ((b.x - a.x) * (c.y - a.y), (b.y - a.y) * (c.x - a.x));
-        (l - r, 8.0 * f64::EPSILON * (l.abs() + r.abs()))
-    };
-    // |b - a| is at most its L1 length, and √2 < 1.5.
-    let beyond = |a: Point, b: Point, c: Point, d: Point| {
-        let reach = 1.5 * s * ((b.x - a.x).abs() + (b.y - a.y).abs());
-        let ((p, ep), (q, eq)) = (side(a, b, c), side(a, b, d));
-        (p > reach + ep && q > reach + eq) || (p < -(reach + ep) && q < -(reach + eq))
-    };
-    beyond(e.a, e.b, f.a, f.b) || beyond(f.a, f.b, e.a, e.b)
 }
 
 /// The pixel holding `p`: half-open, so a point on a border belongs to the pixel above or right.
@@ -397,6 +333,7 @@ fn has_area(points: &[Point]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Operand;
 
     /// A small xorshift generator: seeded, so every failure reproduces.
     struct Rng(u64);

@@ -206,7 +206,8 @@ mod trapezoids;
 use std::borrow::Cow;
 
 use clip_core::{
-    BoolOp, ClipError, FillRule, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid, validate_polygons,
+    BoolOp, ClipError, FillRule, NearEdges, Operand, PolygonCapabilities, PolygonClipper, Polygons, Trapezoid,
+    snap_edges_to_vertices, validate_polygons,
 };
 
 pub use crate::prepared::PreparedClip;
@@ -269,28 +270,41 @@ impl Vatti {
         Ok(clip_planned(subject, clip, None, op, fill, Plan { route, sweep, axis }))
     }
 
-    /// The sweep's conventional rings of valid operands. Where the rounding certificate fails
-    /// (`rounding_certificate`: some rounded point came within its clearance of an edge or event
-    /// it is not on), the snap-rounded operands are swept instead (`snap_fallback`): their edges
-    /// meet only at vertices, so that sweep rounds nothing. Either way the output's form is the
-    /// exact arrangement's, of the operands or of the snapped ones.
+    /// The sweep's conventional rings of valid operands, by a chain of fallbacks from floating
+    /// point to snap rounding (as GEOS OverlayNG falls back). Where the rounding certificate
+    /// fails (`rounding_certificate`: some rounded point came within its clearance of an edge or
+    /// event it is not on), the operands are swept again with every edge that passes within a
+    /// pixel ([`snap_fallback::pixel_size`]) of a vertex not its own routed through that vertex
+    /// (`clip_core::snap_edges_to_vertices`: the near misses of layers whose shared borders were
+    /// rounded apart), certified again; where that fails too, the snap-rounded operands are
+    /// swept (`snap_fallback`): their edges meet only at vertices, so that sweep rounds nothing.
+    /// Each way the output's form is the exact arrangement's, of the operands, of the routed ones
+    /// or of the snapped ones.
     fn sweep_polygons(subject: &Polygons, clip: &Polygons, op: BoolOp, fill: FillRule, sweep: Sweep) -> Polygons {
         let operands = if rounding_is_harmless(subject, clip) { Operands::RoundingHarmless } else { Operands::Float };
         let (subject, clip) = swept_operands(subject, clip, sweep, operands == Operands::Float);
         if let Some(out) = Vatti::sweep_clean(&subject, &clip, op, fill, sweep, operands) {
             return out;
         }
-        // Snapped as swept: without their opposite coincident pairs, so shared borders are noded
-        // once, not twice.
-        match snap_fallback::SnappedOperands::of(&subject, &clip) {
-            Some(snapped) => {
-                snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep))
-            }
-            // Not reached: the grid is chosen for valid operands' largest coordinate.
-            None => {
-                Vatti::sweep_clean(&subject, &clip, op, fill, sweep, Operands::RoundingHarmless).unwrap_or_default()
+        // Both later steps start from the pairs of edges within a pixel of each other, found once.
+        // The grid cannot refuse valid operands (the pixel is chosen for their largest
+        // coordinate); were it to, they are swept uncertified.
+        let Ok(near) = NearEdges::of(&subject, &clip, snap_fallback::pixel_size(&subject, &clip)) else {
+            return Vatti::sweep_clean(&subject, &clip, op, fill, sweep, Operands::RoundingHarmless)
+                .unwrap_or_default();
+        };
+        if let Some((a, b)) = snap_edges_to_vertices(&near) {
+            // Routing can make pairs of opposite coincident edges, where the vertex ended a
+            // neighbour's edge along the one routed.
+            let (a, b) = swept_operands(&a, &b, sweep, true);
+            if let Some(out) = Vatti::sweep_clean(&a, &b, op, fill, sweep, Operands::Float) {
+                return out;
             }
         }
+        // Snapped as swept: without their opposite coincident pairs, so shared borders are noded
+        // once, not twice.
+        let snapped = snap_fallback::SnappedOperands::of(&near);
+        snapped.to_world(&Vatti::sweep_polygons_once(&snapped.subject, &snapped.clip, op, fill, sweep))
     }
 
     /// The sweep's conventional rings of snap-rounded operands, swept as they are: they were

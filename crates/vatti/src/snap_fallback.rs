@@ -8,7 +8,7 @@
 //! crossing) by at most `s·√2/2`, with `s` the [`pixel_size`], in this fallback only: outputs the
 //! certificate holds for are returned as the first sweep made them.
 
-use clip_core::{MIN_COORDINATE, Point, Polygons, Ring, snap_round};
+use clip_core::{MIN_COORDINATE, NearEdges, Point, Polygons, Ring, snap_round_near};
 
 use crate::simplify::simplify_ring;
 
@@ -55,15 +55,14 @@ pub(crate) struct SnappedOperands {
 }
 
 impl SnappedOperands {
-    /// `None` when the grid refuses the operands (it cannot for valid operands: the pixel is
-    /// chosen for their largest coordinate).
-    pub(crate) fn of(subject: &Polygons, clip: &Polygons) -> Option<SnappedOperands> {
-        let pixel = pixel_size(subject, clip);
-        let (a, b) = snap_round(subject, clip, pixel).ok()?;
+    /// The operands `near` holds (on their [`pixel_size`]) snap rounded.
+    pub(crate) fn of(near: &NearEdges) -> SnappedOperands {
+        let pixel = near.pixel();
+        let (a, b) = snap_round_near(near);
         let low = a.bounds().union(b.bounds()).min;
         let origin = Point::new((low.x / pixel).round() * pixel, (low.y / pixel).round() * pixel);
         let local = |p: &Polygons| map(p, |q| Point::new((q.x - origin.x) / pixel, (q.y - origin.y) / pixel));
-        Some(SnappedOperands { subject: local(&a), clip: local(&b), origin, pixel })
+        SnappedOperands { subject: local(&a), clip: local(&b), origin, pixel }
     }
 
     /// `out` (in pixel units) back in the operands' coordinates: exact for the sweep's output of
@@ -120,10 +119,44 @@ mod tests {
     }
 
     #[test]
+    fn a_vertex_an_ulp_inside_a_neighbours_edge_is_routed_through_not_snapped() {
+        // The triangle's vertex lies an ulp inside the square's right edge, and its two edges
+        // cross that edge within an ulp of it: the certificate fails. Routed through the vertex,
+        // the square's edge meets them there exactly, and the routed operands' sweep holds: the
+        // fallback chain stops there, before snap rounding.
+        let v = Point::new(1.0 - f64::EPSILON / 2.0, 0.5);
+        let square = Polygons::new(vec![ring(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)])]);
+        let triangle = Polygons::new(vec![ring(&[(v.x, v.y), (2.0, 0.0), (2.0, 1.0)])]);
+        let near = NearEdges::of(&square, &triangle, pixel_size(&square, &triangle)).expect("valid operands");
+        let (a, b) = clip_core::snap_edges_to_vertices(&near).expect("the square's edge passes near the vertex");
+        assert!(a.rings[0].points.contains(&v) && b == triangle, "{a:?}");
+        let mut routed_taken = 0;
+        for sweep in [Sweep::Scanbeam, Sweep::Events] {
+            for op in [BoolOp::Intersection, BoolOp::Union, BoolOp::Difference, BoolOp::Xor] {
+                for fill in [FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative] {
+                    let out = Vatti::sweep_polygons(&square, &triangle, op, fill, sweep);
+                    check_valid_output(&out).unwrap_or_else(|e| panic!("{op:?} {fill:?}: {e:?}"));
+                    // Where the certificate holds as they are (nothing rounded is output: under
+                    // the negative rule, nothing at all), the operands are not routed.
+                    let float = Vatti::sweep_clean(&square, &triangle, op, fill, sweep, crate::Operands::Float);
+                    let routed = Vatti::sweep_clean(&a, &b, op, fill, sweep, crate::Operands::Float);
+                    let expected = float.or_else(|| {
+                        routed_taken += 1;
+                        routed
+                    });
+                    assert_eq!(Some(out), expected, "{op:?} {fill:?} {sweep:?}");
+                }
+            }
+        }
+        assert!(routed_taken >= 12, "the routed sweep taken {routed_taken} times of 32");
+    }
+
+    #[test]
     fn snapped_sweeps_of_nearly_coincident_squares_are_valid_and_close() {
         for angle in [1e-16, -3e-16, 1e-12] {
             let (subject, clip) = square_and_turned_copy(angle);
-            let snapped = SnappedOperands::of(&subject, &clip).expect("valid operands");
+            let near = NearEdges::of(&subject, &clip, pixel_size(&subject, &clip)).expect("valid operands");
+            let snapped = SnappedOperands::of(&near);
             let moved = pixel_size(&subject, &clip) * std::f64::consts::SQRT_2 / 2.0;
             for op in [BoolOp::Intersection, BoolOp::Union, BoolOp::Difference, BoolOp::Xor] {
                 for fill in [FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative] {
