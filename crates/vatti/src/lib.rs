@@ -143,9 +143,13 @@
 //!     list of their own), and at every output point the nearest edges either side in the table
 //!     farther than 256 ulps. Crossings whose quotient may err by over 32 ulps (edges at a small
 //!     angle) are computed from accurate determinants. The argument is in `rounding_certificate`.
-//!   - Where the certificate fails and a rounded point was output, the sweep stops and both
-//!     operands are snap rounded (`clip_core::snap_round`, Hobby 1999) on a grid of pixels of `s`,
-//!     the smallest power of two at least 4 ulps of the largest input coordinate, and swept once
+//!   - Where the certificate fails and a rounded point was output, the sweep stops. With `s`
+//!     the smallest power of two at least 4 ulps of the largest input coordinate, every edge
+//!     passing within `s` of a vertex it does not end at is routed through that vertex
+//!     (`clip_core::snap_edges_to_vertices`: vertices stay, edges move by at most `s`) and the
+//!     routed operands are swept and certified again: the near misses of map layers whose shared
+//!     borders were rounded apart are of that kind. Where that fails too, both operands are snap
+//!     rounded (`clip_core::snap_round`, Hobby 1999) on a grid of pixels of `s` and swept once
 //!     (`snap_fallback`): their edges meet only at vertices, so that sweep rounds nothing and
 //!     its output is valid by construction; each of its vertices is within `s·√2/2` of the
 //!     exact vertex or crossing. No output is checked or repaired afterwards.
