@@ -298,9 +298,9 @@ impl Vatti {
                 .unwrap_or_default();
         };
         if let Some((a, b)) = snap_edges_to_vertices(&near) {
-            // Routing can make pairs of opposite coincident edges, where the vertex ended a
-            // neighbour's edge along the one routed.
-            let (a, b) = swept_operands(&a, &b, sweep, true);
+            // Not cancelled again: routing makes few new pairs of opposite coincident edges (where
+            // the vertex ended a neighbour's edge along the one routed), and a pair left costs
+            // only a certificate that fails where an edge crosses it, not a wrong output.
             if let Some(out) = Vatti::sweep_clean(&a, &b, op, fill, sweep, Operands::Float) {
                 return out;
             }
