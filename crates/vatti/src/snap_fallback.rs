@@ -1,5 +1,7 @@
-//! The one fallback, where the rounding certificate fails (`rounding_certificate`): both
-//! operands snap rounded (`clip_core::snap_round`, after Hobby 1999), then swept once.
+//! The last step of the fallback chain, where the rounding certificate (`rounding_certificate`)
+//! fails for the operands and for them routed through their near vertices
+//! (`clip_core::snap_edges_to_vertices`): both operands snap rounded (`clip_core::snap_round`,
+//! after Hobby 1999), then swept once.
 //!
 //! Snap-rounded edges meet only at shared vertices or coincide, so the sweep of the rounded
 //! operands (which keeps their straight-through vertices: dropping one where another edge
