@@ -56,7 +56,7 @@ pub fn snap_edges_to_vertices(near: &NearEdges) -> Option<(Polygons, Polygons)> 
         }
         Some(points)
     });
-    Some(near.in_world(rings.collect::<Vec<_>>()))
+    Some(near.in_world(rings))
 }
 
 /// True when vertex `v` lies within `tolerance` of edge `e` (within its span), and farther than
