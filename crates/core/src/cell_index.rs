@@ -15,12 +15,26 @@ const MAX_SIDE_CELLS: u64 = 1 << 16;
 #[derive(Clone, Debug)]
 pub struct CellIndex {
     origin: Point,
+    /// The side of a cell: a power of two, so that `inverse` is exact and a cell's column is
+    /// found by a product (a division takes several times as long, for every box and point).
     size: f64,
+    /// `1 / size`, exactly.
+    inverse: f64,
     columns: u64,
     rows: u64,
     /// (cell key, box index), sorted. At most 2^16 columns and rows, so a key fits 32 bits: 8
     /// bytes an entry, half the memory a sort and a walk of millions of them move.
     entries: Vec<(u32, u32)>,
+}
+
+/// The smallest power of two at least `v` (positive and normal, or `v` itself where it is not
+/// finite): exact to divide by, or to multiply by its inverse.
+pub fn power_of_two_at_least(v: f64) -> f64 {
+    if !v.is_finite() || v < f64::MIN_POSITIVE {
+        return v;
+    }
+    let p = f64::from_bits(v.to_bits() & (0x7ff << 52));
+    if p < v { p * 2.0 } else { p }
 }
 
 /// Sorts `entries`, made box by box (so ascending in box within each cell), by cell key below
@@ -60,10 +74,10 @@ fn sort_by_cell(entries: &mut Vec<(u32, u32)>, cells: u64) {
 
 impl CellIndex {
     /// The index of `boxes`, or `None` when there are none. Cells start at twice the median
-    /// box's larger side (a typical box then covers one to four cells, not four: fewer entries
-    /// to sort, for a few more pairs to test in each cell) and double until the boxes cover at
-    /// most eight cells each on average (a few long boxes among many small ones must not cover
-    /// millions).
+    /// box's larger side, rounded up to a power of two (a typical box then covers one to four
+    /// cells, not four: fewer entries to sort, for a few more pairs to test in each cell) and
+    /// double until the boxes cover at most eight cells each on average (a few long boxes among
+    /// many small ones must not cover millions).
     pub fn new(boxes: &[Rect]) -> Option<CellIndex> {
         let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
         if b.is_empty() {
@@ -84,21 +98,28 @@ impl CellIndex {
         CellIndex::with_cell_size(boxes, size)
     }
 
-    /// The index of `boxes` on cells of side `size` (at least 1/65536 of their extent), or `None`
-    /// when there are none. For boxes looked up by others of another scale: the hot pixels of
-    /// snap rounding, tiny squares, are found by the edges that meet them, on cells sized like
-    /// the edges (cells the size of a pixel would make every long edge walk millions of them).
+    /// The index of `boxes` on cells of side `size` (rounded up to a power of two, and at least
+    /// 1/65536 of their extent), or `None` when there are none. For boxes looked up by others of
+    /// another scale: the hot pixels of snap rounding, tiny squares, are found by the edges that
+    /// meet them, on cells sized like the edges (cells the size of a pixel would make every long
+    /// edge walk millions of them).
     pub fn with_cell_size(boxes: &[Rect], size: f64) -> Option<CellIndex> {
         let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
         if b.is_empty() {
             return None;
         }
-        let size = size.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
+        let size = power_of_two_at_least(size.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE));
         // At most 2^16 each, whatever the rounding of the quotient: the last column and row
         // then reach a little farther, as `coordinates` clamps every point the same way.
         let count = |span: f64| ((span / size).floor() as u64).saturating_add(1).min(MAX_SIDE_CELLS);
-        let mut index =
-            CellIndex { origin: b.min, size, columns: count(b.width()), rows: count(b.height()), entries: Vec::new() };
+        let mut index = CellIndex {
+            origin: b.min,
+            size,
+            inverse: 1.0 / size,
+            columns: count(b.width()),
+            rows: count(b.height()),
+            entries: Vec::new(),
+        };
         let mut entries = Vec::with_capacity(2 * boxes.len());
         for (i, r) in boxes.iter().enumerate() {
             let ((x0, y0), (x1, y1)) = (index.coordinates(r.min), index.coordinates(r.max));
@@ -127,7 +148,7 @@ impl CellIndex {
         // targets without SSE4.1, and this runs for every box and pair the index visits. Through
         // i64 (one instruction; saturating, as `min` needs), not u64 (a branchy sequence).
         let index = |v: f64, lo: f64, n: u64| {
-            let k = (v - lo) / self.size;
+            let k = (v - lo) * self.inverse;
             if k > 0.0 { (k as i64 as u64).min(n - 1) } else { 0 }
         };
         (index(p.x, self.origin.x, self.columns), index(p.y, self.origin.y, self.rows))

@@ -69,7 +69,7 @@ mod window_rings;
 
 pub use area::{runs_counter_clockwise, signed_area};
 pub use batch_filter::retain_indices;
-pub use cell_index::CellIndex;
+pub use cell_index::{CellIndex, power_of_two_at_least};
 pub use clipper::{
     LineCapabilities, LineClipper, OutputForm, PolygonCapabilities, PolygonClipper, PreparedWindow, VisiblePiece,
     WindowKind,

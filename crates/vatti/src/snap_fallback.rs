@@ -10,7 +10,7 @@
 //! crossing) by at most `s·√2/2`, with `s` the [`pixel_size`], in this fallback only: outputs the
 //! certificate holds for are returned as the first sweep made them.
 
-use clip_core::{MIN_COORDINATE, NearEdges, Point, Polygons, Ring, snap_round_near};
+use clip_core::{MIN_COORDINATE, NearEdges, Point, Polygons, Ring, power_of_two_at_least, snap_round_near};
 
 use crate::simplify::simplify_ring;
 
@@ -26,20 +26,13 @@ const PIXEL_ULPS_LOG2: i32 = 2;
 /// largest coordinate: a few times the rounding the sweep's crossings have anyway.
 pub(crate) fn pixel_size(subject: &Polygons, clip: &Polygons) -> f64 {
     let largest = subject.points().chain(clip.points()).fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-    let floor = smallest_power_of_two_from(MIN_COORDINATE);
+    let floor = power_of_two_at_least(MIN_COORDINATE);
     if largest < f64::MIN_POSITIVE {
         return floor;
     }
     // 2^e <= largest < 2^(e+1): an ulp there is 2^(e-52), four are 2^(e-50).
     let e = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
     2f64.powi(e - 52 + PIXEL_ULPS_LOG2).max(floor)
-}
-
-/// The smallest power of two at least `v` (positive, normal).
-fn smallest_power_of_two_from(v: f64) -> f64 {
-    let e = ((v.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    let p = 2f64.powi(e);
-    if p < v { p * 2.0 } else { p }
 }
 
 /// Both operands snap rounded at their [`pixel_size`] `s`, in pixel units from a grid point
