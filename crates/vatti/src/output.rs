@@ -34,6 +34,8 @@ pub(crate) struct OutRec {
     pub right_edge: u32,
     /// True once the ring is closed and its points final.
     closed: bool,
+    /// How many points the chain from `left` to `right` holds.
+    len: u32,
 }
 
 /// All output polygons of one sweep.
@@ -41,7 +43,16 @@ pub(crate) struct OutRec {
 pub(crate) struct OutputBuilder {
     pts: Vec<OutPt>,
     recs: Vec<OutRec>,
+    /// The closed rings' points copied out of their chains, ring after ring, each with its
+    /// index in `pts` ([`OutputBuilder::rings_into`]'s buffer, kept between sweeps).
+    walked: Vec<(Point, u32)>,
 }
+
+/// How many chains [`OutputBuilder::rings_into`] walks at once. A ring's points lie far apart
+/// in `pts` wherever many rings grow side by side (each scanline feeds each of them), so each
+/// step of a walk waits for memory; steps of different walks do not depend on each other, and
+/// the processor overlaps them.
+const WALKS: usize = 8;
 
 impl OutputBuilder {
     /// Empties the builder, keeping its buffers, with room for `n` points.
@@ -53,7 +64,9 @@ impl OutputBuilder {
 
     /// Bytes the buffers hold (their capacity).
     pub(crate) fn held_bytes(&self) -> usize {
-        self.pts.capacity() * size_of::<OutPt>() + self.recs.capacity() * size_of::<OutRec>()
+        self.pts.capacity() * size_of::<OutPt>()
+            + self.recs.capacity() * size_of::<OutRec>()
+            + self.walked.capacity() * size_of::<(Point, u32)>()
     }
 
     /// AddLocalMin: a new polygon holding `p`, fed by `left_edge` and `right_edge`.
@@ -61,7 +74,7 @@ impl OutputBuilder {
         let pt = self.pts.len() as u32;
         self.pts.push(OutPt { pt: p, next: NONE });
         let rec = self.recs.len() as u32;
-        self.recs.push(OutRec { left: pt, right: pt, left_edge, right_edge, closed: false });
+        self.recs.push(OutRec { left: pt, right: pt, left_edge, right_edge, closed: false, len: 1 });
         rec
     }
 
@@ -85,6 +98,7 @@ impl OutputBuilder {
             return;
         }
         let id = self.pts.len() as u32;
+        r.len += 1;
         if at_left {
             r.left = id;
             self.pts.push(OutPt { pt: p, next: left });
@@ -112,36 +126,58 @@ impl OutputBuilder {
         let r = &mut self.recs[x as usize];
         r.right = ry.right;
         r.right_edge = ry.right_edge;
+        r.len += ry.len;
         let e = &mut self.recs[y as usize];
         e.left_edge = NONE;
         e.right_edge = NONE;
         e.left = NONE;
         e.right = NONE;
+        e.len = 0;
     }
 
     /// Every closed ring, each in `next` order (the result on its left), stamped with the
-    /// points' emission order, into `raw` (emptied first, its buffers kept).
-    pub(crate) fn rings_into(&self, raw: &mut RawRings) {
+    /// points' emission order, into `raw` (emptied first, its buffers kept). The chains are
+    /// copied out [`WALKS`] at a time, then read in order.
+    pub(crate) fn rings_into(&mut self, raw: &mut RawRings) {
         raw.clear();
         raw.stamps = self.pts.len();
         raw.points.reserve(self.pts.len());
         raw.emitted.reserve(self.pts.len());
-        for r in &self.recs {
-            if !r.closed || r.left == NONE {
-                continue;
-            }
-            let start = raw.points.len();
-            let mut p = r.left;
-            // A ring holds at most every point ever made: the bound guards a corrupt list.
-            for _ in 0..self.pts.len() {
-                let here = &self.pts[p as usize];
-                raw.push_point(start, here.pt, p);
-                if p == r.right || here.next == NONE {
-                    break;
+        let closed = || self.recs.iter().filter(|r| r.closed && r.left != NONE);
+        let total = closed().map(|r| r.len as usize).sum();
+        let mut walked = std::mem::take(&mut self.walked);
+        walked.clear();
+        walked.resize(total, (Point::new(0.0, 0.0), NONE));
+        // Each walk: the point it reads next, where that goes in `walked`, and how many are left.
+        let mut walks = [(NONE, 0usize, 0u32); WALKS];
+        let (mut rings, mut at) = (closed(), 0);
+        loop {
+            let mut busy = false;
+            for (p, to, left) in &mut walks {
+                if *left == 0 {
+                    let Some(r) = rings.next() else { continue };
+                    (*p, *to, *left) = (r.left, at, r.len);
+                    at += r.len as usize;
                 }
-                p = here.next;
+                let here = &self.pts[*p as usize];
+                walked[*to] = (here.pt, *p);
+                (*p, *to, *left) = (here.next, *to + 1, *left - 1);
+                busy = true;
             }
+            if !busy {
+                break;
+            }
+        }
+        let mut from = 0;
+        for r in closed() {
+            debug_assert_eq!(walked[from + r.len as usize - 1].1, r.right, "a chain's length is off");
+            let start = raw.points.len();
+            for &(pt, stamp) in &walked[from..from + r.len as usize] {
+                raw.push_point(start, pt, stamp);
+            }
+            from += r.len as usize;
             raw.end_ring(start);
         }
+        self.walked = walked;
     }
 }
