@@ -45,7 +45,7 @@ impl NearEdges {
         let in_pixels = |r: &Ring| Ring::new(r.points.iter().map(|p| Point::new(p.x / pixel, p.y / pixel)).collect());
         let rings: Vec<Ring> = subject.rings.iter().chain(&clip.rings).map(in_pixels).collect();
         let segments: Vec<Segment> = rings.iter().flat_map(|r| r.edges()).collect();
-        let pairs = near_pairs(&segments, 1.0);
+        let pairs = near_pairs(rings.iter().map(Ring::len), &segments, 1.0);
         Ok(NearEdges { pixel, subject_rings: subject.rings.len(), rings, segments, pairs })
     }
 
@@ -85,14 +85,30 @@ fn check_on_grid(operand: Operand, polygons: &Polygons, pixel: f64) -> Result<()
     Ok(())
 }
 
-/// The pairs of `segments` whose boxes, grown by `s`, meet, less those certainly farther apart
-/// than `s·√2` ([`apart`]); pairs with an end in common (a ring's consecutive edges, the most
-/// common close pairs) are kept without the test.
-pub(crate) fn near_pairs(segments: &[Segment], s: f64) -> Vec<(u32, u32)> {
-    let boxes: Vec<_> = segments.iter().map(|e| e.bounds().expanded(s)).collect();
+/// The pairs of `segments` (the edges of rings of `lengths` edges, ring after ring) whose boxes,
+/// grown by `s`, meet, less those certainly farther apart than `s·√2` ([`apart`]). A ring's
+/// consecutive edges, the most common close pairs, are all kept, listed first in order along
+/// their rings: the index walk skips them, and the walks over the pairs (vertex snapping, snap
+/// rounding) read their segments in order instead of scattered by cell.
+pub(crate) fn near_pairs(lengths: impl IntoIterator<Item = usize>, segments: &[Segment], s: f64) -> Vec<(u32, u32)> {
     let mut pairs: Vec<(u32, u32)> = Vec::new();
+    // The edge after each one in its ring.
+    let mut next: Vec<u32> = Vec::with_capacity(segments.len());
+    for n in lengths {
+        let (first, end) = (next.len() as u32, (next.len() + n) as u32);
+        let after = |k: u32| if k + 1 == end { first } else { k + 1 };
+        next.extend((first..end).map(after));
+        // Each pair once: a ring of two edges makes one, a ring of one none.
+        let count = if n > 2 { n } else { n.saturating_sub(1) };
+        pairs.extend((first..end).take(count).map(|k| (k, after(k))));
+    }
+    debug_assert_eq!(next.len(), segments.len(), "the rings' lengths add up to the segments");
+    let boxes: Vec<_> = segments.iter().map(|e| e.bounds().expanded(s)).collect();
     if let Some(index) = CellIndex::new(&boxes) {
         let _ = index.try_for_each_close_pair::<()>(&boxes, |i, j| {
+            if next[i] as usize == j || next[j] as usize == i {
+                return Ok(());
+            }
             let (e, f) = (segments[i], segments[j]);
             if shared_end(e, f).is_some() || !apart(e, f, s) {
                 pairs.push((i as u32, j as u32));

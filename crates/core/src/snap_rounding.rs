@@ -61,7 +61,7 @@ pub fn snap_round_near(near: &NearEdges) -> (Polygons, Polygons) {
 #[cfg(test)]
 fn snap_rings(rings: &[&Ring], s: f64) -> Vec<Option<Vec<Point>>> {
     let segments: Vec<Segment> = rings.iter().flat_map(|r| r.edges()).collect();
-    snap_rings_of(rings, &segments, &near_pairs(&segments, s), s)
+    snap_rings_of(rings, &segments, &near_pairs(rings.iter().map(|r| r.len()), &segments, s), s)
 }
 
 /// [`snap_rings`] of `rings`, whose edges are `segments` with the near `pairs` among them.
