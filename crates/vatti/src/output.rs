@@ -48,11 +48,17 @@ pub(crate) struct OutputBuilder {
     walked: Vec<(Point, u32)>,
 }
 
-/// How many chains [`OutputBuilder::rings_into`] walks at once. A ring's points lie far apart
-/// in `pts` wherever many rings grow side by side (each scanline feeds each of them), so each
-/// step of a walk waits for memory; steps of different walks do not depend on each other, and
-/// the processor overlaps them.
+/// How many chains [`OutputBuilder::rings_into`] walks at once, from [`WALKS_FROM`] points. A
+/// ring's points lie far apart in `pts` wherever many rings grow side by side (each scanline
+/// feeds each of them), so where `pts` is larger than the processor's caches each step of a walk
+/// waits for memory; steps of different walks do not depend on each other, and the processor
+/// overlaps them.
 const WALKS: usize = 8;
+
+/// The fewest points (24 bytes each: 768 KiB, about a core's second-level cache) from which
+/// [`OutputBuilder::rings_into`] walks chains [`WALKS`] at a time; below, one at a time costs
+/// fewer instructions and its steps find the points in cache.
+const WALKS_FROM: usize = 1 << 15;
 
 impl OutputBuilder {
     /// Empties the builder, keeping its buffers, with room for `n` points.
@@ -136,36 +142,63 @@ impl OutputBuilder {
     }
 
     /// Every closed ring, each in `next` order (the result on its left), stamped with the
-    /// points' emission order, into `raw` (emptied first, its buffers kept). The chains are
-    /// copied out [`WALKS`] at a time, then read in order.
+    /// points' emission order, into `raw` (emptied first, its buffers kept).
     pub(crate) fn rings_into(&mut self, raw: &mut RawRings) {
         raw.clear();
         raw.stamps = self.pts.len();
         raw.points.reserve(self.pts.len());
         raw.emitted.reserve(self.pts.len());
+        if self.pts.len() >= WALKS_FROM { self.walk_apart(raw) } else { self.walk_one_by_one(raw) }
+    }
+
+    /// [`OutputBuilder::rings_into`] of few points: each chain walked in turn.
+    fn walk_one_by_one(&self, raw: &mut RawRings) {
+        for r in self.recs.iter().filter(|r| r.closed && r.left != NONE) {
+            let (start, mut p) = (raw.points.len(), r.left);
+            for _ in 0..r.len {
+                let here = &self.pts[p as usize];
+                raw.push_point(start, here.pt, p);
+                p = here.next;
+            }
+            raw.end_ring(start);
+        }
+    }
+
+    /// [`OutputBuilder::rings_into`] of many points: the chains are copied out [`WALKS`] at a
+    /// time into one buffer, then read from it in order.
+    fn walk_apart(&mut self, raw: &mut RawRings) {
         let closed = || self.recs.iter().filter(|r| r.closed && r.left != NONE);
         let total = closed().map(|r| r.len as usize).sum();
         let mut walked = std::mem::take(&mut self.walked);
         walked.clear();
         walked.resize(total, (Point::new(0.0, 0.0), NONE));
         // Each walk: the point it reads next, where that goes in `walked`, and how many are left.
+        // Walks `..busy` are under way; one that ends takes the next ring, or the last walk's
+        // place when there is none.
         let mut walks = [(NONE, 0usize, 0u32); WALKS];
-        let (mut rings, mut at) = (closed(), 0);
+        let (mut rings, mut at, mut busy) = (closed(), 0, 0);
         loop {
-            let mut busy = false;
-            for (p, to, left) in &mut walks {
-                if *left == 0 {
-                    let Some(r) = rings.next() else { continue };
-                    (*p, *to, *left) = (r.left, at, r.len);
-                    at += r.len as usize;
-                }
+            while busy < WALKS {
+                let Some(r) = rings.next() else { break };
+                walks[busy] = (r.left, at, r.len);
+                at += r.len as usize;
+                busy += 1;
+            }
+            if busy == 0 {
+                break;
+            }
+            let mut w = 0;
+            while w < busy {
+                let (p, to, left) = &mut walks[w];
                 let here = &self.pts[*p as usize];
                 walked[*to] = (here.pt, *p);
                 (*p, *to, *left) = (here.next, *to + 1, *left - 1);
-                busy = true;
-            }
-            if !busy {
-                break;
+                if *left == 0 {
+                    busy -= 1;
+                    walks[w] = walks[busy];
+                } else {
+                    w += 1;
+                }
             }
         }
         let mut from = 0;
@@ -179,5 +212,54 @@ impl OutputBuilder {
             raw.end_ring(start);
         }
         self.walked = walked;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chains_walked_apart_give_the_rings_walked_one_by_one() {
+        // Many polygons grown at both ends side by side (their points interleaved in `pts`),
+        // some joined end to end, some left open; a point repeating an end is not added.
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = |n: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % n
+        };
+        let mut out = OutputBuilder::default();
+        out.reset(0);
+        let mut open: Vec<u32> = Vec::new();
+        for step in 0..20_000u32 {
+            let p = Point::new(f64::from(step % 97), f64::from(step));
+            if open.is_empty() || next(10) == 0 {
+                open.push(out.add_local_min(0, 0, p));
+                continue;
+            }
+            let k = next(open.len() as u64) as usize;
+            match next(40) {
+                0 if open.len() > 1 => {
+                    let y = open.swap_remove((k + 1) % open.len());
+                    let x = open[k % open.len()];
+                    out.append(x, y);
+                }
+                1 => out.close(open.swap_remove(k)),
+                2 => out.add(open[k], true, out.pts[out.rec(open[k]).left as usize].pt),
+                r => out.add(open[k], r % 2 == 0, p),
+            }
+        }
+        for &r in &open[..open.len() / 2] {
+            out.close(r);
+        }
+        let (mut apart, mut one_by_one) = (RawRings::default(), RawRings::default());
+        out.walk_apart(&mut apart);
+        out.walk_one_by_one(&mut one_by_one);
+        assert!(apart.len() > 100, "{} rings", apart.len());
+        assert_eq!(apart.points, one_by_one.points);
+        assert_eq!(apart.ends, one_by_one.ends);
+        assert_eq!(apart.emitted, one_by_one.emitted);
     }
 }
