@@ -1,7 +1,7 @@
 //! A sparse uniform grid of boxes, for finding the boxes that meet without testing every pair.
 //!
-//! Shared by the oracle's form check (pairs of output edges) and the snap-rounding noder (pairs
-//! of input edges, and the hot pixels each edge meets). Cost: near linear when the boxes are
+//! Shared by the oracle's checks (pairs of output edges), the near pairs of input edges that
+//! vertex snapping and snap rounding start from (`NearEdges`), and vatti's far splice. Cost: near linear when the boxes are
 //! small beside their extent; a box covers every cell it spans, so many long boxes sharing cells
 //! (nested squares, combs, long near-parallel edges) make it quadratic.
 
@@ -99,11 +99,8 @@ impl CellIndex {
     }
 
     /// The index of `boxes` on cells of side `size` (rounded up to a power of two, and at least
-    /// 1/65536 of their extent), or `None` when there are none. For boxes looked up by others of
-    /// another scale: the hot pixels of snap rounding, tiny squares, are found by the edges that
-    /// meet them, on cells sized like the edges (cells the size of a pixel would make every long
-    /// edge walk millions of them).
-    pub fn with_cell_size(boxes: &[Rect], size: f64) -> Option<CellIndex> {
+    /// 1/65536 of their extent), or `None` when there are none.
+    fn with_cell_size(boxes: &[Rect], size: f64) -> Option<CellIndex> {
         let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
         if b.is_empty() {
             return None;
@@ -158,13 +155,6 @@ impl CellIndex {
     pub fn cell(&self, p: Point) -> u32 {
         let (x, y) = self.coordinates(p);
         (y * self.columns + x) as u32
-    }
-
-    /// The boxes listed in the cell holding `p`.
-    pub fn at(&self, p: Point) -> impl Iterator<Item = usize> + '_ {
-        let key = self.cell(p);
-        let start = self.entries.partition_point(|e| e.0 < key);
-        self.entries[start..].iter().take_while(move |e| e.0 == key).map(|e| e.1 as usize)
     }
 
     /// Calls `visit(i, j)` (i before j in a cell's list) once on every pair of the indexed
@@ -230,51 +220,6 @@ impl CellIndex {
     }
 }
 
-impl CellIndex {
-    /// Calls `visit(i)` on every indexed box of `boxes` that meets the segment `a`–`b` widened
-    /// by `margin` (and on some others; a box can be visited more than once). Walks the rows of
-    /// cells the segment crosses, in each only the columns its stretch there covers: a long
-    /// diagonal edge looks at cells along it, not at every cell of its box.
-    pub fn for_each_near_segment(&self, boxes: &[Rect], a: Point, b: Point, margin: f64, mut visit: impl FnMut(usize)) {
-        // Rounding of the line's x, of the rows' heights and of the cell of a point: a few ulps
-        // of the largest coordinate involved, covered many times over.
-        let extent = (self.columns + self.rows) as f64 * self.size;
-        let scale = [a.x, a.y, b.x, b.y, self.origin.x, self.origin.y].iter().fold(extent, |m, v| m.max(v.abs()));
-        let margin = margin + 16.0 * f64::EPSILON * scale;
-        let reach =
-            Rect::new(a.x.min(b.x) - margin, a.y.min(b.y) - margin, a.x.max(b.x) + margin, a.y.max(b.y) + margin);
-        if reach.is_empty() {
-            return;
-        }
-        let ((_, y0), (_, y1)) = (self.coordinates(reach.min), self.coordinates(reach.max));
-        let (dx, dy) = (b.x - a.x, b.y - a.y);
-        // The x of the segment's line at height y, to within 8 ulps of `scale`.
-        let x_at = |y: f64| a.x + (y - a.y) / dy * dx;
-        for row in y0..=y1 {
-            let (bottom, top) = (self.origin.y + row as f64 * self.size, self.origin.y + (row + 1) as f64 * self.size);
-            let (lo, hi) = (reach.min.y.max(bottom - margin), reach.max.y.min(top + margin));
-            let (mut left, mut right) = (reach.min.x, reach.max.x);
-            if dy != 0.0 && lo <= hi {
-                let (p, q) = (x_at(lo.max(a.y.min(b.y))), x_at(hi.min(a.y.max(b.y))));
-                left = left.max(p.min(q) - margin);
-                right = right.min(p.max(q) + margin);
-            }
-            let stretch = Rect::new(left, lo, right, hi);
-            if stretch.is_empty() {
-                continue;
-            }
-            let ((x0, _), (x1, _)) = (self.coordinates(stretch.min), self.coordinates(stretch.max));
-            let (from, to) = ((row * self.columns + x0) as u32, (row * self.columns + x1) as u32);
-            let start = self.entries.partition_point(|e| e.0 < from);
-            for &(_, i) in self.entries[start..].iter().take_while(|e| e.0 <= to) {
-                if boxes[i as usize].intersects(&stretch) {
-                    visit(i as usize);
-                }
-            }
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -312,35 +257,6 @@ mod tests {
             expected.sort_unstable();
             sort_by_cell(&mut entries, cells);
             assert_eq!(entries, expected, "{count} entries in {cells} cells");
-        }
-    }
-
-    #[test]
-    fn segment_walks_find_every_box_the_segment_passes_through() {
-        // Small squares on a lattice, and long and short segments every way: a square holding a
-        // point of the segment is visited, and a long diagonal skips squares far from it.
-        let mut boxes = Vec::new();
-        for k in 0..900 {
-            let (x, y) = (f64::from(k % 30) * 0.37, f64::from(k / 30) * 0.41);
-            boxes.push(Rect::new(x, y, x + 0.05, y + 0.05));
-        }
-        let index = CellIndex::with_cell_size(&boxes, 0.3).expect("boxes");
-        let ends = [(0.0, 0.0), (11.0, 12.0), (3.0, 0.2), (3.0, 9.0), (10.9, 0.1), (5.55, 5.55)];
-        for &(ax, ay) in &ends {
-            for &(bx, by) in &ends {
-                let (a, b) = (Point::new(ax, ay), Point::new(bx, by));
-                let mut seen = vec![false; boxes.len()];
-                index.for_each_near_segment(&boxes, a, b, 0.0, |i| seen[i] = true);
-                for t in 0..=500 {
-                    let p = a + (b - a) * (f64::from(t) / 500.0);
-                    for (i, r) in boxes.iter().enumerate() {
-                        assert!(!r.contains(p) || seen[i], "{a:?}-{b:?}: {r:?} holds {p:?}");
-                    }
-                }
-                if (ax, ay, bx, by) == (0.0, 0.0, 11.0, 12.0) {
-                    assert!(seen.iter().filter(|&&v| v).count() < boxes.len() / 4);
-                }
-            }
         }
     }
 
