@@ -88,8 +88,11 @@ impl CellIndex {
         let median = *sides.select_nth_unstable_by(middle, f64::total_cmp).1;
         let mut size = (2.0 * median).max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE);
         loop {
-            let covered: f64 =
-                boxes.iter().map(|r| ((r.width() / size).floor() + 2.0) * ((r.height() / size).floor() + 2.0)).sum();
+            // Whole cells a side by truncation (sides are not negative; see `coordinates`): an
+            // estimate, so the inverse need not be exact.
+            let inverse = 1.0 / size;
+            let cells = |side: f64| (side * inverse) as i64 as f64 + 2.0;
+            let covered: f64 = boxes.iter().map(|r| cells(r.width()) * cells(r.height())).sum();
             if covered <= 8.0 * boxes.len() as f64 || !size.is_finite() {
                 break;
             }
