@@ -95,7 +95,8 @@ impl OutputBuilder {
     }
 
     /// AddLeft / AddRight: appends `p` at the left or right end (nothing if it repeats the end).
-    #[inline]
+    /// Always inlined: it runs at nearly every output point, and its callers fix `at_left`.
+    #[inline(always)]
     pub(crate) fn add(&mut self, rec: u32, at_left: bool, p: Point) {
         let r = &mut self.recs[rec as usize];
         let (left, right) = (r.left, r.right);
