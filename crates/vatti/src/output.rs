@@ -43,9 +43,6 @@ pub(crate) struct OutRec {
 pub(crate) struct OutputBuilder {
     pts: Vec<OutPt>,
     recs: Vec<OutRec>,
-    /// The closed rings' points copied out of their chains, ring after ring, each with its
-    /// index in `pts` ([`OutputBuilder::rings_into`]'s buffer, kept between sweeps).
-    walked: Vec<(Point, u32)>,
 }
 
 /// How many chains [`OutputBuilder::rings_into`] walks at once, from [`WALKS_FROM`] points. A
@@ -70,9 +67,7 @@ impl OutputBuilder {
 
     /// Bytes the buffers hold (their capacity).
     pub(crate) fn held_bytes(&self) -> usize {
-        self.pts.capacity() * size_of::<OutPt>()
-            + self.recs.capacity() * size_of::<OutRec>()
-            + self.walked.capacity() * size_of::<(Point, u32)>()
+        self.pts.capacity() * size_of::<OutPt>() + self.recs.capacity() * size_of::<OutRec>()
     }
 
     /// AddLocalMin: a new polygon holding `p`, fed by `left_edge` and `right_edge`.
@@ -144,7 +139,7 @@ impl OutputBuilder {
 
     /// Every closed ring, each in `next` order (the result on its left), stamped with the
     /// points' emission order, into `raw` (emptied first, its buffers kept).
-    pub(crate) fn rings_into(&mut self, raw: &mut RawRings) {
+    pub(crate) fn rings_into(&self, raw: &mut RawRings) {
         raw.clear();
         raw.stamps = self.pts.len();
         raw.points.reserve(self.pts.len());
@@ -166,13 +161,12 @@ impl OutputBuilder {
     }
 
     /// [`OutputBuilder::rings_into`] of many points: the chains are copied out [`WALKS`] at a
-    /// time into one buffer, then read from it in order.
-    fn walk_apart(&mut self, raw: &mut RawRings) {
+    /// time into one buffer, then read from it in order. The buffer is not kept: held between
+    /// sweeps it would add to the peak of every later step (a tenth at 10^6 output points).
+    fn walk_apart(&self, raw: &mut RawRings) {
         let closed = || self.recs.iter().filter(|r| r.closed && r.left != NONE);
         let total = closed().map(|r| r.len as usize).sum();
-        let mut walked = std::mem::take(&mut self.walked);
-        walked.clear();
-        walked.resize(total, (Point::new(0.0, 0.0), NONE));
+        let mut walked = vec![(Point::new(0.0, 0.0), NONE); total];
         // Each walk: the point it reads next, where that goes in `walked`, and how many are left.
         // Walks `..busy` are under way; one that ends takes the next ring, or the last walk's
         // place when there is none.
@@ -212,7 +206,6 @@ impl OutputBuilder {
             from += r.len as usize;
             raw.end_ring(start);
         }
-        self.walked = walked;
     }
 }
 
