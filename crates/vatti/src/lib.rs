@@ -335,8 +335,8 @@ impl Vatti {
     }
 
     /// Runs the sweep of valid operands (as [`swept_operands`] gives them) in this thread's
-    /// reused buffers and hands its raw rings,
-    /// trapezoids and whether its rounding is certified to `finish`. `noded`: the operands' edges
+    /// reused buffers and hands its raw rings (none where the certificate failed), trapezoids
+    /// and whether its rounding is certified to `finish`. `noded`: the operands' edges
     /// meet only at vertices (snap rounded), so their straight-through vertices are kept
     /// (`Bounds::rebuild`). `certify`: rounding is certified (else the certificate holds), and the
     /// sweep stops early where it cannot be.
@@ -358,7 +358,12 @@ impl Vatti {
             let mut line = SweepLine::new(sweep, &scratch.bounds, Rules::new(op, fill), trapezoids, certify, buffers);
             line.run();
             let verdict = line.cert.verdict();
-            line.out.rings_into(&mut scratch.raw);
+            // A failed certificate's rings are swept again, never read.
+            if verdict.is_ok() {
+                line.out.rings_into(&mut scratch.raw);
+            } else {
+                scratch.raw.clear();
+            }
             let traps = line.traps.take().unwrap_or_default();
             scratch.sweep = line.into_buffers();
             finish(&scratch.raw, &mut scratch.touches, &mut scratch.turns, traps, verdict)
