@@ -1,9 +1,9 @@
 //! A sparse uniform grid of boxes, for finding the boxes that meet without testing every pair.
 //!
 //! Shared by the oracle's checks (pairs of output edges), the near pairs of input edges that
-//! vertex snapping and snap rounding start from (`NearEdges`), and vatti's far splice. Cost: near linear when the boxes are
-//! small beside their extent; a box covers every cell it spans, so many long boxes sharing cells
-//! (nested squares, combs, long near-parallel edges) make it quadratic.
+//! vertex snapping and snap rounding start from (`NearEdges`), and vatti's far splice. Cost: near
+//! linear when the boxes are small beside their extent; a box covers every cell it spans, so many
+//! long boxes sharing cells (nested squares, combs, long near-parallel edges) make it quadratic.
 
 use crate::{Point, Rect};
 
@@ -27,8 +27,8 @@ pub struct CellIndex {
     entries: Vec<(u32, u32)>,
 }
 
-/// The smallest power of two at least `v` (positive and normal, or `v` itself where it is not
-/// finite): exact to divide by, or to multiply by its inverse.
+/// The smallest power of two at least `v`, for `v` positive and normal (else `v` itself): exact
+/// to divide by, or to multiply by its inverse.
 pub fn power_of_two_at_least(v: f64) -> f64 {
     if !v.is_finite() || v < f64::MIN_POSITIVE {
         return v;
@@ -98,16 +98,12 @@ impl CellIndex {
             }
             size *= 2.0;
         }
-        CellIndex::with_cell_size(boxes, size)
+        Some(CellIndex::with_cell_size(boxes, b, size))
     }
 
-    /// The index of `boxes` on cells of side `size` (rounded up to a power of two, and at least
-    /// 1/65536 of their extent), or `None` when there are none.
-    fn with_cell_size(boxes: &[Rect], size: f64) -> Option<CellIndex> {
-        let b = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
-        if b.is_empty() {
-            return None;
-        }
+    /// The index of `boxes`, whose union is `b` (not empty), on cells of side `size` (rounded
+    /// up to a power of two, and at least 1/65536 of their extent).
+    fn with_cell_size(boxes: &[Rect], b: Rect, size: f64) -> CellIndex {
         let size = power_of_two_at_least(size.max(b.width().max(b.height()) / 65_536.0).max(f64::MIN_POSITIVE));
         // At most 2^16 each, whatever the rounding of the quotient: the last column and row
         // then reach a little farther, as `coordinates` clamps every point the same way.
@@ -129,7 +125,7 @@ impl CellIndex {
         }
         sort_by_cell(&mut entries, index.columns.saturating_mul(index.rows));
         index.entries = entries;
-        Some(index)
+        index
     }
 
     /// The side of the cells.
@@ -295,7 +291,8 @@ mod tests {
             boxes.push(Rect::new(1.0 - t - 2e-9, 1.0 - t - 2e-9, 1.0 - t, 1.0 - t));
         }
         boxes.push(Rect::new(1.0 - 1e-12, 0.0, 1.0, 1.0));
-        let index = CellIndex::with_cell_size(&boxes, 1e-12).expect("boxes");
+        let bounds = boxes.iter().fold(Rect::EMPTY, |b, r| b.union(*r));
+        let index = CellIndex::with_cell_size(&boxes, bounds, 1e-12);
         assert_eq!((index.columns, index.rows), (MAX_SIDE_CELLS, MAX_SIDE_CELLS));
         let expected = meeting_pairs(&boxes);
         assert!(expected.len() > 60);
