@@ -134,12 +134,16 @@ fn met_pixels(segments: &[Segment], pairs: &[(u32, u32)], s: f64) -> PixelLists 
     for (i, e) in segments.iter().enumerate() {
         own.extend([(i as u32, pixel_of(e.a, s)), (i as u32, pixel_of(e.b, s))]);
     }
+    // A segment with both ends in one pixel lies in it (pixels are convex): so do its crossings,
+    // and that pixel is hot already.
+    let in_one_pixel: Vec<bool> = own.chunks_exact(2).map(|ends| ends[0].1 == ends[1].1).collect();
+    let inside_one_pixel = |i: u32| in_one_pixel[i as usize];
     for &(i, j) in pairs {
         let (e, f) = (segments[i as usize], segments[j as usize]);
         // Touching points and overlaps end at input vertices, whose pixels are hot already; two
         // segments with an end in common (most close pairs: a ring's consecutive edges) cannot
         // cross.
-        if shared_end(e, f).is_some() {
+        if shared_end(e, f).is_some() || inside_one_pixel(i) || inside_one_pixel(j) {
             continue;
         }
         if let SegmentIntersection::Crossing(_) = predicates::segment_intersection(e, f) {
@@ -163,8 +167,11 @@ fn met_pixels(segments: &[Segment], pairs: &[(u32, u32)], s: f64) -> PixelLists 
             let e = segments[a as usize];
             // Each own list starts with its segment's ends' pixels (the counting sort is stable).
             let (ends, crossings) = own.of(b as usize).split_at(2);
+            // An end's pixel on `a`'s own list is there already: where many segments share a few
+            // pixels (a cluster a pixel wide), the list stays as long as their pixels, not pairs.
+            let a_ends = &own.of(a as usize)[..2];
             for &p in ends {
-                if p != shared && meets_pixel(e, p, s) {
+                if p != shared && !a_ends.contains(&p) && meets_pixel(e, p, s) {
                     met.push((a, p));
                 }
             }
@@ -287,7 +294,10 @@ fn meets_pixel(e: Segment, p: Pixel, s: f64) -> bool {
     if b.max.x < x0 || b.min.x >= x1 || b.max.y < y0 || b.min.y >= y1 {
         return false;
     }
-    if e.a == e.b {
+    // Both ends inside the (convex) pixel: no corner need be asked. Where one pixel holds a
+    // whole cluster of edges beside a far vertex (the pixel is ulps of that vertex), the
+    // corners lie far from every edge and the orientation filter cannot decide them.
+    if e.a == e.b || (b.min.x >= x0 && b.max.x < x1 && b.min.y >= y0 && b.max.y < y1) {
         return true;
     }
     let (dx, dy) = (e.b.x - e.a.x, e.b.y - e.a.y);
@@ -633,6 +643,50 @@ mod tests {
             }
         }
         assert!(apart_pairs > 1000 && close_kept > 1000, "{apart_pairs} apart, {close_kept} close");
+    }
+
+    /// Every segment's met pixels are every hot pixel it meets, as found by testing each segment
+    /// against every hot pixel: on random rings at coarse pixels (many edges inside one pixel),
+    /// and on a cluster of edges inside one pixel beside a far vertex, whose pixel is ulps of that
+    /// vertex (the fuzz target's slow units: every pair of the cluster is a near pair).
+    #[test]
+    fn met_pixels_are_the_hot_pixels_each_segment_meets() {
+        let mut cases = Vec::new();
+        for seed in 1..=30u64 {
+            let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+            let rings = vec![random_ring(&mut rng, 5 + seed as usize % 7, 1.0), random_ring(&mut rng, 6, 1.0)];
+            cases.push((rings, 2f64.powi(-2 - (seed % 3) as i32)));
+        }
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let mut cluster = random_ring(&mut rng, 40, 1e6);
+        cluster.points.push(Point::new(-6.3e66, 5e5));
+        cases.push((vec![cluster, random_ring(&mut rng, 30, 1e6)], 2f64.powi(222 - 50)));
+        for (rings, s) in cases {
+            let refs: Vec<&Ring> = rings.iter().collect();
+            let segments: Vec<Segment> = refs.iter().flat_map(|r| r.edges()).collect();
+            let pairs = near_pairs(refs.iter().map(|r| r.len()), &segments, s);
+            let met = met_pixels(&segments, &pairs, s);
+            let mut hot: Vec<Pixel> = segments.iter().flat_map(|e| [pixel_of(e.a, s), pixel_of(e.b, s)]).collect();
+            for (i, &e) in segments.iter().enumerate() {
+                for &f in &segments[i + 1..] {
+                    if shared_end(e, f).is_none()
+                        && let SegmentIntersection::Crossing(_) = predicates::segment_intersection(e, f)
+                    {
+                        hot.push(crossing_pixel(e, f, s));
+                    }
+                }
+            }
+            hot.sort_unstable();
+            hot.dedup();
+            for (i, &e) in segments.iter().enumerate() {
+                let mut expected: Vec<Pixel> = hot.iter().copied().filter(|&p| meets_pixel(e, p, s)).collect();
+                let mut found = met.of(i).to_vec();
+                expected.sort_unstable();
+                found.sort_unstable();
+                found.dedup();
+                assert_eq!(found, expected, "segment {i} {e:?} at s = {s:e}");
+            }
+        }
     }
 
     #[test]

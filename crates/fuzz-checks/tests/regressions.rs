@@ -555,3 +555,14 @@ fn vatti_neighbour_distance_squared_overflowing_at_1e149_two_rings() {
 fn vatti_neighbour_distance_squared_overflowing_at_1e149_along_x() {
     regression("vatti", "neighbour-distance-squared-overflowing-at-1e149-along-x");
 }
+
+/// A time-out (libFuzzer's 10 s, on a loaded machine): rings of vertices near (5e5, 4e6) with
+/// one vertex at -6.3e66, whose snap fallback's pixel (4 ulps of 6.3e66) holds the whole
+/// cluster. Every pair of its edges was a near pair, and each asked the pixel's far corners
+/// against the edge, an orientation the filter cannot decide. An edge inside one pixel now meets
+/// it without a corner asked, its crossings are not computed (they lie in that hot pixel), and an
+/// edge is not given a pixel of its own ends again: 0.24 s a check to 0.03 s.
+#[test]
+fn vatti_cluster_a_pixel_wide_beside_a_vertex_at_6e66() {
+    regression("vatti", "cluster-a-pixel-wide-beside-a-vertex-at-6e66");
+}
