@@ -294,10 +294,11 @@ fn meets_pixel(e: Segment, p: Pixel, s: f64) -> bool {
     if b.max.x < x0 || b.min.x >= x1 || b.max.y < y0 || b.min.y >= y1 {
         return false;
     }
-    // Both ends inside the (convex) pixel: no corner need be asked. Where one pixel holds a
-    // whole cluster of edges beside a far vertex (the pixel is ulps of that vertex), the
-    // corners lie far from every edge and the orientation filter cannot decide them.
-    if e.a == e.b || (b.min.x >= x0 && b.max.x < x1 && b.min.y >= y0 && b.max.y < y1) {
+    // Both ends inside the (convex) pixel, a point edge among them: no corner need be asked.
+    // Where one pixel holds a whole cluster of edges beside a far vertex (the pixel is ulps of
+    // that vertex), the corners lie far from every edge and the orientation filter cannot
+    // decide them.
+    if b.min.x >= x0 && b.max.x < x1 && b.min.y >= y0 && b.max.y < y1 {
         return true;
     }
     let (dx, dy) = (e.b.x - e.a.x, e.b.y - e.a.y);
