@@ -58,6 +58,10 @@ pub(crate) struct Edge {
     pub alive: bool,
     /// True while the edge waits to slide along a horizontal at the current scanline.
     pub moving: bool,
+    /// True once a crossing on this edge other than at its bottom was taken or queued, or a
+    /// vertex came within a near miss of it unrouted: its line has decided something above its
+    /// bottom, so it can no longer be routed through a vertex (`near_misses`).
+    pub tainted: bool,
     // The second: tolerances, positions along the sweep and the winding numbers.
     /// Magnitudes of the ends, kept with them for the tolerance tests (see [`Edge::set_ends`]).
     pub magnitude: EndMagnitudes,
@@ -420,6 +424,7 @@ impl ActiveEdges {
             forward,
             alive: true,
             moving: false,
+            tainted: false,
             prev: NONE,
             next: NONE,
             batch: 0,

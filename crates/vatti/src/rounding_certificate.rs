@@ -72,6 +72,10 @@ pub(crate) const CLEARANCE_ULPS: f64 = 256.0;
 
 const _: () = assert!(CLEARANCE_ULPS > 2.0 * 1.4143 * MOVE_ULPS);
 
+/// A near miss (`near_misses`): a vertex within this many ulps of the largest coordinate of an
+/// edge it is not on, as the snap fallback's pixel.
+const PIXEL_ULPS: f64 = 4.0;
+
 /// `D` as a fraction of the largest coordinate: edges rising less than `4H/D` per unit of x are
 /// flat, and two events within `D/2 + 2δ` in x of each other (and `H` in height) fail. Smaller
 /// makes more edges flat (each checked against the output points near it), larger more events
@@ -173,6 +177,18 @@ pub(crate) struct RoundingCertificate {
     rounded: bool,
     /// True once an event came below another taken before it by more than their rounding.
     out_of_order: bool,
+    /// True once the sweep's decisions may not be those of any one input (a near miss it put
+    /// off was not routed, see `near_misses`): the output is not certified whatever it holds.
+    broken: bool,
+    /// The least rise per unit of x of the edges that are not flat (`s`, kept from `reset`): a
+    /// split edge's parts must rise as much, or the event box would be too narrow for them.
+    steep_rise: f64,
+    /// The distance within which a vertex is a near miss of an edge (`near_misses`): four ulps
+    /// of the largest coordinate, as the snap fallback's pixel.
+    pixel: f64,
+    /// How far in x a non-flat edge within `pixel` of a point can lie from it on the point's
+    /// scanline, with what its computed x errs by.
+    pixel_reach: f64,
 }
 
 impl RoundingCertificate {
@@ -180,7 +196,7 @@ impl RoundingCertificate {
     /// checks nothing, and the certificate always holds.
     pub(crate) fn reset(&mut self, enabled: bool, bounds: &Bounds) {
         (self.enabled, self.checking) = (enabled, enabled);
-        (self.failed, self.failure, self.out_of_order) = (false, None, false);
+        (self.failed, self.failure, self.out_of_order, self.broken) = (false, None, false, false);
         self.rounded = false;
         self.flats.clear();
         self.near_flats.clear();
@@ -219,6 +235,11 @@ impl RoundingCertificate {
         // `D/4`, as `s >= 4H/D`, and less where every edge that is not flat is steeper.
         let s = (steep_rise * (1.0 - 1e-12)).max(least_rise);
         self.reach = 2.0 * self.height / s + 2.0 * self.clearance;
+        self.steep_rise = s;
+        self.pixel = PIXEL_ULPS * unit;
+        // Within `pixel` of a point, an edge rising `s` per unit of x lies within
+        // `pixel * sqrt(1 + 1 / s^2)` of it in x.
+        self.pixel_reach = self.pixel * (1.0 + 1.0 / s) + 2.0 * X_AT_ERROR * magnitude;
         self.flats.sort_unstable_by(|a, b| a.a.y.total_cmp(&b.a.y));
     }
 
@@ -226,7 +247,7 @@ impl RoundingCertificate {
     /// rounded was output and the events came in their exact order (then every decision was
     /// exact and every output point is exact).
     pub(crate) fn holds(&self) -> bool {
-        !(self.failed && (self.rounded || self.out_of_order))
+        !(self.failed && (self.rounded || self.out_of_order || self.broken))
     }
 
     /// `Ok` where the certificate [holds](RoundingCertificate::holds), else the first check that
@@ -364,6 +385,48 @@ impl RoundingCertificate {
         (q.p.y - e.p.y).abs() <= self.height
             && (q.p.x - e.p.x).abs() <= self.reach + e.half_width + q.half_width
             && !e.shares_edge(q)
+    }
+
+    /// The sweep's decisions may not be those of one input: the certificate fails whatever was
+    /// output.
+    #[cold]
+    pub(crate) fn break_off(&mut self, check: &'static str) {
+        if self.enabled {
+            self.broken = true;
+            self.fail_because(check);
+        }
+    }
+
+    /// The near-miss distance and how far in x an edge within it may lie, or `None` while no
+    /// checks are made (nothing is routed then).
+    #[inline]
+    pub(crate) fn near_miss_reach(&self) -> Option<(f64, f64)> {
+        self.checking.then_some((self.pixel, self.pixel_reach))
+    }
+
+    /// How far in x an edge within a near miss of a point may lie from it (infinite while no
+    /// checks are made, so every walk looks).
+    #[inline]
+    pub(crate) fn pixel_reach(&self) -> f64 {
+        if self.checking { self.pixel_reach } else { f64::INFINITY }
+    }
+
+    /// True when an edge from `a` through `v` to `b` (`a.y < v.y < b.y`) keeps the certificate's
+    /// bounds: neither part is flat or rises less than the least rise the event box was made
+    /// for, and no flat edge comes within the clearance of `v` (flat edges pass near a point far
+    /// from it in the table, where a sweep's neighbours do not show them).
+    pub(crate) fn admits_split(&self, a: Point, v: Point, b: Point) -> bool {
+        let steep = |p: Point, q: Point| q.y > p.y && (q.x == p.x || q.y - p.y >= self.steep_rise * (q.x - p.x).abs());
+        steep(a, v) && steep(v, b) && !self.flat_near(v)
+    }
+
+    /// True when some flat edge passes within the clearance of `v` (every flat edge is looked
+    /// at: splits are rare).
+    fn flat_near(&self, v: Point) -> bool {
+        let reach = self.clearance + self.slack(v, 0.0);
+        self.flats.iter().take_while(|f| f.a.y <= v.y + reach).any(|&f| {
+            f.b.y >= v.y - reach && distance_to_segment(v, f) <= reach + self.slack(v, f.a.x.abs().max(f.b.x.abs()))
+        })
     }
 
     /// A rounded point went into the output.

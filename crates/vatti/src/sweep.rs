@@ -132,6 +132,14 @@ pub(crate) struct SweepLine<'a> {
     pub(crate) cert: RoundingCertificate,
     /// True while a crossing between scanlines is processed (else points are on the scanline).
     between: bool,
+    /// Whether near misses are routed (`near_misses`): the event sweep, certified, until a walk
+    /// beside a vertex finds more edges within reach than it looks at.
+    pub(crate) route: bool,
+    /// Crossings put off because one edge's top is a near miss of the other (`near_misses`):
+    /// the edge to route and the top it must go through.
+    pub(crate) deferred: Vec<(u32, Point)>,
+    /// The edges just routed through one vertex, whose output waits until all of them are.
+    pub(crate) routed: Vec<u32>,
 }
 
 impl<'a> SweepLine<'a> {
@@ -201,6 +209,9 @@ impl<'a> SweepLine<'a> {
                 cert
             },
             between: false,
+            route: kind == Sweep::Events,
+            deferred: Vec::new(),
+            routed: Vec::new(),
         }
     }
 
@@ -265,6 +276,9 @@ impl<'a> SweepLine<'a> {
             y = next;
         }
         self.beams.release_if_large();
+        if !self.deferred.is_empty() {
+            self.cert.break_off("a near miss put off and not routed");
+        }
     }
 
     /// The lowest scanline above `y`: a vertex height, where a local minimum starts or an active
@@ -353,6 +367,10 @@ impl<'a> SweepLine<'a> {
             // With a horizontal bottom the forward edge starts away from p: it slides there.
             e.moving = m.horizontal;
         }
+        // Before the output starts here: an edge routed through `p` is not checked against it.
+        if !m.horizontal {
+            self.route_near_misses(p, left, false);
+        }
         let wl = self.ael.wind_right_of(self.ael.prev(left));
         self.ael.get_mut(left).wind_left = wl;
         let wm = self.ael.get(left).wind_right();
@@ -380,9 +398,17 @@ impl<'a> SweepLine<'a> {
             {
                 self.order_coincident(k, backward, p);
             }
+            self.route_near_misses(p, backward, true);
+            self.route_near_misses(to, forward, true);
         } else {
             self.settle(right);
             self.settle(left);
+            // Edges routed through `p` above, once the new pair's windings are set.
+            for i in 0..self.settle.len() {
+                let k = self.settle[i];
+                self.settle(k);
+            }
+            self.settle.clear();
         }
     }
 
@@ -421,6 +447,10 @@ impl<'a> SweepLine<'a> {
             }
         }
         for &id in &ending {
+            if self.route {
+                let tp = self.ael.get(id).top;
+                self.route_near_misses(tp, id, false);
+            }
             if self.cert.checking() {
                 self.certify_top(id);
             }
@@ -474,6 +504,7 @@ impl<'a> SweepLine<'a> {
                 let to = Point::new(s.to_x, y);
                 self.add_point(s.edge, to);
                 self.settle(s.edge);
+                self.route_near_misses(to, s.edge, true);
             } else if let Some((partner, right)) = self.partner_at(s.edge, s.max_vertex) {
                 let e = self.ael.get(s.edge);
                 let tp = e.top;
@@ -481,6 +512,7 @@ impl<'a> SweepLine<'a> {
                     self.add_point(s.edge, tp);
                 }
                 let mp = self.bounds.pt(s.max_vertex);
+                self.route_near_misses(mp, partner, true);
                 self.meet(s.edge, partner, right, mp, s.from_x, s.to_x, y);
             }
             self.ael.get_mut(s.edge).moving = false;
@@ -504,6 +536,7 @@ impl<'a> SweepLine<'a> {
         let (bot, next_top) = (self.bounds.pt(from), self.bounds.pt(to));
         let e = self.ael.get_mut(id);
         e.set_ends(bot, next_top);
+        e.tainted = false;
         e.top_vertex = to;
         e.curr_x = top.x;
         e.curr_y = top.y;
@@ -542,10 +575,16 @@ impl<'a> SweepLine<'a> {
         }
     }
 
+    /// Queues edge `id` (starting on this scanline) to be ordered among the edges through its
+    /// bottom once the scanline's edges have gone on ([`SweepLine::settle`]).
+    pub(crate) fn settle_later(&mut self, id: u32) {
+        self.settle.push(id);
+    }
+
     /// Orders a new edge starting at its bottom among edges through the same point by
     /// direction above it: exact, with crossings at that point. Called on the scanline through
     /// its bottom.
-    fn settle(&mut self, id: u32) {
+    pub(crate) fn settle(&mut self, id: u32) {
         let (p, top) = (self.ael.get(id).bot, self.ael.get(id).top);
         // A neighbour along the same line above `p`, as (left, right) of the pair.
         let mut along = None;
@@ -619,6 +658,10 @@ impl<'a> SweepLine<'a> {
     /// and the output (see [`crate::contribution`]).
     pub(crate) fn cross(&mut self, a: u32, p: Point) {
         let b = self.ael.next(a);
+        for id in [a, b] {
+            let e = self.ael.get_mut(id);
+            e.tainted |= e.bot != p;
+        }
         let (ea, eb) = (self.ael.get(a), self.ael.get(b));
         let wl = ea.wind_left;
         let mid = ea.wind_right();
@@ -833,12 +876,18 @@ impl<'a> SweepLine<'a> {
         if !el.crosses_before_top(er) {
             return;
         }
+        if self.route && self.put_off_near_top(l, r, y) {
+            return;
+        }
+        let (el, er) = (self.ael.get(l), self.ael.get(r));
         let yt = el.top.y.min(er.top.y);
         let xs = [el.x_at(y), el.x_at(yt), er.x_at(y), er.x_at(yt)];
         let (pt, off_flat) = el.crossing_with(er, y, yt, xs, self.cert.max_error());
         if off_flat {
             self.cert.fail(OFF_FLAT);
         }
+        self.ael.get_mut(l).tainted = true;
+        self.ael.get_mut(r).tainted = true;
         self.crossings.push(l, r, pt);
     }
 
