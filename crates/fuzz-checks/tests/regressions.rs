@@ -566,3 +566,21 @@ fn vatti_neighbour_distance_squared_overflowing_at_1e149_along_x() {
 fn vatti_cluster_a_pixel_wide_beside_a_vertex_at_6e66() {
     regression("vatti", "cluster-a-pixel-wide-beside-a-vertex-at-6e66");
 }
+
+/// Near-miss routing in the event sweep (session 37): a ring along one line, visiting its points
+/// many times, each a fraction of an ulp off the others' edges. Routing an edge through a vertex
+/// while another edge lay between them, unrouted, made the routed edge cross it without a
+/// crossing taken: a ring crossing another at (0.1, 12.7). An edge the walk passes that is not
+/// routed now blocks the split of those beyond it.
+#[test]
+fn vatti_routing_blocked_by_an_edge_between_the_vertex_and_the_near_edge() {
+    regression("vatti", "routing-blocked-by-an-edge-between-the-vertex-and-the-near-edge");
+}
+
+/// Near-miss routing at coordinates near 1e149: the distance test compared squares, which
+/// overflowed to infinity on both sides, so every edge counted as a near miss and was split at
+/// vertices far from it (a point of the union left outside). Now compared by `hypot`.
+#[test]
+fn vatti_near_miss_distance_squared_overflowing_at_1e149() {
+    regression("vatti", "near-miss-distance-squared-overflowing-at-1e149");
+}

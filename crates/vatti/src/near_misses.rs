@@ -50,14 +50,15 @@ enum Miss {
 /// made, is exact.
 fn miss(a: Point, b: Point, v: Point, pixel: f64) -> Miss {
     let (d, w) = (b - a, v - a);
-    let off = w.cross(d);
-    if off * off > pixel * pixel * d.dot(d) {
+    // Lengths by `hypot`, not squared: squares of coordinates near `MAX_COORDINATE` overflow,
+    // and infinity is not greater than infinity.
+    if !(w.cross(d).abs() <= pixel * d.x.hypot(d.y)) {
         return Miss::Apart;
     }
     if orient(a, b, v) == Orientation::Collinear {
         return Miss::Through;
     }
-    let far = |q: Point| (v - q).dot(v - q) > pixel * pixel;
+    let far = |q: Point| (v.x - q.x).hypot(v.y - q.y) > pixel;
     Miss::Near { splittable: a.y < v.y && v.y < b.y && far(a) && far(b) }
 }
 
