@@ -50,9 +50,12 @@ enum Miss {
 /// made, is exact.
 fn miss(a: Point, b: Point, v: Point, pixel: f64) -> Miss {
     let (d, w) = (b - a, v - a);
-    // Lengths by `hypot`, not squared: squares of coordinates near `MAX_COORDINATE` overflow,
-    // and infinity is not greater than infinity.
-    if !(w.cross(d).abs() <= pixel * d.x.hypot(d.y)) {
+    // |d| lies between its largest coordinate `m` and `m·√2`: decided by those where they
+    // decide it, else by `hypot`. Never squared: squares of coordinates near `MAX_COORDINATE`
+    // overflow, and infinity is not greater than infinity (a cross product of coordinates up to
+    // `MAX_COORDINATE` is finite).
+    let (off, m) = (w.cross(d).abs(), d.x.abs().max(d.y.abs()));
+    if off > 1.5 * pixel * m || (off > pixel * m && off > pixel * d.x.hypot(d.y)) {
         return Miss::Apart;
     }
     if orient(a, b, v) == Orientation::Collinear {
@@ -94,10 +97,11 @@ impl SweepLine<'_> {
         }
     }
 
-    /// False when the nearest edge beside `v` on one side, past `v`'s own edges, is certainly
-    /// farther than the walk's reach from it in x (by its box), or there is none.
+    /// False when the nearest edge beside `v` on one side, past `v`'s own edges, lies farther
+    /// than the walk's reach from it in x on the scanline, or there is none: by its box where
+    /// that shows it (most neighbours), else by its x there.
     #[inline(always)]
-    fn may_reach(&self, v: Point, from: u32, rightwards: bool) -> bool {
+    fn may_reach(&mut self, v: Point, from: u32, rightwards: bool) -> bool {
         let reach = self.cert.pixel_reach();
         let mut k = from;
         loop {
@@ -106,13 +110,12 @@ impl SweepLine<'_> {
                 return false;
             }
             let e = self.ael.get(k);
-            // By the box first: most neighbours are far, and `v`'s own edges are within reach.
             let (lo, hi) = if e.bot.x < e.top.x { (e.bot.x, e.top.x) } else { (e.top.x, e.bot.x) };
             if (if rightwards { lo - v.x } else { v.x - hi }) > reach {
                 return false;
             }
             if !(e.moving || e.bot == v || e.top == v) {
-                return true;
+                return (self.ael.x_on(k, v.y) - v.x).abs() <= reach;
             }
         }
     }

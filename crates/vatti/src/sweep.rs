@@ -564,6 +564,7 @@ impl<'a> SweepLine<'a> {
             self.certify_passed(k, x, q);
             self.rounded_crossing = rounded;
             self.crossing_pair = (id, k);
+            self.ael.get_mut(k).tainted = true;
             self.cross(if right { id } else { k }, q);
             self.rounded_crossing = false;
             self.crossing_pair = (NONE, NONE);
@@ -573,6 +574,14 @@ impl<'a> SweepLine<'a> {
         } else if self.ael.next(partner) == id {
             self.end_pair(partner, p);
         }
+    }
+
+    /// Marks active edge `k` as having decided something at `p` on its line (`near_misses`),
+    /// unless `p` is its bottom.
+    #[inline]
+    pub(crate) fn taint_unless_bottom(&mut self, k: u32, p: Point) {
+        let e = self.ael.get_mut(k);
+        e.tainted |= e.bot != p;
     }
 
     /// Queues edge `id` (starting on this scanline) to be ordered among the edges through its
@@ -594,7 +603,10 @@ impl<'a> SweepLine<'a> {
                 break;
             }
             match orient(p, top, self.ael.get(k).top) {
-                Orientation::CounterClockwise => self.cross(id, p),
+                Orientation::CounterClockwise => {
+                    self.taint_unless_bottom(k, p);
+                    self.cross(id, p)
+                }
                 Orientation::Collinear => {
                     along = Some((id, k));
                     break;
@@ -608,7 +620,10 @@ impl<'a> SweepLine<'a> {
                 break;
             }
             match orient(p, top, self.ael.get(k).top) {
-                Orientation::Clockwise => self.cross(k, p),
+                Orientation::Clockwise => {
+                    self.taint_unless_bottom(k, p);
+                    self.cross(k, p)
+                }
                 Orientation::Collinear => {
                     along = along.or(Some((k, id)));
                     break;
@@ -640,6 +655,8 @@ impl<'a> SweepLine<'a> {
         let out = inside(w);
         // Where the sides differ, one of the two bounds the result in either order.
         if inside(er.crossed(mid)) == out && inside(mid) != out && inside(er.crossed(w)) == out {
+            self.taint_unless_bottom(l, p);
+            self.taint_unless_bottom(r, p);
             self.cross(l, p);
         }
     }
@@ -658,10 +675,6 @@ impl<'a> SweepLine<'a> {
     /// and the output (see [`crate::contribution`]).
     pub(crate) fn cross(&mut self, a: u32, p: Point) {
         let b = self.ael.next(a);
-        for id in [a, b] {
-            let e = self.ael.get_mut(id);
-            e.tainted |= e.bot != p;
-        }
         let (ea, eb) = (self.ael.get(a), self.ael.get(b));
         let wl = ea.wind_left;
         let mid = ea.wind_right();
@@ -847,6 +860,8 @@ impl<'a> SweepLine<'a> {
         self.rounded_crossing = !exact;
         self.between = true;
         self.crossing_pair = (left, right);
+        self.ael.get_mut(left).tainted = true;
+        self.ael.get_mut(right).tainted = true;
         self.cross(left, p);
         self.rounded_crossing = false;
         self.between = false;
