@@ -42,7 +42,7 @@ impl SweepLine<'_> {
             self.rounded_crossing = rounded;
             self.crossing_pair = (s.edge, k);
             let left = if rightwards { s.edge } else { k };
-            self.ael.get_mut(k).tainted = true;
+            self.taint(k);
             self.cross(left, p);
             self.ael.recheck(self.ael.prev(left));
             self.rounded_crossing = false;

@@ -233,6 +233,7 @@ use crate::raw_rings::RawRings;
 use crate::rounding_certificate::rounding_is_harmless;
 use crate::route::{Plan, edge_count};
 use crate::scratch::Scratch;
+pub(crate) use crate::sweep::Certify;
 use crate::sweep::SweepLine;
 
 /// Vatti's generic polygon clipper: all four operations under all four fill rules, any
@@ -252,6 +253,9 @@ enum Operands {
     /// Any valid operands: the sweep certifies that rounding left its output's form as the
     /// exact arrangement's (`rounding_certificate`), or gives no output.
     Float,
+    /// Any valid operands, swept by the event sweep certified and routing the near misses it
+    /// meets (`near_misses`): the retry where the certificate failed.
+    FloatRouted,
     /// Operands on a coarse grid or with only horizontal and vertical edges, where rounding
     /// provably changes nothing ([`rounding_is_harmless`]).
     RoundingHarmless,
@@ -298,6 +302,14 @@ impl Vatti {
         if let Some(out) = Vatti::sweep_clean(&subject, &clip, op, fill, sweep, operands) {
             return out;
         }
+        // The event sweep again, routing the near misses it meets: where those were all that
+        // failed (map layers rounded apart), it holds without a search over every edge. Not on
+        // the first try: the walks cost every certified sweep a few percent.
+        if sweep == Sweep::Events
+            && let Some(out) = Vatti::sweep_clean(&subject, &clip, op, fill, sweep, Operands::FloatRouted)
+        {
+            return out;
+        }
         // Both later steps start from the pairs of edges within a pixel of each other, found once.
         // The grid cannot refuse valid operands (the pixel is chosen for their largest
         // coordinate); were it to, they are swept uncertified.
@@ -336,7 +348,12 @@ impl Vatti {
         sweep: Sweep,
         operands: Operands,
     ) -> Option<Polygons> {
-        let (certify, noded) = (operands == Operands::Float, operands == Operands::Noded);
+        let certify = match operands {
+            Operands::Float => Certify::Yes,
+            Operands::FloatRouted => Certify::Routing,
+            Operands::RoundingHarmless | Operands::Noded => Certify::No,
+        };
+        let noded = operands == Operands::Noded;
         Vatti::sweep(sweep, subject, clip, op, fill, false, noded, certify, |rings, touches, turns, _, verdict| {
             verdict.is_ok().then(|| Polygons::new(cleanup::conventional_rings(rings, touches, turns)))
         })
@@ -357,7 +374,7 @@ impl Vatti {
         fill: FillRule,
         trapezoids: bool,
         noded: bool,
-        certify: bool,
+        certify: Certify,
         finish: impl FnOnce(&RawRings, &mut Touches, &mut Turns, Vec<Trapezoid>, Result<(), &'static str>) -> T,
     ) -> T {
         Scratch::with(|scratch| {
@@ -458,7 +475,7 @@ fn trapezoids_planned(
     let (a, b, op) = reduced(plan.route, subject, clip, prepared, op, fill);
     let sweep = plan.sweep_for(edge_count(&a) + edge_count(&b));
     let (a, b) = swept_operands(&a, &b, sweep, false);
-    Vatti::sweep(sweep, &a, &b, op, fill, true, false, false, |_, _, _, traps, _| traps)
+    Vatti::sweep(sweep, &a, &b, op, fill, true, false, Certify::No, |_, _, _, traps, _| traps)
 }
 
 impl PolygonClipper for Vatti {

@@ -695,7 +695,7 @@ mod tests {
     use clip_testkit::workload::polygon_case;
 
     use super::*;
-    use crate::{Operands, Sweep, Vatti, swept_operands};
+    use crate::{Certify, Operands, Sweep, Vatti, swept_operands};
 
     fn polygon(points: &[(f64, f64)]) -> Polygons {
         Polygons::from(Ring::new(points.iter().map(|&(x, y)| Point::new(x, y)).collect()))
@@ -706,7 +706,7 @@ mod tests {
     fn verdict(a: &Polygons, b: &Polygons, op: BoolOp) -> Result<(), &'static str> {
         let run = |sweep| {
             let (a, b) = swept_operands(a, b, sweep, true);
-            Vatti::sweep(sweep, &a, &b, op, FillRule::NonZero, false, false, true, |_, _, _, _, v| v)
+            Vatti::sweep(sweep, &a, &b, op, FillRule::NonZero, false, false, Certify::Yes, |_, _, _, _, v| v)
         };
         let (events, scanbeam) = (run(Sweep::Events), run(Sweep::Scanbeam));
         assert_eq!(

@@ -93,6 +93,15 @@ impl SweepBuffers {
     }
 }
 
+/// Whether a sweep certifies its rounding (`rounding_certificate`), and whether it also routes
+/// the near misses it meets (`near_misses`: the event sweep only).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Certify {
+    No,
+    Yes,
+    Routing,
+}
+
 /// One run of the clipper over two operands.
 pub(crate) struct SweepLine<'a> {
     pub kind: Sweep,
@@ -149,7 +158,7 @@ impl<'a> SweepLine<'a> {
         bounds: &'a Bounds,
         rules: Rules,
         trapezoids: bool,
-        certify: bool,
+        certify: Certify,
         buffers: SweepBuffers,
     ) -> SweepLine<'a> {
         let SweepBuffers {
@@ -205,11 +214,11 @@ impl<'a> SweepLine<'a> {
             crossing_pair: (NONE, NONE),
             waiting: Vec::new(),
             cert: {
-                cert.reset(certify && !trapezoids, bounds);
+                cert.reset(certify != Certify::No && !trapezoids, bounds);
                 cert
             },
             between: false,
-            route: kind == Sweep::Events,
+            route: kind == Sweep::Events && certify == Certify::Routing,
             deferred: Vec::new(),
             routed: Vec::new(),
         }
@@ -564,7 +573,7 @@ impl<'a> SweepLine<'a> {
             self.certify_passed(k, x, q);
             self.rounded_crossing = rounded;
             self.crossing_pair = (id, k);
-            self.ael.get_mut(k).tainted = true;
+            self.taint(k);
             self.cross(if right { id } else { k }, q);
             self.rounded_crossing = false;
             self.crossing_pair = (NONE, NONE);
@@ -576,12 +585,22 @@ impl<'a> SweepLine<'a> {
         }
     }
 
-    /// Marks active edge `k` as having decided something at `p` on its line (`near_misses`),
-    /// unless `p` is its bottom.
+    /// Marks active edge `k` as having decided something on its line above its bottom, so it is
+    /// never routed (`near_misses`); only while routing, which alone reads the mark.
+    #[inline]
+    pub(crate) fn taint(&mut self, k: u32) {
+        if self.route {
+            self.ael.get_mut(k).tainted = true;
+        }
+    }
+
+    /// [`SweepLine::taint`] for a crossing at `p`, unless `p` is the edge's bottom.
     #[inline]
     pub(crate) fn taint_unless_bottom(&mut self, k: u32, p: Point) {
-        let e = self.ael.get_mut(k);
-        e.tainted |= e.bot != p;
+        if self.route {
+            let e = self.ael.get_mut(k);
+            e.tainted |= e.bot != p;
+        }
     }
 
     /// Queues edge `id` (starting on this scanline) to be ordered among the edges through its
@@ -860,8 +879,8 @@ impl<'a> SweepLine<'a> {
         self.rounded_crossing = !exact;
         self.between = true;
         self.crossing_pair = (left, right);
-        self.ael.get_mut(left).tainted = true;
-        self.ael.get_mut(right).tainted = true;
+        self.taint(left);
+        self.taint(right);
         self.cross(left, p);
         self.rounded_crossing = false;
         self.between = false;
@@ -901,8 +920,8 @@ impl<'a> SweepLine<'a> {
         if off_flat {
             self.cert.fail(OFF_FLAT);
         }
-        self.ael.get_mut(l).tainted = true;
-        self.ael.get_mut(r).tainted = true;
+        self.taint(l);
+        self.taint(r);
         self.crossings.push(l, r, pt);
     }
 
@@ -1268,11 +1287,20 @@ mod tests {
                 for op in [BoolOp::Intersection, BoolOp::Union, BoolOp::Difference] {
                     for fill in [FillRule::EvenOdd, FillRule::NonZero, FillRule::Positive, FillRule::Negative] {
                         let (a, b) = crate::swept_operands(&a, &b, sweep, false);
-                        let touched =
-                            Vatti::sweep(sweep, &a, &b, op, fill, false, false, false, |raw, touches, _, _, _| {
+                        let touched = Vatti::sweep(
+                            sweep,
+                            &a,
+                            &b,
+                            op,
+                            fill,
+                            false,
+                            false,
+                            super::Certify::No,
+                            |raw, touches, _, _, _| {
                                 touches.find(raw);
                                 touches.touched.contains(&true)
-                            });
+                            },
+                        );
                         assert!(!touched, "{a:?} {op:?} {b:?}, {fill:?}, {sweep:?}: raw rings touch");
                     }
                 }

@@ -331,7 +331,9 @@ mod tests {
         check: &mut impl FnMut(&RawRings),
     ) {
         for sweep in [Sweep::Events, Sweep::Scanbeam] {
-            crate::Vatti::sweep(sweep, subject, clip, op, fill, false, false, false, |raw, _, _, _, _| check(raw));
+            crate::Vatti::sweep(sweep, subject, clip, op, fill, false, false, crate::Certify::No, |raw, _, _, _, _| {
+                check(raw)
+            });
         }
     }
 
