@@ -143,12 +143,13 @@
 //!     list of their own), and at every output point the nearest edges either side in the table
 //!     farther than 256 ulps. Crossings whose quotient may err by over 32 ulps (edges at a small
 //!     angle) are computed from accurate determinants. The argument is in `rounding_certificate`.
-//!   - The event sweep routes near misses as it meets them (`near_misses`): an edge passing
-//!     within 4 ulps of the largest coordinate of a vertex it does not end at is split there
-//!     while nothing it decided depends on its line (the walk beside every vertex finds them),
-//!     and a crossing of the vertex's own edge with it just below is put off until the vertex.
-//!     The output is then the exact one of operands within that distance of the given ones. The
-//!     paper's sweep does not route: it falls back below.
+//!   - Where the certificate fails, the event sweep runs once more routing the near misses it
+//!     meets (`near_misses`): an edge passing within 4 ulps of the largest coordinate of a
+//!     vertex it does not end at is split there while nothing it decided depends on its line (a
+//!     walk beside every vertex finds them), and a crossing of the vertex's own edge with it
+//!     just below is put off until the vertex. Its output is the exact one of operands within
+//!     that distance of the given ones. Not on the first sweep: the walks cost a few percent,
+//!     and most sweeps hold without them. The paper's sweep does not route: it falls back below.
 //!   - Where the certificate fails and a rounded point was output, the sweep stops. With `s`
 //!     the smallest power of two at least 4 ulps of the largest input coordinate, every edge
 //!     passing within `s` of a vertex it does not end at is routed through that vertex
@@ -286,10 +287,10 @@ impl Vatti {
     }
 
     /// The sweep's conventional rings of valid operands, by a chain of fallbacks from floating
-    /// point to snap rounding (as GEOS OverlayNG falls back). The event sweep routes the near
-    /// misses it meets as it goes (`near_misses`). Where the rounding certificate fails
-    /// (`rounding_certificate`: some rounded point came within its clearance of an edge or
-    /// event it is not on), the operands are swept again with every edge that passes within a
+    /// point to snap rounding (as GEOS OverlayNG falls back). Where the rounding certificate
+    /// fails (`rounding_certificate`: some rounded point came within its clearance of an edge or
+    /// event it is not on), the event sweep runs again routing the near misses it meets
+    /// (`near_misses`); where that fails too, the operands are swept again with every edge that passes within a
     /// pixel ([`snap_fallback::pixel_size`]) of a vertex not its own routed through that vertex
     /// (`clip_core::snap_edges_to_vertices`: the near misses of layers whose shared borders were
     /// rounded apart), certified again; where that fails too, the snap-rounded operands are
